@@ -1,0 +1,83 @@
+# Build-time shader compilation with the kit's own compiler.
+#
+# iblkit_add_shader(NAME SOURCE src.hlsl [ENTRY main] [INCLUDE_DIRS dir...]
+#                   [DEFINES NAME=VALUE...] [IMAGE_FORMATS Resource=format...])
+# compiles SOURCE to ${CMAKE_BINARY_DIR}/shaders/NAME.spv with its reflection NAME.json,
+# rebuilt whenever the source or anything it #includes changes (through the depfile).
+function(iblkit_add_shader name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "SOURCE;ENTRY" "INCLUDE_DIRS;DEFINES;IMAGE_FORMATS")
+  if(NOT ARG_ENTRY)
+    set(ARG_ENTRY main)
+  endif()
+  set(out_dir ${CMAKE_BINARY_DIR}/shaders)
+  set(spv ${out_dir}/${name}.spv)
+  set(flags -E ${ARG_ENTRY})
+  foreach(dir IN LISTS ARG_INCLUDE_DIRS)
+    list(APPEND flags -I ${dir})
+  endforeach()
+  foreach(define IN LISTS ARG_DEFINES)
+    list(APPEND flags -D ${define})
+  endforeach()
+  foreach(format IN LISTS ARG_IMAGE_FORMATS)
+    list(APPEND flags --image-format ${format})
+  endforeach()
+  add_custom_command(
+    OUTPUT ${spv} ${out_dir}/${name}.json
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
+    COMMAND $<TARGET_FILE:iblkit> compile ${ARG_SOURCE} -o ${spv} --reflect ${out_dir}/${name}.json ${flags}
+            -MD -MF ${spv}.d
+    DEPENDS iblkit ${ARG_SOURCE}
+    DEPFILE ${spv}.d
+    COMMENT "iblkit compile ${name}"
+    VERBATIM)
+  set_property(GLOBAL APPEND PROPERTY IBLKIT_SHADER_OUTPUTS ${spv})
+endfunction()
+
+# Adds every shader of a manifest (hlsl/shaders.json) with iblkit_add_shader, the `shaders`
+# target that builds them all, and `refresh-glsl`, which rewrites the committed forms in glsl/.
+function(iblkit_add_shaders_from_manifest manifest)
+  file(READ ${manifest} text)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${manifest})
+  get_filename_component(folder ${manifest} DIRECTORY)
+  string(JSON count LENGTH ${text} shaders)
+  math(EXPR last "${count} - 1")
+  foreach(index RANGE ${last})
+    string(JSON name GET ${text} shaders ${index} name)
+    string(JSON source GET ${text} shaders ${index} source)
+    string(JSON entry ERROR_VARIABLE no_entry GET ${text} shaders ${index} entry)
+    if(no_entry)
+      set(entry main)
+    endif()
+    set(formats "")
+    string(JSON format_count ERROR_VARIABLE no_formats LENGTH ${text} shaders ${index} image_formats)
+    if(NOT no_formats AND format_count GREATER 0)
+      math(EXPR last_format "${format_count} - 1")
+      foreach(format_index RANGE ${last_format})
+        string(JSON resource MEMBER ${text} shaders ${index} image_formats ${format_index})
+        string(JSON format GET ${text} shaders ${index} image_formats ${resource})
+        list(APPEND formats ${resource}=${format})
+      endforeach()
+    endif()
+    set(defines "")
+    string(JSON define_count ERROR_VARIABLE no_defines LENGTH ${text} shaders ${index} defines)
+    if(NOT no_defines AND define_count GREATER 0)
+      math(EXPR last_define "${define_count} - 1")
+      foreach(define_index RANGE ${last_define})
+        string(JSON macro MEMBER ${text} shaders ${index} defines ${define_index})
+        string(JSON value GET ${text} shaders ${index} defines ${macro})
+        list(APPEND defines ${macro}=${value})
+      endforeach()
+    endif()
+    iblkit_add_shader(${name} SOURCE ${folder}/${source} ENTRY ${entry} INCLUDE_DIRS ${folder}
+                      DEFINES ${defines} IMAGE_FORMATS ${formats})
+  endforeach()
+  get_property(outputs GLOBAL PROPERTY IBLKIT_SHADER_OUTPUTS)
+  add_custom_target(shaders ALL DEPENDS ${outputs})
+  file(RELATIVE_PATH relative_manifest ${CMAKE_SOURCE_DIR} ${manifest})
+  add_custom_target(refresh-glsl
+    COMMAND $<TARGET_FILE:iblkit> compile-all ${relative_manifest} -o glsl --only glsl,essl,msl,reflect
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}
+    DEPENDS iblkit
+    COMMENT "Rewriting the committed GLSL, ESSL and MSL forms in glsl/"
+    VERBATIM)
+endfunction()

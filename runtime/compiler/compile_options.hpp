@@ -1,0 +1,29 @@
+#pragma once
+
+#include "register_binding.hpp"
+#include "shader_stage.hpp"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace iblkit::compiler {
+
+enum class OptimizationLevel { None, Performance, Size };
+
+struct CompileOptions {
+    std::filesystem::path source;
+    std::string entryPoint = "main";
+    std::optional<ShaderStage> stage; // deduced from the entry point's attributes when empty
+    std::vector<std::filesystem::path> includeDirs;
+    std::map<std::string, std::string> defines; // NAME -> VALUE ("" for a bare -D NAME)
+    OptimizationLevel optimization = OptimizationLevel::None;
+    bool stripDebugInfo = false;
+    // Storage image formats by HLSL resource name, in glslang's spelling ("rg16f", "rgba8", ...).
+    std::map<std::string, std::string> imageFormats;
+    BindingShifts bindingShifts;
+};
+
+} // namespace iblkit::compiler

@@ -1,0 +1,75 @@
+#include "compiler.hpp"
+
+#include "hlsl_frontend.hpp"
+#include "spirv_tools.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace iblkit::compiler {
+namespace {
+
+std::string escapeForMake(const std::string& path) {
+    std::string escaped;
+    for (char c : path) {
+        if (c == ' ' || c == '#') escaped += '\\';
+        if (c == '$') escaped += '$';
+        escaped += c;
+    }
+    return escaped;
+}
+
+nlohmann::json targetJson(const CrossCompiled& compiled) {
+    nlohmann::json bindings = nlohmann::json::array();
+    for (const auto& binding : compiled.bindings) {
+        nlohmann::json entry = {{"resource", binding.resource}, {"namespace", binding.namespace_}, {"slot", binding.slot}};
+        if (!binding.declaredName.empty()) entry["declared_name"] = binding.declaredName;
+        if (!binding.format.empty()) entry["format"] = binding.format;
+        if (!binding.adaptedFrom.empty()) entry["adapted_from"] = binding.adaptedFrom;
+        bindings.push_back(std::move(entry));
+    }
+    return bindings;
+}
+
+} // namespace
+
+CompiledShader compileShader(const CompileOptions& options) {
+    auto frontend = compileHlsl(options);
+    CompiledShader shader;
+    shader.sourceName = options.source.string();
+    const auto legal = legalizeHlslSpirv(frontend.spirv, shader.sourceName);
+    validateSpirv(legal, shader.sourceName);
+    shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
+    shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
+    validateSpirv(shader.namedSpirv, shader.sourceName);
+    shader.spirv = options.stripDebugInfo ? stripDebugInfo(shader.namedSpirv, shader.sourceName) : shader.namedSpirv;
+    validateSpirv(shader.spirv, shader.sourceName);
+    shader.bindingShifts = options.bindingShifts;
+    shader.includedFiles = std::move(frontend.includedFiles);
+    shader.warnings = std::move(frontend.warnings);
+    return shader;
+}
+
+CrossCompiled crossCompileShader(const CompiledShader& shader, CrossTarget target) {
+    return crossCompile(shader.namedSpirv, shader.reflection, target, shader.sourceName);
+}
+
+std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTarget, CrossCompiled>& targets) {
+    nlohmann::json json = toJson(shader.reflection);
+    json["source"] = shader.sourceName;
+    nlohmann::json rule = nlohmann::json::object();
+    for (RegisterClass registerClass : kRegisterClasses)
+        rule[std::string(1, registerLetter(registerClass))] = shader.bindingShifts.of(registerClass);
+    json["binding_shifts"] = rule;
+    nlohmann::json targetBindings = nlohmann::json::object();
+    for (const auto& [target, compiled] : targets) targetBindings[std::string(crossTargetName(target))] = targetJson(compiled);
+    json["targets"] = targetBindings;
+    return json.dump(2) + "\n";
+}
+
+std::string makeDepfile(const std::string& target, const CompiledShader& shader) {
+    std::string rule = escapeForMake(target) + ": " + escapeForMake(shader.sourceName);
+    for (const auto& file : shader.includedFiles) rule += " \\\n  " + escapeForMake(file);
+    return rule + "\n";
+}
+
+} // namespace iblkit::compiler

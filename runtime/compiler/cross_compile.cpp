@@ -1,0 +1,205 @@
+#include "cross_compile.hpp"
+
+#include "compile_error.hpp"
+#include "image_formats.hpp"
+#include "spirv_binary.hpp"
+
+#include <spirv_cross/spirv_glsl.hpp>
+#include <spirv_cross/spirv_hlsl.hpp>
+#include <spirv_cross/spirv_msl.hpp>
+
+#include <algorithm>
+#include <map>
+
+namespace iblkit::compiler {
+namespace {
+
+spv::ExecutionModel executionModelOf(ShaderStage stage) {
+    switch (stage) {
+    case ShaderStage::Vertex: return spv::ExecutionModelVertex;
+    case ShaderStage::TessControl: return spv::ExecutionModelTessellationControl;
+    case ShaderStage::TessEvaluation: return spv::ExecutionModelTessellationEvaluation;
+    case ShaderStage::Geometry: return spv::ExecutionModelGeometry;
+    case ShaderStage::Fragment: return spv::ExecutionModelFragment;
+    case ShaderStage::Compute: return spv::ExecutionModelGLCompute;
+    }
+    return spv::ExecutionModelGLCompute;
+}
+
+// Variable ids by the HLSL name reflection uses (the block name for buffers).
+std::map<std::string, spirv_cross::VariableID> variablesByName(const spirv_cross::Compiler& compiler) {
+    std::map<std::string, spirv_cross::VariableID> ids;
+    const auto resources = compiler.get_shader_resources();
+    for (const auto* list : {&resources.uniform_buffers, &resources.storage_buffers, &resources.separate_images,
+                             &resources.storage_images, &resources.separate_samplers})
+        for (const auto& resource : *list) ids[resource.name] = resource.id;
+    return ids;
+}
+
+// ESSL 3.10 lacks two-channel and 16-bit float storage formats among others: such images are
+// declared with a four-channel stand-in of the same component type (docs/bindings.md).
+std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, const ShaderReflection& reflection,
+                                                const std::string& sourceName) {
+    std::map<std::string, std::string> adaptedFrom;
+    for (const auto& resource : reflection.resources) {
+        if (resource.kind != ResourceKind::StorageImage && resource.kind != ResourceKind::StorageTexelBuffer) continue;
+        if (isEssl310Format(resource.format)) continue;
+        const auto* format = findImageFormatByGlslName(resource.format);
+        if (!format || format->esslStandIn.empty())
+            throw CompileError(sourceName + ": error: ESSL 3.10 cannot declare storage image '" + resource.name +
+                               "' of format " + resource.format + ", and no ESSL format can stand in for it");
+        const auto* standIn = findImageFormatByGlslName(format->esslStandIn);
+        replaceStorageImageFormat(spirv, format->spirvFormat, standIn->spirvFormat);
+        adaptedFrom[resource.name] = resource.format;
+    }
+    return adaptedFrom;
+}
+
+CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
+                       const std::string& sourceName) {
+    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
+    spirv_cross::CompilerGLSL compiler(std::move(spirv));
+    auto options = compiler.get_common_options();
+    options.version = es ? 310 : 450;
+    options.es = es;
+    options.vulkan_semantics = false;
+    compiler.set_common_options(options);
+
+    CrossCompiled out;
+    const auto ids = variablesByName(compiler);
+    std::map<std::string, uint32_t> next;
+    for (const auto& resource : reflection.resources) {
+        std::string space;
+        std::string format;
+        switch (resource.kind) {
+        case ResourceKind::ConstantBuffer: space = "uniform_block"; break;
+        case ResourceKind::StorageBuffer: space = "storage_buffer"; break;
+        case ResourceKind::StorageImage:
+        case ResourceKind::StorageTexelBuffer:
+            space = "image_unit";
+            format = adaptedFrom.count(resource.name) ? std::string(findImageFormatByGlslName(resource.format)->esslStandIn)
+                                                      : resource.format;
+            break;
+        default: continue; // textures and samplers become combined samplers below
+        }
+        const auto id = ids.at(resource.name);
+        compiler.unset_decoration(id, spv::DecorationDescriptorSet);
+        compiler.set_decoration(id, spv::DecorationBinding, next[space]);
+        const auto adapted = adaptedFrom.find(resource.name);
+        out.bindings.push_back({resource.name, space, next[space]++, "", format,
+                                adapted == adaptedFrom.end() ? "" : adapted->second});
+    }
+
+    const spirv_cross::VariableID dummySampler = compiler.build_dummy_sampler_for_combined_images();
+    compiler.build_combined_image_samplers();
+    auto combined = compiler.get_combined_image_samplers();
+    const auto registerOf = [&](spirv_cross::VariableID id) -> std::tuple<uint32_t, uint32_t, uint32_t> {
+        const auto* resource = reflection.find(compiler.get_name(id));
+        if (!resource) return {~0u, 0, 0};
+        return {resource->location.space, resource->location.registerIndex, 0};
+    };
+    std::sort(combined.begin(), combined.end(), [&](const auto& a, const auto& b) {
+        return std::tuple(registerOf(a.image_id), registerOf(a.sampler_id)) <
+               std::tuple(registerOf(b.image_id), registerOf(b.sampler_id));
+    });
+    for (const auto& pair : combined) {
+        const std::string texture = compiler.get_name(pair.image_id);
+        const bool withSampler = pair.sampler_id != dummySampler;
+        const std::string sampler = withSampler ? compiler.get_name(pair.sampler_id) : "";
+        const std::string declared = withSampler ? texture + "_" + sampler : texture;
+        compiler.set_name(pair.combined_id, declared);
+        compiler.unset_decoration(pair.combined_id, spv::DecorationDescriptorSet);
+        compiler.set_decoration(pair.combined_id, spv::DecorationBinding, next["texture_unit"]);
+        out.bindings.push_back(
+            {withSampler ? texture + "+" + sampler : texture, "texture_unit", next["texture_unit"]++, declared, "", ""});
+    }
+    out.source = compiler.compile();
+    return out;
+}
+
+CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
+    spirv_cross::CompilerMSL compiler(spirv);
+    auto options = compiler.get_msl_options();
+    options.set_msl_version(2, 1);
+    compiler.set_msl_options(options);
+
+    CrossCompiled out;
+    uint32_t buffer = 0, texture = 0, sampler = 0;
+    for (const auto& resource : reflection.resources) {
+        spirv_cross::MSLResourceBinding binding;
+        binding.stage = executionModelOf(reflection.stage);
+        binding.desc_set = resource.location.set;
+        binding.binding = resource.location.binding;
+        binding.count = resource.location.count;
+        switch (resource.kind) {
+        case ResourceKind::ConstantBuffer:
+        case ResourceKind::StorageBuffer:
+            out.bindings.push_back({resource.name, "buffer", binding.msl_buffer = buffer++, "", "", ""});
+            break;
+        case ResourceKind::Sampler:
+            out.bindings.push_back({resource.name, "sampler", binding.msl_sampler = sampler++, "", "", ""});
+            break;
+        default:
+            out.bindings.push_back({resource.name, "texture", binding.msl_texture = texture++, "", "", ""});
+            break;
+        }
+        compiler.add_msl_resource_binding(binding);
+    }
+    out.source = compiler.compile();
+    return out;
+}
+
+CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
+    spirv_cross::CompilerHLSL compiler(spirv);
+    const bool usesSpaces = std::any_of(reflection.resources.begin(), reflection.resources.end(),
+                                        [](const auto& resource) { return resource.location.space != 0; });
+    auto options = compiler.get_hlsl_options();
+    options.shader_model = usesSpaces ? 51 : 50;
+    compiler.set_hlsl_options(options);
+
+    CrossCompiled out;
+    for (const auto& resource : reflection.resources) {
+        spirv_cross::HLSLResourceBinding binding;
+        binding.stage = executionModelOf(reflection.stage);
+        binding.desc_set = resource.location.set;
+        binding.binding = resource.location.binding;
+        const spirv_cross::HLSLResourceBinding::Binding original{resource.location.space,
+                                                                 resource.location.registerIndex};
+        binding.cbv = binding.srv = binding.uav = binding.sampler = original;
+        compiler.add_hlsl_resource_binding(binding);
+        out.bindings.push_back({resource.name, std::string(1, registerLetter(resource.location.registerClass)),
+                                resource.location.registerIndex, "", "", ""});
+    }
+    out.source = compiler.compile();
+    return out;
+}
+
+} // namespace
+
+std::string_view crossTargetName(CrossTarget target) {
+    switch (target) {
+    case CrossTarget::Glsl: return "glsl";
+    case CrossTarget::Essl: return "essl";
+    case CrossTarget::Msl: return "msl";
+    case CrossTarget::Hlsl: return "hlsl";
+    }
+    return "unknown";
+}
+
+CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, CrossTarget target,
+                           const std::string& sourceName) {
+    try {
+        switch (target) {
+        case CrossTarget::Glsl: return toOpenGl(spirv, reflection, false, sourceName);
+        case CrossTarget::Essl: return toOpenGl(spirv, reflection, true, sourceName);
+        case CrossTarget::Msl: return toMsl(spirv, reflection);
+        case CrossTarget::Hlsl: return toHlsl(spirv, reflection);
+        }
+    } catch (const spirv_cross::CompilerError& error) {
+        throw CompileError(sourceName + ": error: " + std::string(crossTargetName(target)) +
+                           " cannot express the shader: " + error.what());
+    }
+    return {};
+}
+
+} // namespace iblkit::compiler

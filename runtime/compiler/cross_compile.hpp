@@ -1,0 +1,37 @@
+#pragma once
+
+#include "reflection.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace iblkit::compiler {
+
+enum class CrossTarget { Glsl, Essl, Msl, Hlsl };
+std::string_view crossTargetName(CrossTarget target);
+
+// Where one HLSL resource lands in a target language.
+struct TargetBinding {
+    std::string resource;  // the HLSL name; for a combined sampler "Texture+Sampler"
+    std::string namespace_; // "uniform_block", "texture_unit", "image_unit", "storage_buffer" (GL);
+                            // "buffer", "texture", "sampler" (MSL); "b", "t", "s", "u" (HLSL)
+    uint32_t slot;
+    std::string declaredName; // the name in the generated source when it differs from resource
+    std::string format;       // image units: the format declared in the target
+    std::string adaptedFrom;  // ESSL: the original format when a stand-in was declared
+};
+
+struct CrossCompiled {
+    std::string source;
+    std::vector<TargetBinding> bindings;
+};
+
+// SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1, MSL 2.1 or HLSL (SM 5.0,
+// 5.1 where a register space is used) with SPIRV-Cross. Resources are numbered per target
+// namespace in register order (docs/bindings.md). Throws CompileError naming the construct a
+// target cannot express.
+CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, CrossTarget target,
+                           const std::string& sourceName);
+
+} // namespace iblkit::compiler

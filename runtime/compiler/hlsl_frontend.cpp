@@ -1,0 +1,149 @@
+#include "hlsl_frontend.hpp"
+
+#include "compile_error.hpp"
+#include "diagnostics.hpp"
+#include "hlsl_register_resolver.hpp"
+#include "image_format_override.hpp"
+#include "include_resolver.hpp"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace iblkit::compiler {
+namespace {
+
+constexpr int kHlslVersion = 100;
+constexpr auto kMessages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules |
+                                                    EShMsgHlslOffsets);
+
+// glslang keeps process-wide tables: set them up once and tear them down at exit.
+void initializeGlslangOnce() {
+    struct Process {
+        Process() { glslang::InitializeProcess(); }
+        ~Process() { glslang::FinalizeProcess(); }
+    };
+    static Process process;
+}
+
+EShLanguage toGlslang(ShaderStage stage) {
+    switch (stage) {
+    case ShaderStage::Vertex: return EShLangVertex;
+    case ShaderStage::TessControl: return EShLangTessControl;
+    case ShaderStage::TessEvaluation: return EShLangTessEvaluation;
+    case ShaderStage::Geometry: return EShLangGeometry;
+    case ShaderStage::Fragment: return EShLangFragment;
+    case ShaderStage::Compute: return EShLangCompute;
+    }
+    return EShLangCompute;
+}
+
+std::string preambleOf(const CompileOptions& options) {
+    std::string preamble;
+    for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
+    return preamble;
+}
+
+[[noreturn]] void failWith(const std::string& log, const IncludeResolver& files, const std::string& sourceName,
+                           const std::string& fallback) {
+    const auto diagnostics = parseGlslangLog(log, files, sourceName);
+    throw CompileError(diagnostics.errors.empty() ? sourceName + ": error: " + fallback
+                                                  : joinLines(diagnostics.errors));
+}
+
+// One TShader configured the same way for the preprocessing pass and the real parse.
+struct ConfiguredShader {
+    ConfiguredShader(EShLanguage language, const CompileOptions& options, const std::string& sourceName,
+                     const std::string& text)
+        : shader(language), preamble(preambleOf(options)), name(sourceName), source(text.c_str()),
+          length(static_cast<int>(text.size())) {
+        nameText = name.c_str();
+        shader.setStringsWithLengthsAndNames(&source, &length, &nameText, 1);
+        shader.setPreamble(preamble.c_str());
+        shader.setEntryPoint(options.entryPoint.c_str());
+        shader.setSourceEntryPoint(options.entryPoint.c_str());
+        shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, kHlslVersion);
+        shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+        shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+        shader.setHlslIoMapping(true);
+    }
+
+    glslang::TShader shader;
+    std::string preamble;
+    std::string name;
+    const char* source;
+    int length;
+    const char* nameText = nullptr;
+};
+
+ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
+    if (options.stage) return *options.stage;
+    IncludeResolver includes(options.includeDirs);
+    includes.addSource(sourceName, text);
+    ConfiguredShader configured(EShLangCompute, options, sourceName, text);
+    std::string preprocessed;
+    if (!configured.shader.preprocess(GetDefaultResources(), kHlslVersion, ENoProfile, false, false, kMessages,
+                                      &preprocessed, includes))
+        failWith(configured.shader.getInfoLog(), includes, sourceName, "preprocessing failed");
+    return deduceStage(preprocessed, options.entryPoint, sourceName);
+}
+
+} // namespace
+
+std::string readSource(const std::filesystem::path& path) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error))
+        throw CompileError(path.string() + ": error: no such file");
+    if (!std::filesystem::is_regular_file(path, error))
+        throw CompileError(path.string() + ": error: not a regular file");
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw CompileError(path.string() + ": error: cannot read the file: " + std::strerror(errno));
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
+
+FrontendResult compileHlsl(const CompileOptions& options) {
+    initializeGlslangOnce();
+    const std::string sourceName = options.source.string();
+    const std::string text = readSource(options.source);
+    const ShaderStage stage = stageOf(options, sourceName, text);
+    const EShLanguage language = toGlslang(stage);
+
+    IncludeResolver includes(options.includeDirs);
+    includes.addSource(sourceName, text);
+    ConfiguredShader configured(language, options, sourceName, text);
+    if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes))
+        failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
+
+    glslang::TProgram program;
+    program.addShader(&configured.shader);
+    if (!program.link(kMessages))
+        failWith(program.getInfoLog(), includes, sourceName, "link failed");
+
+    glslang::TIntermediate& intermediate = *program.getIntermediate(language);
+    overrideImageFormats(intermediate, options.imageFormats, sourceName);
+
+    HlslRegisterResolver resolver(intermediate, options.bindingShifts, sourceName);
+    const bool mapped = program.mapIO(&resolver);
+    if (resolver.error()) throw CompileError(*resolver.error());
+    if (!mapped) failWith(program.getInfoLog(), includes, sourceName, "resource binding failed");
+
+    FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {}};
+    glslang::SpvOptions spvOptions;
+    spvOptions.disableOptimizer = true;
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
+    result.warnings = parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings;
+    const std::string spvMessages = logger.getAllMessages();
+    if (!spvMessages.empty()) result.warnings.push_back(sourceName + ": warning: " + spvMessages);
+    return result;
+}
+
+} // namespace iblkit::compiler

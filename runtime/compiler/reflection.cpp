@@ -1,0 +1,225 @@
+#include "reflection.hpp"
+
+#include "compile_error.hpp"
+#include "image_formats.hpp"
+
+#include <nlohmann/json.hpp>
+#include <spirv_cross/spirv_cross.hpp>
+
+#include <algorithm>
+#include <tuple>
+
+namespace iblkit::compiler {
+namespace {
+
+using spirv_cross::SPIRType;
+
+std::string scalarName(const SPIRType& type) {
+    switch (type.basetype) {
+    case SPIRType::Boolean: return "bool";
+    case SPIRType::Int: return "int";
+    case SPIRType::UInt: return "uint";
+    case SPIRType::Half: return "half";
+    case SPIRType::Float: return "float";
+    case SPIRType::Double: return "double";
+    case SPIRType::Int64: return "int64_t";
+    case SPIRType::UInt64: return "uint64_t";
+    case SPIRType::Short: return "int16_t";
+    case SPIRType::UShort: return "uint16_t";
+    default: return "unknown";
+    }
+}
+
+std::string hlslTypeName(const spirv_cross::Compiler& compiler, const SPIRType& type) {
+    std::string name;
+    if (type.basetype == SPIRType::Struct) {
+        name = compiler.get_name(type.self);
+    } else {
+        name = scalarName(type);
+        if (type.columns > 1) name += std::to_string(type.columns) + "x" + std::to_string(type.vecsize);
+        else if (type.vecsize > 1) name += std::to_string(type.vecsize);
+    }
+    // SPIR-V lists array sizes innermost first.
+    for (size_t i = type.array.size(); i-- > 0;) name += "[" + std::to_string(type.array[i]) + "]";
+    return name;
+}
+
+std::vector<BlockMember> membersOf(const spirv_cross::Compiler& compiler, const SPIRType& block) {
+    std::vector<BlockMember> members;
+    for (uint32_t i = 0; i < block.member_types.size(); ++i) {
+        const auto& memberType = compiler.get_type(block.member_types[i]);
+        members.push_back({compiler.get_member_name(block.self, i), hlslTypeName(compiler, memberType),
+                           compiler.type_struct_member_offset(block, i),
+                           static_cast<uint32_t>(compiler.get_declared_struct_member_size(block, i))});
+    }
+    return members;
+}
+
+std::string dimensionName(const SPIRType::ImageType& image) {
+    std::string name;
+    switch (image.dim) {
+    case spv::Dim1D: name = "1d"; break;
+    case spv::Dim2D: name = "2d"; break;
+    case spv::Dim3D: name = "3d"; break;
+    case spv::DimCube: name = "cube"; break;
+    case spv::DimBuffer: name = "buffer"; break;
+    default: name = "other"; break;
+    }
+    return image.arrayed ? name + "_array" : name;
+}
+
+struct Reflector {
+    const spirv_cross::Compiler& compiler;
+    const std::vector<ResourceRegister>& registers;
+    ShaderReflection& out;
+
+    const ResourceRegister& registerOf(const std::string& name) const {
+        for (const auto& assigned : registers)
+            if (assigned.name == name) return assigned;
+        throw CompileError("error: internal: no register was assigned to resource '" + name + "'");
+    }
+
+    ReflectedResource& add(const spirv_cross::Resource& resource, ResourceKind kind) {
+        out.resources.push_back({resource.name, kind, registerOf(resource.name), {}, {}, {}, {}, false, 0, {}});
+        return out.resources.back();
+    }
+
+    void addBuffer(const spirv_cross::Resource& resource, ResourceKind kind) {
+        auto& reflected = add(resource, kind);
+        const auto& type = compiler.get_type(resource.base_type_id);
+        reflected.blockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
+        reflected.members = membersOf(compiler, type);
+        reflected.readOnly = kind == ResourceKind::StorageBuffer &&
+                             compiler.get_buffer_block_flags(resource.id).get(spv::DecorationNonWritable);
+    }
+
+    void addImage(const spirv_cross::Resource& resource, bool storage) {
+        const auto& type = compiler.get_type(resource.type_id);
+        const bool buffer = type.image.dim == spv::DimBuffer;
+        const ResourceKind kind = storage ? (buffer ? ResourceKind::StorageTexelBuffer : ResourceKind::StorageImage)
+                                          : (buffer ? ResourceKind::TexelBuffer : ResourceKind::Texture);
+        auto& reflected = add(resource, kind);
+        reflected.dimension = dimensionName(type.image);
+        const auto* format = findImageFormat(type.image.format);
+        reflected.format = format ? std::string(format->glslName) : "unknown";
+        reflected.vulkanFormat = format ? std::string(format->vulkanName) : "";
+        reflected.componentType = scalarName(compiler.get_type(type.image.type));
+    }
+};
+
+uint32_t registerOrder(const ReflectedResource& resource) {
+    return static_cast<uint32_t>(resource.location.registerClass);
+}
+
+} // namespace
+
+std::string_view resourceKindName(ResourceKind kind) {
+    switch (kind) {
+    case ResourceKind::ConstantBuffer: return "cbuffer";
+    case ResourceKind::Texture: return "texture";
+    case ResourceKind::Sampler: return "sampler";
+    case ResourceKind::StorageImage: return "storage_image";
+    case ResourceKind::StorageBuffer: return "buffer";
+    case ResourceKind::TexelBuffer: return "texel_buffer";
+    case ResourceKind::StorageTexelBuffer: return "storage_texel_buffer";
+    }
+    return "unknown";
+}
+
+const ReflectedResource* ShaderReflection::find(const std::string& name) const {
+    for (const auto& resource : resources)
+        if (resource.name == name) return &resource;
+    return nullptr;
+}
+
+ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::vector<ResourceRegister>& registers,
+                               const std::string& entryPoint, ShaderStage stage) {
+    spirv_cross::Compiler compiler(spirv);
+    ShaderReflection out;
+    out.entryPoint = entryPoint;
+    out.stage = stage;
+    Reflector reflector{compiler, registers, out};
+    const auto resources = compiler.get_shader_resources();
+    for (const auto& resource : resources.uniform_buffers) reflector.addBuffer(resource, ResourceKind::ConstantBuffer);
+    for (const auto& resource : resources.storage_buffers) reflector.addBuffer(resource, ResourceKind::StorageBuffer);
+    for (const auto& resource : resources.separate_images) reflector.addImage(resource, false);
+    for (const auto& resource : resources.storage_images) reflector.addImage(resource, true);
+    for (const auto& resource : resources.separate_samplers) reflector.add(resource, ResourceKind::Sampler);
+    std::sort(out.resources.begin(), out.resources.end(), [](const auto& a, const auto& b) {
+        return std::tuple(registerOrder(a), a.location.space, a.location.registerIndex) <
+               std::tuple(registerOrder(b), b.location.space, b.location.registerIndex);
+    });
+
+    for (const auto& block : resources.push_constant_buffers) {
+        const auto& type = compiler.get_type(block.base_type_id);
+        out.pushConstantBlock = block.name;
+        out.pushConstantSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
+        out.pushConstants = membersOf(compiler, type);
+    }
+    for (const auto& constant : compiler.get_specialization_constants()) {
+        const auto& value = compiler.get_constant(constant.id);
+        const auto& type = compiler.get_type(value.constant_type);
+        const double defaultValue = type.basetype == SPIRType::Float ? value.scalar_f32()
+                                    : type.basetype == SPIRType::Int ? value.scalar_i32()
+                                                                     : value.scalar();
+        out.specializationConstants.push_back(
+            {compiler.get_name(constant.id), constant.constant_id, hlslTypeName(compiler, type), defaultValue});
+    }
+    if (stage == ShaderStage::Compute) {
+        const auto& modes = compiler.get_execution_mode_bitset();
+        if (modes.get(spv::ExecutionModeLocalSize))
+            for (uint32_t axis = 0; axis < 3; ++axis)
+                out.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
+    }
+    return out;
+}
+
+nlohmann::json toJson(const ShaderReflection& reflection) {
+    using nlohmann::json;
+    const auto membersJson = [](const std::vector<BlockMember>& members) {
+        json array = json::array();
+        for (const auto& member : members)
+            array.push_back({{"name", member.name}, {"type", member.type}, {"offset", member.offset}, {"size", member.size}});
+        return array;
+    };
+    json resources = json::array();
+    for (const auto& resource : reflection.resources) {
+        json entry = {{"name", resource.name},
+                      {"kind", resourceKindName(resource.kind)},
+                      {"register", resource.location.registerName()},
+                      {"space", resource.location.space},
+                      {"explicit_register", resource.location.explicitRegister},
+                      {"count", resource.location.count},
+                      {"set", resource.location.set},
+                      {"binding", resource.location.binding}};
+        if (!resource.dimension.empty()) {
+            entry["dimension"] = resource.dimension;
+            entry["component_type"] = resource.componentType;
+        }
+        if (resource.kind == ResourceKind::StorageImage || resource.kind == ResourceKind::StorageTexelBuffer) {
+            entry["format"] = resource.format;
+            entry["vulkan_format"] = resource.vulkanFormat;
+        }
+        if (resource.kind == ResourceKind::ConstantBuffer || resource.kind == ResourceKind::StorageBuffer) {
+            entry["size"] = resource.blockSize;
+            entry["members"] = membersJson(resource.members);
+        }
+        if (resource.kind == ResourceKind::StorageBuffer) entry["read_only"] = resource.readOnly;
+        resources.push_back(std::move(entry));
+    }
+    json specialization = json::array();
+    for (const auto& constant : reflection.specializationConstants)
+        specialization.push_back({{"name", constant.name}, {"constant_id", constant.constantId},
+                                  {"type", constant.type}, {"default", constant.defaultValue}});
+    json out = {{"entry_point", reflection.entryPoint},
+                {"stage", stageName(reflection.stage)},
+                {"resources", std::move(resources)},
+                {"push_constants", {{"block", reflection.pushConstantBlock},
+                                    {"size", reflection.pushConstantSize},
+                                    {"members", membersJson(reflection.pushConstants)}}},
+                {"specialization_constants", std::move(specialization)}};
+    if (reflection.stage == ShaderStage::Compute) out["workgroup_size"] = reflection.workgroupSize;
+    return out;
+}
+
+} // namespace iblkit::compiler

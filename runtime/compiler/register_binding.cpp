@@ -1,0 +1,112 @@
+#include "register_binding.hpp"
+
+#include "compile_error.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+
+namespace iblkit::compiler {
+
+char registerLetter(RegisterClass registerClass) {
+    constexpr char letters[] = {'b', 't', 's', 'u'};
+    return letters[static_cast<size_t>(registerClass)];
+}
+
+std::optional<RegisterClass> registerClassFromLetter(char letter) {
+    for (RegisterClass registerClass : kRegisterClasses)
+        if (registerLetter(registerClass) == letter) return registerClass;
+    return std::nullopt;
+}
+
+std::optional<uint32_t> BindingShifts::capacity(RegisterClass registerClass) const {
+    const uint32_t base = of(registerClass);
+    std::optional<uint32_t> next;
+    for (uint32_t other : shift)
+        if (other > base && (!next || other < *next)) next = other;
+    if (!next) return std::nullopt;
+    return *next - base;
+}
+
+std::string ResourceRegister::registerName() const {
+    return std::string(1, registerLetter(registerClass)) + std::to_string(registerIndex);
+}
+
+namespace {
+
+using ClassAndSpace = std::pair<RegisterClass, uint32_t>;
+
+ResourceRegister bindResource(const DeclaredResource& resource, uint32_t registerIndex, const BindingShifts& shifts,
+                              const std::string& sourceName) {
+    const auto capacity = shifts.capacity(resource.registerClass);
+    const char letter = registerLetter(resource.registerClass);
+    if (capacity && registerIndex + resource.count > *capacity)
+        throw CompileError(sourceName + ": error: '" + resource.name + "' is in register " + letter +
+                           std::to_string(registerIndex) + ", but the " + letter + " class holds only " +
+                           std::to_string(*capacity) + " registers under the binding shifts; raise the next "
+                           "class's --binding-shift");
+    return ResourceRegister{resource.name,
+                            resource.registerClass,
+                            registerIndex,
+                            resource.count,
+                            resource.space,
+                            resource.explicitRegister.has_value(),
+                            resource.space,
+                            shifts.of(resource.registerClass) + registerIndex};
+}
+
+} // namespace
+
+std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
+                                              const BindingShifts& shifts, const std::string& sourceName) {
+    std::map<ClassAndSpace, std::map<uint32_t, std::string>> taken;
+    for (const auto& resource : declared) {
+        if (!resource.explicitRegister) continue;
+        auto& users = taken[{resource.registerClass, resource.space}];
+        for (uint32_t index = *resource.explicitRegister; index < *resource.explicitRegister + resource.count; ++index) {
+            auto [it, inserted] = users.emplace(index, resource.name);
+            if (!inserted)
+                throw CompileError(sourceName + ": error: register " + registerLetter(resource.registerClass) +
+                                   std::to_string(index) + ", space" + std::to_string(resource.space) +
+                                   " is used by both '" + it->second + "' and '" + resource.name + "'");
+        }
+    }
+
+    std::vector<ResourceRegister> assigned;
+    assigned.reserve(declared.size());
+    for (const auto& resource : declared) {
+        uint32_t registerIndex = 0;
+        if (resource.explicitRegister) {
+            registerIndex = *resource.explicitRegister;
+        } else {
+            auto& users = taken[{resource.registerClass, resource.space}];
+            const auto rangeIsFree = [&](uint32_t first) {
+                for (uint32_t index = first; index < first + resource.count; ++index)
+                    if (users.count(index)) return false;
+                return true;
+            };
+            while (!rangeIsFree(registerIndex)) ++registerIndex;
+            for (uint32_t index = registerIndex; index < registerIndex + resource.count; ++index)
+                users.emplace(index, resource.name);
+        }
+        assigned.push_back(bindResource(resource, registerIndex, shifts, sourceName));
+    }
+    return assigned;
+}
+
+void parseBindingShift(std::string_view text, BindingShifts& shifts) {
+    const auto fail = [&] {
+        throw CompileError("error: --binding-shift expects CLASS=N with CLASS one of b, t, s, u, got '" +
+                           std::string(text) + "'");
+    };
+    if (text.size() < 3 || text[1] != '=') fail();
+    const auto registerClass = registerClassFromLetter(text[0]);
+    if (!registerClass) fail();
+    uint32_t value = 0;
+    const auto digits = text.substr(2);
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error != std::errc() || end != digits.data() + digits.size()) fail();
+    shifts.set(*registerClass, value);
+}
+
+} // namespace iblkit::compiler

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace iblkit::compiler {
+
+// The four HLSL register classes: b (constant buffers), t (shader resource views),
+// s (samplers), u (unordered access views).
+enum class RegisterClass { ConstantBuffer, ShaderResource, Sampler, UnorderedAccess };
+inline constexpr std::array kRegisterClasses{RegisterClass::ConstantBuffer, RegisterClass::ShaderResource,
+                                             RegisterClass::Sampler, RegisterClass::UnorderedAccess};
+
+char registerLetter(RegisterClass registerClass);
+std::optional<RegisterClass> registerClassFromLetter(char letter);
+
+// The one rule from HLSL registers to Vulkan descriptors (docs/bindings.md):
+//   set = space,  binding = shift[class] + register.
+// Each class owns the bindings from its shift up to the next larger shift, so no two
+// resources can share a binding; a register that would cross into the next class's range
+// is an error, not a silent clash.
+struct BindingShifts {
+    std::array<uint32_t, 4> shift{0, 32, 64, 96}; // b, t, s, u
+
+    uint32_t of(RegisterClass registerClass) const { return shift[static_cast<size_t>(registerClass)]; }
+    void set(RegisterClass registerClass, uint32_t value) { shift[static_cast<size_t>(registerClass)] = value; }
+    // Registers of the class that fit below the next class's shift; nullopt when unbounded.
+    std::optional<uint32_t> capacity(RegisterClass registerClass) const;
+};
+
+// A resource as declared in HLSL, in declaration order.
+struct DeclaredResource {
+    std::string name;
+    RegisterClass registerClass;
+    std::optional<uint32_t> explicitRegister; // from ": register(x#)"
+    uint32_t space = 0;
+    uint32_t count = 1; // registers taken: the array size of an array of resources
+};
+
+struct ResourceRegister {
+    std::string name;
+    RegisterClass registerClass;
+    uint32_t registerIndex;
+    uint32_t count;
+    uint32_t space;
+    bool explicitRegister;
+    uint32_t set;
+    uint32_t binding;
+
+    std::string registerName() const; // "t0", "u3"
+};
+
+// Gives each resource without a register the lowest free register of its class and space,
+// in declaration order (as FXC and DXC do), then applies the binding rule.
+// Throws CompileError on a register used twice or one outside its class's range.
+std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
+                                              const BindingShifts& shifts, const std::string& sourceName);
+
+// Parses "b=0" / "t=32" as given to --binding-shift.
+void parseBindingShift(std::string_view text, BindingShifts& shifts);
+
+} // namespace iblkit::compiler

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace iblkit::compiler {
+
+enum class ShaderStage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute };
+
+std::string_view stageName(ShaderStage stage);
+// Accepts glslang's short names (vert, frag, comp, ...) and the long ones (vertex, pixel, ...).
+std::optional<ShaderStage> parseStageName(std::string_view name);
+
+// Reads the stage from the attributes and semantics of the entry point's definition in
+// preprocessed HLSL: [numthreads] is compute, [maxvertexcount] geometry, [domain] with
+// [outputcontrolpoints] hull, [domain] alone domain, [shader("...")] names it, and otherwise
+// an SV_Target in the signature means pixel and an SV_Position vertex.
+// Throws CompileError when the entry point is missing, its stage is not one of ShaderStage, or
+// nothing tells the stage.
+ShaderStage deduceStage(const std::string& preprocessedSource, const std::string& entryPoint,
+                        const std::string& sourceName);
+
+} // namespace iblkit::compiler

@@ -1,0 +1,77 @@
+#include "spirv_tools.hpp"
+
+#include "compile_error.hpp"
+
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+namespace iblkit::compiler {
+namespace {
+
+constexpr spv_target_env kEnvironment = SPV_ENV_VULKAN_1_1;
+
+struct MessageCollector {
+    std::string text;
+    void operator()(spv_message_level_t level, const char*, const spv_position_t& position, const char* message) {
+        if (level > SPV_MSG_WARNING) return;
+        text += (text.empty() ? "" : "; ") + std::string(message) + " (word " + std::to_string(position.index) + ")";
+    }
+};
+
+std::vector<uint32_t> runPasses(spvtools::Optimizer& optimizer, const std::vector<uint32_t>& spirv,
+                                const std::string& sourceName, const char* what) {
+    MessageCollector messages;
+    optimizer.SetMessageConsumer(
+        [&](spv_message_level_t level, const char* source, const spv_position_t& position, const char* message) {
+            messages(level, source, position, message);
+        });
+    std::vector<uint32_t> result;
+    if (!optimizer.Run(spirv.data(), spirv.size(), &result))
+        throw CompileError(sourceName + ": error: SPIR-V " + what + " failed: " + messages.text);
+    return result;
+}
+
+} // namespace
+
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
+    spvtools::SpirvTools tools(kEnvironment);
+    MessageCollector messages;
+    tools.SetMessageConsumer(
+        [&](spv_message_level_t level, const char* source, const spv_position_t& position, const char* message) {
+            messages(level, source, position, message);
+        });
+    if (!tools.Validate(spirv))
+        throw CompileError(sourceName + ": error: the SPIR-V is not valid for Vulkan 1.1: " + messages.text);
+}
+
+std::vector<uint32_t> legalizeHlslSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
+    spvtools::Optimizer optimizer(kEnvironment);
+    optimizer.RegisterLegalizationPasses();
+    return runPasses(optimizer, spirv, sourceName, "legalization");
+}
+
+std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level,
+                                    const std::string& sourceName) {
+    if (level == OptimizationLevel::None) return spirv;
+    spvtools::Optimizer optimizer(kEnvironment);
+    if (level == OptimizationLevel::Performance)
+        optimizer.RegisterPerformancePasses();
+    else
+        optimizer.RegisterSizePasses();
+    return runPasses(optimizer, spirv, sourceName, "optimization");
+}
+
+std::vector<uint32_t> stripDebugInfo(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
+    spvtools::Optimizer optimizer(kEnvironment);
+    optimizer.RegisterPass(spvtools::CreateStripDebugInfoPass());
+    return runPasses(optimizer, spirv, sourceName, "debug-info stripping");
+}
+
+std::string disassembleSpirv(const std::vector<uint32_t>& spirv) {
+    spvtools::SpirvTools tools(kEnvironment);
+    std::string text;
+    tools.Disassemble(spirv, &text, SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES);
+    return text;
+}
+
+} // namespace iblkit::compiler

@@ -1,0 +1,85 @@
+#include "atomic_output.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace iblkit::files {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+    throw FileError(path.string() + ": error: cannot write the file: " + what);
+}
+
+std::filesystem::path writeTemporary(const std::filesystem::path& path, const std::string& contents) {
+    const auto folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) fail(path, "no such directory " + folder.string());
+    if (std::filesystem::is_directory(path, error)) fail(path, "it is a directory");
+    std::string pattern = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+    const int fd = mkstemp(pattern.data());
+    if (fd < 0) fail(path, std::strerror(errno));
+    size_t written = 0;
+    while (written < contents.size()) {
+        const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const std::string reason = std::strerror(errno);
+            ::close(fd);
+            ::unlink(pattern.c_str());
+            fail(path, reason);
+        }
+        written += static_cast<size_t>(n);
+    }
+    // Temporaries are made 0600; outputs get the usual permissions.
+    if (::fchmod(fd, 0644) != 0 || ::close(fd) != 0) {
+        const std::string reason = std::strerror(errno);
+        ::unlink(pattern.c_str());
+        fail(path, reason);
+    }
+    return pattern;
+}
+
+} // namespace
+
+AtomicOutput::~AtomicOutput() {
+    if (!committed_) discard();
+}
+
+void AtomicOutput::add(const std::filesystem::path& path, std::string contents) {
+    try {
+        pending_.push_back({path, writeTemporary(path, contents)});
+    } catch (...) {
+        discard();
+        throw;
+    }
+}
+
+void AtomicOutput::commit() {
+    for (const auto& file : pending_) {
+        std::error_code error;
+        std::filesystem::rename(file.temporary, file.path, error);
+        if (error) {
+            discard();
+            fail(file.path, error.message());
+        }
+    }
+    committed_ = true;
+}
+
+void AtomicOutput::discard() {
+    for (const auto& file : pending_) {
+        std::error_code ignored;
+        std::filesystem::remove(file.temporary, ignored);
+    }
+    pending_.clear();
+}
+
+void writeFileAtomically(const std::filesystem::path& path, const std::string& contents) {
+    AtomicOutput output;
+    output.add(path, contents);
+    output.commit();
+}
+
+} // namespace iblkit::files

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace iblkit::files {
+
+class FileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Writes a set of files all or nothing: every file goes to a temporary beside its final path,
+// and only when all were written are they renamed into place. A failure removes the
+// temporaries and leaves every existing file as it was. Throws FileError.
+class AtomicOutput {
+public:
+    AtomicOutput() = default;
+    AtomicOutput(const AtomicOutput&) = delete;
+    AtomicOutput& operator=(const AtomicOutput&) = delete;
+    ~AtomicOutput();
+
+    void add(const std::filesystem::path& path, std::string contents);
+    void commit();
+
+private:
+    struct Pending {
+        std::filesystem::path path;
+        std::filesystem::path temporary;
+    };
+    void discard();
+
+    std::vector<Pending> pending_;
+    bool committed_ = false;
+};
+
+// One file, all or nothing.
+void writeFileAtomically(const std::filesystem::path& path, const std::string& contents);
+
+} // namespace iblkit::files

@@ -1,0 +1,32 @@
+#include "command_line.hpp"
+#include "compile_all_command.hpp"
+#include "compile_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <stdexcept>
+
+int main(int argc, char** argv) {
+    CLI::App app{"iblkit: HLSL image-based-lighting shaders in every form, and the proof that they agree"};
+    app.set_version_flag("--version", std::string("iblkit ") + IBLKIT_VERSION);
+    app.require_subcommand(1);
+    iblkit::cli::addCompileCommand(app);
+    iblkit::cli::addCompileAllCommand(app);
+    try {
+        app.parse(iblkit::cli::normalizeArguments(argc, argv));
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForAllHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
+    } catch (const CLI::ParseError& error) {
+        fmt::print(stderr, "iblkit: error: {}\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        fmt::print(stderr, "{}\n", error.what());
+        return 1;
+    }
+    return 0;
+}
