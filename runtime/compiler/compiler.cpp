@@ -1,6 +1,7 @@
 #include "compiler.hpp"
 
 #include "hlsl_frontend.hpp"
+#include "spirv_image_format.hpp"
 #include "spirv_tools.hpp"
 
 #include <nlohmann/json.hpp>
@@ -36,7 +37,8 @@ CompiledShader compileShader(const CompileOptions& options) {
     auto frontend = compileHlsl(options);
     CompiledShader shader;
     shader.sourceName = options.source.string();
-    const auto legal = legalizeHlslSpirv(frontend.spirv, shader.sourceName);
+    const auto legal = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), options.imageFormats,
+                                         shader.sourceName);
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);

@@ -2,7 +2,7 @@
 
 #include "compile_error.hpp"
 #include "image_formats.hpp"
-#include "spirv_binary.hpp"
+#include "spirv_module.hpp"
 
 #include <spirv_cross/spirv_glsl.hpp>
 #include <spirv_cross/spirv_hlsl.hpp>
@@ -49,7 +49,9 @@ std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, co
             throw CompileError(sourceName + ": error: ESSL 3.10 cannot declare storage image '" + resource.name +
                                "' of format " + resource.format + ", and no ESSL format can stand in for it");
         const auto* standIn = findImageFormatByGlslName(format->esslStandIn);
-        replaceStorageImageFormat(spirv, format->spirvFormat, standIn->spirvFormat);
+        SpirvModule module(spirv);
+        module.replaceStorageImageFormat(format->spirvFormat, standIn->spirvFormat);
+        spirv = module.words();
         adaptedFrom[resource.name] = resource.format;
     }
     return adaptedFrom;

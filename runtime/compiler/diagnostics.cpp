@@ -52,7 +52,8 @@ Diagnostics parseGlslangLog(const std::string& log, const IncludeResolver& files
         if (std::regex_match(line, match, located) && !isNoise(match[4])) {
             const std::string file = match[2];
             const int lineNumber = std::stoi(match[3]);
-            const std::string message = match[4];
+            std::string message = match[4];
+            message.erase(message.find_last_not_of(' ') + 1);
             isError = match[1] == "ERROR";
             formatted = includeChain(files, file) + file + ":" + std::to_string(lineNumber) + ":" +
                         std::to_string(columnOfToken(files, file, lineNumber, message)) + ": " +
@@ -66,12 +67,6 @@ Diagnostics parseGlslangLog(const std::string& log, const IncludeResolver& files
         (isError ? diagnostics.errors : diagnostics.warnings).push_back(formatted);
     }
     return diagnostics;
-}
-
-std::string joinLines(const std::vector<std::string>& lines) {
-    std::string joined;
-    for (const auto& line : lines) joined += (joined.empty() ? "" : "\n") + line;
-    return joined;
 }
 
 } // namespace iblkit::compiler

@@ -18,6 +18,5 @@ struct Diagnostics {
 // that of the quoted token on the reported line (1 when the token is not on it).
 Diagnostics parseGlslangLog(const std::string& log, const IncludeResolver& files, const std::string& sourceName);
 
-std::string joinLines(const std::vector<std::string>& lines);
 
 } // namespace iblkit::compiler

@@ -3,7 +3,6 @@
 #include "compile_error.hpp"
 #include "diagnostics.hpp"
 #include "hlsl_register_resolver.hpp"
-#include "image_format_override.hpp"
 #include "include_resolver.hpp"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -52,9 +51,9 @@ std::string preambleOf(const CompileOptions& options) {
 
 [[noreturn]] void failWith(const std::string& log, const IncludeResolver& files, const std::string& sourceName,
                            const std::string& fallback) {
+    // glslang's HLSL frontend cascades after its first error; the first is the real one.
     const auto diagnostics = parseGlslangLog(log, files, sourceName);
-    throw CompileError(diagnostics.errors.empty() ? sourceName + ": error: " + fallback
-                                                  : joinLines(diagnostics.errors));
+    throw CompileError(diagnostics.errors.empty() ? sourceName + ": error: " + fallback : diagnostics.errors.front());
 }
 
 // One TShader configured the same way for the preprocessing pass and the real parse.
@@ -128,7 +127,6 @@ FrontendResult compileHlsl(const CompileOptions& options) {
         failWith(program.getInfoLog(), includes, sourceName, "link failed");
 
     glslang::TIntermediate& intermediate = *program.getIntermediate(language);
-    overrideImageFormats(intermediate, options.imageFormats, sourceName);
 
     HlslRegisterResolver resolver(intermediate, options.bindingShifts, sourceName);
     const bool mapped = program.mapIO(&resolver);

@@ -20,7 +20,7 @@ struct FrontendResult {
 
 // HLSL -> SPIR-V (Vulkan 1.1, SPIR-V 1.3) with glslang's HLSL frontend: the preprocessor
 // with the options' defines and include folders, the stage deduced or given, the kit's
-// register rule, the image format overrides. Throws CompileError.
+// register rule. Throws CompileError.
 FrontendResult compileHlsl(const CompileOptions& options);
 
 // The source text as glslang reads it (the file's own bytes), or CompileError.

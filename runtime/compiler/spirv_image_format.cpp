@@ -1,0 +1,120 @@
+#include "spirv_image_format.hpp"
+
+#include "compile_error.hpp"
+#include "image_formats.hpp"
+#include "spirv_module.hpp"
+
+#include <spirv/unified1/spirv.hpp>
+
+#include <algorithm>
+
+namespace iblkit::compiler {
+namespace {
+
+// Operand positions (after the opcode word) of the instructions this pass reads.
+constexpr size_t kImageSampledType = 1, kImageSampled = 6, kImageFormat = 7;
+
+enum class Component { Float, Int, Uint };
+
+Component componentOfFormat(std::string_view name) {
+    if (name.ends_with("ui")) return Component::Uint;
+    if (name.ends_with("i")) return Component::Int;
+    return Component::Float;
+}
+
+uint32_t channelsOfFormat(std::string name) {
+    if (auto at = name.find("_snorm"); at != std::string::npos) name.erase(at);
+    return static_cast<uint32_t>(std::count_if(name.begin(), name.end(), [](char c) {
+        return c == 'r' || c == 'g' || c == 'b' || c == 'a';
+    }));
+}
+
+const char* componentName(Component component) {
+    return component == Component::Float ? "float" : component == Component::Int ? "int" : "uint";
+}
+
+class FormatApplier {
+public:
+    FormatApplier(SpirvModule& module, std::string sourceName) : module_(module), sourceName_(std::move(sourceName)) {}
+
+    void apply(const std::string& name, const std::string& formatName) {
+        const auto* format = findImageFormatByGlslName(formatName);
+        if (!format) fail("unknown image format '" + formatName + "' (known: " + knownFormats() + ")");
+        const uint32_t variable = storageImageVariable(name);
+        const uint32_t imageType = imageTypeOf(variable);
+        check(name, variable, imageType, formatName);
+        const uint32_t ownType = unsharedImageType(variable, imageType);
+        module_.definition(ownType)->operands[kImageFormat] = format->spirvFormat;
+        if (format->esslStandIn != format->glslName) module_.requireCapability(spv::CapabilityStorageImageExtendedFormats);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& message) const { throw CompileError(sourceName_ + ": error: " + message); }
+
+    static std::string knownFormats() {
+        std::string names;
+        for (unsigned format = 0; format < 64; ++format)
+            if (const auto* info = findImageFormat(format)) names += (names.empty() ? "" : ", ") + std::string(info->glslName);
+        return names;
+    }
+
+    uint32_t storageImageVariable(const std::string& name) const {
+        for (uint32_t id : module_.idsNamed(name)) {
+            const auto* variable = module_.definition(id);
+            if (!variable || variable->opcode != spv::OpVariable) continue;
+            const auto* image = module_.definition(module_.pointeeOf(variable->operands[0]));
+            if (image && image->opcode == spv::OpTypeImage && image->operands[kImageSampled] == 2) return id;
+            fail("--image-format names '" + name + "', which is not a storage image (RWTexture*)");
+        }
+        fail("--image-format names '" + name + "', which the entry point does not use as a storage image");
+    }
+
+    uint32_t imageTypeOf(uint32_t variable) const {
+        return module_.pointeeOf(module_.definition(variable)->operands[0]);
+    }
+
+    void check(const std::string& name, uint32_t variable, uint32_t imageType, const std::string& formatName) const {
+        const auto* sampled = module_.definition(module_.definition(imageType)->operands[kImageSampledType]);
+        const Component component = sampled->opcode == spv::OpTypeFloat ? Component::Float
+                                    : sampled->operands[2] ? Component::Int
+                                                           : Component::Uint;
+        if (component != componentOfFormat(formatName))
+            fail("image format " + formatName + " of '" + name + "' does not match the component type of its element (" +
+                 componentName(component) + ")");
+        const uint32_t channels = channelsOfFormat(formatName);
+        for (uint32_t written : module_.componentsWrittenTo(variable))
+            if (written < channels)
+                fail("image format " + formatName + " of '" + name + "' has " + std::to_string(channels) +
+                     " channels but its element type has " + std::to_string(written));
+    }
+
+    // The variable's image type, split off when another variable shares it.
+    uint32_t unsharedImageType(uint32_t variable, uint32_t imageType) {
+        const uint32_t pointerType = module_.definition(variable)->operands[0];
+        // Owned: the image type is used by the variable's pointer type and its loads alone.
+        const size_t ownUses = 1 + module_.loadsOf(variable).size();
+        if (module_.usesOf(imageType) == ownUses && module_.usesOf(pointerType) == 1) return imageType;
+        const uint32_t newImage = module_.cloneTypeAfter(imageType, pointerType);
+        const uint32_t newPointer = module_.cloneTypeAfter(pointerType, newImage);
+        module_.definition(newPointer)->operands[2] = newImage;
+        module_.retypeVariable(variable, newPointer, imageType, newImage);
+        return newImage;
+    }
+
+    SpirvModule& module_;
+    std::string sourceName_;
+};
+
+} // namespace
+
+std::vector<uint32_t> applyImageFormats(const std::vector<uint32_t>& spirv,
+                                        const std::map<std::string, std::string>& formats,
+                                        const std::string& sourceName) {
+    if (formats.empty()) return spirv;
+    SpirvModule module(spirv);
+    FormatApplier applier(module, sourceName);
+    for (const auto& [name, format] : formats) applier.apply(name, format);
+    return module.words();
+}
+
+} // namespace iblkit::compiler

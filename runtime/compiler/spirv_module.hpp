@@ -1,0 +1,49 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace iblkit::compiler {
+
+struct SpirvInstruction {
+    uint32_t opcode;
+    std::vector<uint32_t> operands; // every word after the opcode word
+};
+
+// A SPIR-V module as a list of instructions, for the few edits the compiler makes that
+// SPIRV-Tools has no pass for (storage image formats).
+class SpirvModule {
+public:
+    explicit SpirvModule(const std::vector<uint32_t>& words);
+    std::vector<uint32_t> words() const;
+
+    SpirvInstruction* definition(uint32_t id);
+    const SpirvInstruction* definition(uint32_t id) const;
+    std::vector<uint32_t> idsNamed(const std::string& name) const;
+    uint32_t pointeeOf(uint32_t pointerType) const; // 0 when not an OpTypePointer
+    // How often id is referenced outside names, decorations and its own definition; may
+    // over-count (a literal equal to the id), never under-count.
+    size_t usesOf(uint32_t id) const;
+    // The result ids of every OpLoad from variable.
+    std::vector<uint32_t> loadsOf(uint32_t variable) const;
+    // The component count of every texel OpImageWrite stores through a load of variable.
+    std::vector<uint32_t> componentsWrittenTo(uint32_t variable) const;
+
+    // Declares a copy of a type under a new id right after the declaration of afterId.
+    uint32_t cloneTypeAfter(uint32_t typeId, uint32_t afterId);
+    // Gives variable the new pointer type and its loads the new image type.
+    void retypeVariable(uint32_t variable, uint32_t newPointer, uint32_t oldImage, uint32_t newImage);
+    void requireCapability(uint32_t capability);
+    // Rewrites the format of every storage-image type with format `from`.
+    void replaceStorageImageFormat(uint32_t from, uint32_t to);
+
+private:
+    size_t indexOfDefinition(uint32_t id) const;
+
+    std::array<uint32_t, 5> header_{};
+    std::vector<SpirvInstruction> instructions_;
+};
+
+} // namespace iblkit::compiler

@@ -1,0 +1,161 @@
+// `iblkit compile` and `iblkit compile-all` as a user runs them: every output written on
+// success; on bad input one clear message, a non-zero exit, and no file written or damaged.
+#include "run_process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace iblkit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readFile(const fs::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        out = fs::temp_directory_path() / ("iblkit-cli-" + std::to_string(::getpid()) + "-" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(out);
+        fs::create_directories(out);
+    }
+    void TearDown() override { fs::remove_all(out); }
+
+    ProcessResult iblkit(std::vector<std::string> arguments) const {
+        arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
+        return runProcess(arguments);
+    }
+    std::string at(const std::string& name) const { return (out / name).string(); }
+    size_t filesInOut() const { return std::distance(fs::directory_iterator(out), fs::directory_iterator()); }
+
+    // A failed run: non-zero exit, one line on stderr holding `expected`, nothing written.
+    void expectFailure(const std::vector<std::string>& arguments, const std::string& expected) const {
+        const auto result = iblkit(arguments);
+        EXPECT_NE(result.exitCode, 0);
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_EQ(filesInOut(), 0u) << "a failed run wrote files";
+    }
+
+    fs::path out;
+};
+
+TEST_F(Cli, CompileWritesAllSevenFiles) {
+    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl", at("lut.glsl"),
+                                "--essl", at("lut.essl"), "--msl", at("lut.metal"), "--hlsl", at("lut.hlsl"),
+                                "--reflect", at("lut.json"), "-MD", "-MF", at("lut.d")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    for (const char* name : {"lut.spv", "lut.glsl", "lut.essl", "lut.metal", "lut.hlsl", "lut.json", "lut.d"})
+        EXPECT_GT(fs::file_size(out / name), 0u) << name;
+    EXPECT_EQ(filesInOut(), 7u) << "no temporaries are left";
+    EXPECT_EQ(readFile(out / "lut.d"), at("lut.spv") + ": hlsl/PrecomputedBrdfCS.hlsl \\\n  hlsl/Common/PBR.fxh\n");
+}
+
+TEST_F(Cli, FlagsReachTheCompiler) {
+    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-Os", "--strip",
+                                "-DSAMPLE_COUNT=64", "-I", "hlsl", "--image-format", "Precomputed=rg16f",
+                                "--binding-shift", "u=7", "--binding-shift", "b=0", "--reflect", at("lut.json")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto json = readFile(out / "lut.json");
+    EXPECT_NE(json.find("\"binding\": 7"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"format\": \"rg16f\""), std::string::npos) << json;
+}
+
+TEST_F(Cli, SameInputAndFlagsGiveByteIdenticalOutputs) {
+    const auto compileInto = [&](const std::string& prefix) {
+        const auto result = iblkit({"compile", "hlsl/PrefilterSpecularCS.hlsl", "-o", at(prefix + ".spv"), "-O",
+                                    "--glsl", at(prefix + ".glsl"), "--essl", at(prefix + ".essl"), "--msl",
+                                    at(prefix + ".metal"), "--hlsl", at(prefix + ".hlsl"), "--reflect", at(prefix + ".json")});
+        ASSERT_EQ(result.exitCode, 0) << result.err;
+    };
+    compileInto("first");
+    compileInto("second");
+    for (const char* extension : {".spv", ".glsl", ".essl", ".metal", ".hlsl", ".json"})
+        EXPECT_TRUE(readFile(out / (std::string("first") + extension)) == readFile(out / (std::string("second") + extension)))
+            << extension;
+}
+
+TEST_F(Cli, SyntaxError) {
+    const auto source = (out / "bad.hlsl").string();
+    std::ofstream(source) << "[numthreads(1,1,1)]\nvoid main() { float x = ; }\n";
+    const auto result = iblkit({"compile", source, "-o", at("bad.spv"), "--glsl", at("bad.glsl")});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_EQ(result.err.rfind(source + ":2:", 0), 0u) << result.err;
+    EXPECT_NE(result.err.find(": error: "), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(out / "bad.spv"));
+    EXPECT_FALSE(fs::exists(out / "bad.glsl"));
+}
+
+TEST_F(Cli, MissingInclude) {
+    const auto source = (out / "inc.hlsl").string();
+    std::ofstream(source) << "#include \"Common/Missing.fxh\"\n[numthreads(1,1,1)]\nvoid main() {}\n";
+    const auto result = iblkit({"compile", source, "-o", at("inc.spv")});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_EQ(result.err.rfind(source + ":1:", 0), 0u) << result.err;
+    EXPECT_NE(result.err.find("Common/Missing.fxh"), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(out / "inc.spv"));
+}
+
+TEST_F(Cli, UnknownEntryPoint) {
+    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-E", "CSMain"},
+                  "hlsl/PrecomputedBrdfCS.hlsl: error: entry point 'CSMain' is not defined");
+}
+
+TEST_F(Cli, UnsupportedStage) {
+    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-S", "raygen"},
+                  "error: unsupported stage 'raygen'");
+}
+
+TEST_F(Cli, MissingSourceFile) {
+    expectFailure({"compile", "hlsl/NoSuchShader.hlsl", "-o", at("x.spv")}, "hlsl/NoSuchShader.hlsl: error: no such file");
+}
+
+TEST_F(Cli, UnknownFlag) {
+    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "--fast-math"}, "iblkit: error:");
+}
+
+TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {
+    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl",
+                                at("no/such/folder/lut.glsl")});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_NE(result.err.find("lut.glsl: error: cannot write the file: no such directory"), std::string::npos) << result.err;
+    EXPECT_EQ(filesInOut(), 0u);
+}
+
+TEST_F(Cli, AFailedRunNeverDamagesAGoodOutput) {
+    std::ofstream(out / "lut.spv") << "GOOD";
+    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-E", "nothere"});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_EQ(readFile(out / "lut.spv"), "GOOD");
+    EXPECT_EQ(filesInOut(), 1u);
+}
+
+TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
+    const auto result = iblkit({"compile-all", "hlsl/shaders.json", "-o", at("all")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 2) << result.out;
+    EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
+    EXPECT_NE(result.out.find("PrefilterSpecularCS "), std::string::npos) << result.out;
+    for (const char* name : {"PrecomputedBrdfCS", "PrefilterSpecularCS"})
+        for (const char* extension : {".spv", ".glsl", ".essl", ".metal", ".hlsl", ".json"})
+            EXPECT_TRUE(fs::exists(out / "all" / (std::string(name) + extension))) << name << extension;
+}
+
+TEST_F(Cli, CompileAllRejectsAnUnknownForm) {
+    expectFailure({"compile-all", "hlsl/shaders.json", "-o", at("all"), "--only", "glsl,spirv-asm"},
+                  "--only: unknown form 'spirv-asm'");
+}
+
+} // namespace
+} // namespace iblkit::testing

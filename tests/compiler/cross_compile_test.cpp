@@ -1,0 +1,130 @@
+// Every generated form is usable: GLSL and ESSL compile back to valid SPIR-V, the HLSL
+// round trip compiles again with the same registers, and each target's bindings are recorded.
+#include "compile_error.hpp"
+#include "compiler.hpp"
+#include "glslang_round_trip.hpp"
+#include "seed_test_support.hpp"
+#include "temp_folder.hpp"
+
+#include <gtest/gtest.h>
+
+namespace iblkit::compiler {
+namespace {
+
+const TargetBinding* findBinding(const CrossCompiled& compiled, const std::string& resource) {
+    for (const auto& binding : compiled.bindings)
+        if (binding.resource == resource) return &binding;
+    return nullptr;
+}
+
+class EveryShaderAndOptimization : public ::testing::TestWithParam<std::tuple<std::string, OptimizationLevel>> {
+protected:
+    CompileOptions options() const { return testing::manifestShader(std::get<0>(GetParam())).options; }
+    CompiledShader compile() const {
+        auto options = this->options();
+        options.optimization = std::get<1>(GetParam());
+        return compileShader(options);
+    }
+};
+
+TEST_P(EveryShaderAndOptimization, GlslAndEsslCompileBackToValidSpirv) {
+    const auto shader = compile();
+    for (auto target : {CrossTarget::Glsl, CrossTarget::Essl}) {
+        const auto compiled = crossCompileShader(shader, target);
+        EXPECT_EQ(testing::compileGlslBack(compiled.source), "") << crossTargetName(target) << ":\n" << compiled.source;
+    }
+}
+
+TEST_P(EveryShaderAndOptimization, HlslRoundTripCompilesAgainWithTheSameRegisters) {
+    const auto shader = compile();
+    testing::TempFolder folder;
+    CompileOptions again;
+    again.source = folder.write("round_trip.hlsl", crossCompileShader(shader, CrossTarget::Hlsl).source);
+    // HLSL cannot state a storage format (Direct3D takes it from the view), so the round trip
+    // needs the same --image-format as the original.
+    again.imageFormats = options().imageFormats;
+    const auto roundTrip = compileShader(again);
+    ASSERT_EQ(roundTrip.reflection.resources.size(), shader.reflection.resources.size());
+    for (const auto& resource : shader.reflection.resources) {
+        const auto* same = roundTrip.reflection.find(resource.name);
+        ASSERT_NE(same, nullptr) << resource.name;
+        EXPECT_EQ(same->location.registerName(), resource.location.registerName()) << resource.name;
+        EXPECT_EQ(same->location.binding, resource.location.binding) << resource.name;
+        EXPECT_EQ(same->format, resource.format) << resource.name;
+    }
+    EXPECT_EQ(roundTrip.reflection.workgroupSize, shader.reflection.workgroupSize);
+}
+
+INSTANTIATE_TEST_SUITE_P(SeedShaders, EveryShaderAndOptimization,
+                         ::testing::Combine(::testing::Values("PrecomputedBrdfCS", "PrefilterSpecularCS"),
+                                            ::testing::Values(OptimizationLevel::None, OptimizationLevel::Performance)));
+
+TEST(OpenGlForms, TextureAndSamplerBecomeOneCombinedSamplerOnATextureUnit) {
+    const auto shader = testing::compileSeed("PrefilterSpecularCS");
+    const auto glsl = crossCompileShader(shader, CrossTarget::Glsl);
+    const auto* combined = findBinding(glsl, "EnvMap+EnvMapSampler");
+    ASSERT_NE(combined, nullptr);
+    EXPECT_EQ(combined->namespace_, "texture_unit");
+    EXPECT_EQ(combined->slot, 0u);
+    EXPECT_EQ(combined->declaredName, "EnvMap_EnvMapSampler");
+    EXPECT_NE(glsl.source.find("layout(binding = 0) uniform samplerCube EnvMap_EnvMapSampler;"), std::string::npos)
+        << glsl.source;
+    EXPECT_EQ(findBinding(glsl, "PrefilterSpecularParameter")->namespace_, "uniform_block");
+    EXPECT_EQ(findBinding(glsl, "Prefiltered")->namespace_, "image_unit");
+    EXPECT_EQ(glsl.source.find("set ="), std::string::npos) << "OpenGL has no descriptor sets";
+    EXPECT_EQ(glsl.source.rfind("#version 450", 0), 0u);
+}
+
+TEST(OpenGlForms, EsslDeclaresTheLutWithAFourChannelStandIn) {
+    const auto essl = crossCompileShader(testing::compileSeed("PrecomputedBrdfCS"), CrossTarget::Essl);
+    const auto* lut = findBinding(essl, "Precomputed");
+    ASSERT_NE(lut, nullptr);
+    EXPECT_EQ(lut->format, "rgba16f");
+    EXPECT_EQ(lut->adaptedFrom, "rg16f");
+    EXPECT_NE(essl.source.find("rgba16f) uniform writeonly highp image2D Precomputed"), std::string::npos) << essl.source;
+    const auto glsl = crossCompileShader(testing::compileSeed("PrecomputedBrdfCS"), CrossTarget::Glsl);
+    EXPECT_EQ(findBinding(glsl, "Precomputed")->format, "rg16f") << "desktop GLSL keeps the real format";
+}
+
+TEST(OpenGlForms, EsslRefusesAFormatWithoutAStandIn) {
+    testing::TempFolder folder;
+    CompileOptions options;
+    options.source = folder.write("unorm16.hlsl", R"(
+RWTexture2D<float4> Target;
+[numthreads(8, 8, 1)]
+void main(uint3 id : SV_DispatchThreadID) { Target[id.xy] = float4(1, 0, 0, 1); }
+)");
+    options.imageFormats["Target"] = "rgba16";
+    const auto shader = compileShader(options);
+    EXPECT_NO_THROW(crossCompileShader(shader, CrossTarget::Glsl));
+    try {
+        crossCompileShader(shader, CrossTarget::Essl);
+        FAIL() << "expected CompileError";
+    } catch (const CompileError& error) {
+        EXPECT_NE(std::string(error.what()).find("ESSL 3.10 cannot declare storage image 'Target' of format rgba16"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(MetalForm, EveryResourceGetsTheRecordedIndexInTheKernelSignature) {
+    const auto msl = crossCompileShader(testing::compileSeed("PrefilterSpecularCS"), CrossTarget::Msl);
+    EXPECT_NE(msl.source.find("kernel void main0("), std::string::npos);
+    EXPECT_NE(msl.source.find("texturecube<float> EnvMap [[texture(0)]]"), std::string::npos) << msl.source;
+    EXPECT_NE(msl.source.find("texture2d_array<float, access::write> Prefiltered [[texture(1)]]"), std::string::npos);
+    EXPECT_NE(msl.source.find("sampler EnvMapSampler [[sampler(0)]]"), std::string::npos);
+    EXPECT_NE(msl.source.find("[[buffer(0)]]"), std::string::npos);
+    EXPECT_EQ(findBinding(msl, "Prefiltered")->slot, 1u);
+    EXPECT_EQ(findBinding(msl, "Prefiltered")->namespace_, "texture");
+}
+
+TEST(HlslForm, KeepsTheOriginalRegisters) {
+    const auto hlsl = crossCompileShader(testing::compileSeed("PrefilterSpecularCS"), CrossTarget::Hlsl);
+    EXPECT_NE(hlsl.source.find("cbuffer PrefilterSpecularParameter : register(b0)"), std::string::npos) << hlsl.source;
+    EXPECT_NE(hlsl.source.find("TextureCube<float4> EnvMap : register(t0);"), std::string::npos);
+    EXPECT_NE(hlsl.source.find("SamplerState EnvMapSampler : register(s0);"), std::string::npos);
+    EXPECT_NE(hlsl.source.find("RWTexture2DArray<float4> Prefiltered : register(u0);"), std::string::npos);
+}
+
+} // namespace
+} // namespace iblkit::compiler

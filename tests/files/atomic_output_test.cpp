@@ -1,0 +1,75 @@
+#include "atomic_output.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using iblkit::files::AtomicOutput;
+using iblkit::files::FileError;
+
+namespace {
+
+class AtomicOutputTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = fs::temp_directory_path() / ("iblkit-atomic-" + std::to_string(::getpid()) + "-" +
+                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder);
+        fs::create_directories(folder);
+    }
+    void TearDown() override { fs::remove_all(folder); }
+
+    static std::string read(const fs::path& path) {
+        std::ifstream stream(path, std::ios::binary);
+        std::ostringstream text;
+        text << stream.rdbuf();
+        return text.str();
+    }
+    size_t entriesInFolder() const { return std::distance(fs::directory_iterator(folder), fs::directory_iterator()); }
+
+    fs::path folder;
+};
+
+TEST_F(AtomicOutputTest, CommitWritesEveryFile) {
+    AtomicOutput output;
+    output.add(folder / "a.txt", "alpha");
+    output.add(folder / "b.txt", "beta");
+    output.commit();
+    EXPECT_EQ(read(folder / "a.txt"), "alpha");
+    EXPECT_EQ(read(folder / "b.txt"), "beta");
+    EXPECT_EQ(entriesInFolder(), 2u) << "no temporary may be left behind";
+}
+
+TEST_F(AtomicOutputTest, NothingIsWrittenWithoutCommit) {
+    {
+        AtomicOutput output;
+        output.add(folder / "a.txt", "alpha");
+    }
+    EXPECT_EQ(entriesInFolder(), 0u);
+}
+
+TEST_F(AtomicOutputTest, AFailedAddKeepsExistingFilesAndLeavesNoTemporaries) {
+    {
+        std::ofstream(folder / "good.spv") << "GOOD";
+    }
+    AtomicOutput output;
+    output.add(folder / "good.spv", "NEW");
+    EXPECT_THROW(output.add(folder / "missing" / "x.txt", "x"), FileError);
+    EXPECT_EQ(read(folder / "good.spv"), "GOOD");
+    EXPECT_EQ(entriesInFolder(), 1u);
+}
+
+TEST_F(AtomicOutputTest, RefusesADirectoryAsOutput) {
+    fs::create_directories(folder / "dir");
+    AtomicOutput output;
+    try {
+        output.add(folder / "dir", "x");
+        FAIL() << "expected FileError";
+    } catch (const FileError& error) {
+        EXPECT_NE(std::string(error.what()).find("is a directory"), std::string::npos) << error.what();
+    }
+}
+
+} // namespace

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages iblkit needs (when missing), then configures and builds it.
+# Sourced by tools/run-main.sh and tools/run-tests.sh.
+set -euo pipefail
+
+readonly IBLKIT_PACKAGES=(
+  cmake ninja-build g++ pkg-config
+  glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
+  nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
+)
+
+missing_packages() {
+  local package
+  for package in "${IBLKIT_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || echo "$package"
+  done
+}
+
+install_missing_packages() {
+  local missing
+  missing=$(missing_packages)
+  [ -z "$missing" ] && return 0
+  local as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "iblkit: these packages are missing and sudo is not available: $missing" >&2; exit 1; }
+    as_root=(sudo)
+  fi
+  echo "iblkit: installing $(echo $missing)" >&2
+  "${as_root[@]}" apt-get update -q
+  # shellcheck disable=SC2086
+  DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -q --no-install-recommends $missing
+}
+
+build_iblkit() {
+  cmake --preset default
+  cmake --build --preset default
+}
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+install_missing_packages
+build_iblkit
