@@ -72,6 +72,13 @@ TEST_F(Cli, FlagsReachTheCompiler) {
     EXPECT_NE(json.find("\"format\": \"rg16f\""), std::string::npos) << json;
 }
 
+TEST_F(Cli, RepeatableFlagsTakeOneValueEachWhereverTheSourceStands) {
+    const auto result = iblkit({"compile", "-I", "hlsl", "-D", "SAMPLE_COUNT=16", "hlsl/PrecomputedBrdfCS.hlsl", "-o",
+                                at("lut.spv")});
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_TRUE(fs::exists(out / "lut.spv"));
+}
+
 TEST_F(Cli, SameInputAndFlagsGiveByteIdenticalOutputs) {
     const auto compileInto = [&](const std::string& prefix) {
         const auto result = iblkit({"compile", "hlsl/PrefilterSpecularCS.hlsl", "-o", at(prefix + ".spv"), "-O",

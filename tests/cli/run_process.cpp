@@ -1,6 +1,7 @@
 #include "run_process.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
@@ -25,10 +26,11 @@ std::string slurpAndRemove(const std::string& path) {
 } // namespace
 
 ProcessResult runProcess(const std::vector<std::string>& command) {
-    char outPath[] = "/tmp/iblkit-out-XXXXXX";
-    char errPath[] = "/tmp/iblkit-err-XXXXXX";
-    const int outFd = mkstemp(outPath);
-    const int errFd = mkstemp(errPath);
+    const auto folder = std::filesystem::temp_directory_path().string();
+    std::string outPath = folder + "/iblkit-out-XXXXXX";
+    std::string errPath = folder + "/iblkit-err-XXXXXX";
+    const int outFd = mkstemp(outPath.data());
+    const int errFd = mkstemp(errPath.data());
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, outFd, 1);

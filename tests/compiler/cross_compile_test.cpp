@@ -57,7 +57,11 @@ TEST_P(EveryShaderAndOptimization, HlslRoundTripCompilesAgainWithTheSameRegister
 
 INSTANTIATE_TEST_SUITE_P(SeedShaders, EveryShaderAndOptimization,
                          ::testing::Combine(::testing::Values("PrecomputedBrdfCS", "PrefilterSpecularCS"),
-                                            ::testing::Values(OptimizationLevel::None, OptimizationLevel::Performance)));
+                                            ::testing::Values(OptimizationLevel::None, OptimizationLevel::Performance)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param) +
+                                    (std::get<1>(info.param) == OptimizationLevel::None ? "" : "_O");
+                         });
 
 TEST(OpenGlForms, TextureAndSamplerBecomeOneCombinedSamplerOnATextureUnit) {
     const auto shader = testing::compileSeed("PrefilterSpecularCS");
@@ -104,6 +108,40 @@ void main(uint3 id : SV_DispatchThreadID) { Target[id.xy] = float4(1, 0, 0, 1); 
         EXPECT_NE(std::string(error.what()).find("ESSL 3.10 cannot declare storage image 'Target' of format rgba16"),
                   std::string::npos)
             << error.what();
+    }
+}
+
+TEST(OpenGlForms, EveryResourceKindCompilesBack) {
+    testing::TempFolder folder;
+    CompileOptions options;
+    options.source = folder.write("kinds.hlsl", R"(
+cbuffer Params : register(b0) { float scale; };
+Texture2D<float4> Unused;
+Texture2D<float4> Input : register(t1);
+Texture2D<float4> LoadedOnly;
+SamplerState Linear;
+RWTexture2D<float4> Output;
+StructuredBuffer<float> Weights;
+RWStructuredBuffer<float> Totals;
+float gain;
+[numthreads(1, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+    float4 v = Input.SampleLevel(Linear, float2(0.5, 0.5), 0) + LoadedOnly.Load(int3(0, 0, 0));
+    Output[id.xy] = v * scale * Weights[0] * gain;
+    Totals[0] = v.x;
+}
+)");
+    const auto shader = compileShader(options);
+    EXPECT_EQ(shader.reflection.find("Unused"), nullptr) << "an unused resource takes no register";
+    EXPECT_EQ(shader.reflection.find("LoadedOnly")->location.registerName(), "t0");
+    EXPECT_EQ(shader.reflection.find("$Global")->location.registerName(), "b1");
+    for (auto target : {CrossTarget::Glsl, CrossTarget::Essl}) {
+        const auto compiled = crossCompileShader(shader, target);
+        EXPECT_EQ(testing::compileGlslBack(compiled.source), "") << crossTargetName(target) << ":\n" << compiled.source;
+        EXPECT_EQ(findBinding(compiled, "LoadedOnly")->declaredName, "LoadedOnly");
+        EXPECT_EQ(findBinding(compiled, "Input+Linear")->slot, 1u) << "combined samplers follow their texture's register";
+        EXPECT_EQ(findBinding(compiled, "Weights")->slot, 0u);
+        EXPECT_EQ(findBinding(compiled, "Totals")->slot, 1u);
     }
 }
 

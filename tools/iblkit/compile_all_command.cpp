@@ -46,8 +46,9 @@ std::string summaryLine(const std::string& name, const compiler::CompiledShader&
     if (reflection.stage == compiler::ShaderStage::Compute)
         groups = fmt::format(" [{}x{}x{}]", reflection.workgroupSize[0], reflection.workgroupSize[1],
                              reflection.workgroupSize[2]);
-    return fmt::format("{:<22} {}{:<12} {} resources  SPIR-V {:.1f} KiB  {} forms  {:.0f} ms", name,
-                       compiler::stageName(reflection.stage), groups, reflection.resources.size(),
+    const size_t resources = reflection.resources.size();
+    return fmt::format("{:<22} {}{:<12} {} resource{}  SPIR-V {:.1f} KiB  {} forms  {:.0f} ms", name,
+                       compiler::stageName(reflection.stage), groups, resources, resources == 1 ? "" : "s",
                        shader.spirv.size() * 4 / 1024.0, formCount, elapsed.count());
 }
 

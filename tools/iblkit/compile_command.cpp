@@ -87,13 +87,17 @@ void addCompileCommand(CLI::App& app) {
     command->add_option("-o,--output", arguments->output, "SPIR-V output file")->required();
     command->add_option("-E,--entry", arguments->entry, "Entry point (default main)");
     command->add_option("-S,--stage", arguments->stage, "Stage, when the entry point's attributes do not tell it");
-    command->add_option("-I,--include-dir", arguments->includeDirs, "Folder searched for #include");
-    command->add_option("-D,--define", arguments->defines, "Preprocessor macro NAME[=VALUE]");
+    command->add_option("-I,--include-dir", arguments->includeDirs, "Folder searched for #include")
+        ->allow_extra_args(false);
+    command->add_option("-D,--define", arguments->defines, "Preprocessor macro NAME[=VALUE]")
+        ->allow_extra_args(false);
     command->add_flag("-O", arguments->optimize, "Optimize for performance (SPIRV-Tools)");
     command->add_flag("--Os", arguments->optimizeSize, "Optimize for size (SPIRV-Tools); spelled -Os");
     command->add_flag("--strip", arguments->strip, "Strip debug information from the SPIR-V output");
-    command->add_option("--image-format", arguments->imageFormats, "Storage image format NAME=FORMAT (e.g. Precomputed=rg16f)");
-    command->add_option("--binding-shift", arguments->bindingShifts, "First binding of a register class, CLASS=N (b, t, s, u)");
+    command->add_option("--image-format", arguments->imageFormats, "Storage image format NAME=FORMAT (e.g. Precomputed=rg16f)")
+        ->allow_extra_args(false);
+    command->add_option("--binding-shift", arguments->bindingShifts, "First binding of a register class, CLASS=N (b, t, s, u)")
+        ->allow_extra_args(false);
     const std::pair<const char*, compiler::CrossTarget> forms[] = {{"--glsl", compiler::CrossTarget::Glsl},
                                                                    {"--essl", compiler::CrossTarget::Essl},
                                                                    {"--msl", compiler::CrossTarget::Msl},
