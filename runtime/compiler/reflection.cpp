@@ -152,7 +152,8 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::ve
 
     for (const auto& block : resources.push_constant_buffers) {
         const auto& type = compiler.get_type(block.base_type_id);
-        out.pushConstantBlock = block.name;
+        // A `[[vk::push_constant]] cbuffer` is anonymous: its name is the block type's.
+        out.pushConstantBlock = block.name.empty() ? compiler.get_name(block.base_type_id) : block.name;
         out.pushConstantSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
         out.pushConstants = membersOf(compiler, type);
     }
