@@ -1,0 +1,34 @@
+#pragma once
+
+#include "vulkan_context.hpp"
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace iblkit::vulkan {
+
+// A buffer in host-visible, coherent memory: storage and uniform buffers of a compute run,
+// and the staging buffers of image transfers. (On lavapipe all memory is host memory; on a
+// GPU such memory is what a harness wants for its small inputs and readbacks.)
+class Buffer {
+public:
+    Buffer(const VulkanContext& context, vk::DeviceSize size, vk::BufferUsageFlags usage, const std::string& name);
+
+    vk::Buffer handle() const { return *buffer_; }
+    vk::DeviceSize size() const { return size_; }
+    const std::string& name() const { return name_; }
+
+    void write(std::span<const std::byte> bytes, vk::DeviceSize offset = 0);
+    std::vector<std::byte> read() const;
+
+private:
+    std::string name_;
+    vk::DeviceSize size_;
+    vk::raii::Buffer buffer_{nullptr};
+    vk::raii::DeviceMemory memory_{nullptr};
+    void* mapped_ = nullptr;
+};
+
+} // namespace iblkit::vulkan

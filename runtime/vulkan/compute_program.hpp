@@ -1,0 +1,65 @@
+#pragma once
+
+#include "buffer.hpp"
+#include "image.hpp"
+#include "vulkan_context.hpp"
+
+#include "reflection.hpp"
+
+#include <array>
+#include <map>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace iblkit::vulkan {
+
+struct DispatchTiming {
+    std::array<uint32_t, 3> groups;
+    double deviceMilliseconds; // from timestamp queries; negative when the queue has none
+    double wallMilliseconds;   // submission to completion, as the host saw it
+};
+
+// A compute shader ready to run: descriptor set layouts made from its reflection, resources
+// bound by their HLSL names, specialization constants by name, push constants as bytes.
+class ComputeProgram {
+public:
+    ComputeProgram(const VulkanContext& context, const std::vector<uint32_t>& spirv,
+                   compiler::ShaderReflection reflection, const std::map<std::string, double>& specialization = {});
+
+    const compiler::ShaderReflection& reflection() const { return reflection_; }
+
+    // Each checks that the shader has a resource of that name and kind, with a matching
+    // format and dimension, and throws VulkanError naming the problem otherwise. Images are
+    // bound whole when sampled, and at one mip when written.
+    void bind(const std::string& name, const Buffer& buffer);
+    void bind(const std::string& name, Image& image, uint32_t mip = 0);
+    void bind(const std::string& name, const Sampler& sampler);
+    void setPushConstants(std::span<const std::byte> bytes);
+
+    std::array<uint32_t, 3> groupsForThreads(std::array<uint32_t, 3> threads) const;
+    DispatchTiming dispatchGroups(const VulkanContext& context, std::array<uint32_t, 3> groups);
+    DispatchTiming dispatchThreads(const VulkanContext& context, std::array<uint32_t, 3> threads);
+
+private:
+    struct Bound {
+        vk::DescriptorType type;
+        vk::DescriptorBufferInfo buffer;
+        vk::DescriptorImageInfo image;
+    };
+    const compiler::ReflectedResource& resource(const std::string& name) const;
+    void writeDescriptorSets() const;
+
+    compiler::ShaderReflection reflection_;
+    const vk::raii::Device* device_;
+    std::map<uint32_t, vk::raii::DescriptorSetLayout> setLayouts_;
+    vk::raii::PipelineLayout pipelineLayout_{nullptr};
+    vk::raii::Pipeline pipeline_{nullptr};
+    vk::raii::DescriptorPool descriptorPool_{nullptr};
+    std::map<uint32_t, vk::raii::DescriptorSet> sets_;
+    std::map<std::string, Bound> bound_;
+    std::vector<std::byte> pushConstants_;
+};
+
+} // namespace iblkit::vulkan

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <vulkan/vulkan.hpp>
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace iblkit::vulkan {
+
+enum class ComponentKind { Float, UNorm, UInt, SInt };
+
+// A format the runtime can create, fill from floats and read back to floats.
+struct TexelFormat {
+    vk::Format format;
+    std::string_view name; // "R16G16_SFLOAT": VkFormat without its prefix
+    uint32_t channels;
+    uint32_t bytesPerChannel;
+    ComponentKind kind;
+
+    uint32_t bytesPerTexel() const { return channels * bytesPerChannel; }
+};
+
+// Throws VulkanError naming the supported formats.
+const TexelFormat& texelFormatNamed(std::string_view name);
+const TexelFormat& texelFormatOf(vk::Format format);
+std::string supportedFormatNames();
+
+// Converts channel values (channels per texel, in order) to the format's bytes and back.
+// Halves round to nearest even; values out of a half's range become infinities, which the
+// caller checks for where it matters.
+void encodeTexels(const TexelFormat& format, std::span<const float> values, std::span<std::byte> bytes);
+void decodeTexels(const TexelFormat& format, std::span<const std::byte> bytes, std::span<float> values);
+
+} // namespace iblkit::vulkan

@@ -1,0 +1,202 @@
+#include "vulkan_context.hpp"
+
+#include "vulkan_error.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+
+namespace iblkit::vulkan {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kNoDevice =
+    "no Vulkan device found: install Mesa's lavapipe (Debian package mesa-vulkan-drivers) or a GPU driver";
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* log) {
+    static_cast<ValidationLog*>(log)->add(data->pMessage ? data->pMessage : "(no message)");
+    return VK_FALSE;
+}
+
+vk::DebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
+    return {{},
+            vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning | vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+            vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral | vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
+                vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
+            &onValidationMessage, log};
+}
+
+bool layerAvailable(const vk::raii::Context& loader, const char* name) {
+    const auto layers = loader.enumerateInstanceLayerProperties();
+    return std::any_of(layers.begin(), layers.end(), [&](const auto& layer) { return std::string(layer.layerName) == name; });
+}
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+std::string typeName(vk::PhysicalDeviceType type) {
+    switch (type) {
+    case vk::PhysicalDeviceType::eCpu: return "cpu";
+    case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete-gpu";
+    case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated-gpu";
+    case vk::PhysicalDeviceType::eVirtualGpu: return "virtual-gpu";
+    default: return "other";
+    }
+}
+
+DeviceInfo describe(const vk::raii::PhysicalDevice& device, uint32_t index) {
+    const auto chain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>();
+    const auto& properties = chain.get<vk::PhysicalDeviceProperties2>().properties;
+    const auto& driver = chain.get<vk::PhysicalDeviceDriverProperties>();
+    const std::string name = properties.deviceName.data();
+    return {index,
+            name,
+            typeName(properties.deviceType),
+            std::string(driver.driverName.data()) + " " + driver.driverInfo.data(),
+            std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+                std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + "." +
+                std::to_string(VK_API_VERSION_PATCH(properties.apiVersion)),
+            driver.driverID == vk::DriverId::eMesaLlvmpipe};
+}
+
+vk::raii::Instance createInstance(const vk::raii::Context& loader, bool validation, ValidationLog* log) {
+    const vk::ApplicationInfo application("iblkit", 1, "iblkit", 1, VK_API_VERSION_1_1);
+    std::vector<const char*> layers, extensions;
+    if (validation) {
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+    vk::InstanceCreateInfo info({}, &application, layers, extensions);
+    // Chained so that instance creation and destruction are reported too.
+    const auto debugInfo = messengerInfo(log);
+    if (validation) info.pNext = &debugInfo;
+    try {
+        return vk::raii::Instance(loader, info);
+    } catch (const vk::IncompatibleDriverError&) {
+        throw VulkanError(kNoDevice);
+    }
+}
+
+std::vector<vk::raii::PhysicalDevice> physicalDevicesOf(const vk::raii::Instance& instance) {
+    try {
+        vk::raii::PhysicalDevices devices(instance);
+        if (devices.empty()) throw VulkanError(kNoDevice);
+        return {devices.begin(), devices.end()};
+    } catch (const vk::InitializationFailedError&) {
+        throw VulkanError(kNoDevice);
+    }
+}
+
+std::string selectorOf(const ContextOptions& options) {
+    if (!options.device.empty()) return options.device;
+    const char* fromEnvironment = std::getenv("IBLKIT_DEVICE");
+    return fromEnvironment ? fromEnvironment : "";
+}
+
+size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& selector) {
+    if (selector.empty()) {
+        for (size_t i = 0; i < devices.size(); ++i)
+            if (devices[i].isLavapipe) return i;
+        return 0;
+    }
+    if (std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); })) {
+        const size_t index = std::stoul(selector);
+        if (index < devices.size()) return index;
+        throw VulkanError("no Vulkan device has index " + selector + " (there are " + std::to_string(devices.size()) +
+                          "; see iblkit devices)");
+    }
+    for (size_t i = 0; i < devices.size(); ++i)
+        if (lowercase(devices[i].name).find(lowercase(selector)) != std::string::npos) return i;
+    throw VulkanError("no Vulkan device matches '" + selector + "' (see iblkit devices)");
+}
+
+uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device) {
+    const auto families = device.getQueueFamilyProperties();
+    for (uint32_t i = 0; i < families.size(); ++i)
+        if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return i;
+    throw VulkanError("the Vulkan device has no compute queue");
+}
+
+} // namespace
+
+void ValidationLog::add(std::string message) {
+    std::lock_guard lock(mutex_);
+    messages_.push_back(std::move(message));
+}
+
+std::vector<std::string> ValidationLog::messages() const {
+    std::lock_guard lock(mutex_);
+    return messages_;
+}
+
+std::vector<DeviceInfo> listDevices() {
+    vk::raii::Context loader;
+    const auto instance = createInstance(loader, false, nullptr);
+    const auto devices = physicalDevicesOf(instance);
+    std::vector<DeviceInfo> infos;
+    for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+    return infos;
+}
+
+VulkanContext::VulkanContext(const ContextOptions& options)
+    : validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
+    const char* validationFromEnvironment = std::getenv("IBLKIT_VALIDATION");
+    const bool wanted = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");
+    if (wanted && !layerAvailable(loader_, kValidationLayer))
+        throw VulkanError("validation was asked for, but VK_LAYER_KHRONOS_validation is not installed "
+                          "(Debian package vulkan-validationlayers)");
+    validationEnabled_ = wanted;
+    instance_ = createInstance(loader_, validationEnabled_, validationLog_.get());
+    if (validationEnabled_) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messengerInfo(validationLog_.get()));
+
+    auto devices = physicalDevicesOf(instance_);
+    std::vector<DeviceInfo> infos;
+    for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+    const size_t chosen = chooseDevice(infos, selectorOf(options));
+    physicalDevice_ = std::move(devices[chosen]);
+    deviceInfo_ = infos[chosen];
+
+    queueFamily_ = computeQueueFamily(physicalDevice_);
+    const auto family = physicalDevice_.getQueueFamilyProperties()[queueFamily_];
+    if (family.timestampValidBits > 0) timestampPeriod_ = physicalDevice_.getProperties().limits.timestampPeriod;
+    const float priority = 1.0f;
+    const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
+    device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo));
+    queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+    commandPool_ = vk::raii::CommandPool(
+        device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eTransient, queueFamily_));
+    pipelineCache_ = vk::raii::PipelineCache(device_, vk::PipelineCacheCreateInfo());
+}
+
+uint32_t VulkanContext::memoryTypeIndex(uint32_t allowedTypes, vk::MemoryPropertyFlags properties) const {
+    const auto memory = physicalDevice_.getMemoryProperties();
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((allowedTypes & (1u << i)) && (memory.memoryTypes[i].propertyFlags & properties) == properties) return i;
+    throw VulkanError("the Vulkan device has no memory type with the properties " + vk::to_string(properties));
+}
+
+vk::DeviceSize VulkanContext::largestHeapSize() const {
+    const auto memory = physicalDevice_.getMemoryProperties();
+    vk::DeviceSize largest = 0;
+    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) largest = std::max(largest, memory.memoryHeaps[i].size);
+    return largest;
+}
+
+void VulkanContext::submitAndWait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const {
+    vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
+    const auto& commands = buffers.front();
+    commands.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+    record(commands);
+    commands.end();
+    const vk::raii::Fence fence(device_, vk::FenceCreateInfo());
+    const vk::CommandBuffer handle = *commands;
+    queue_.submit(vk::SubmitInfo({}, {}, handle), *fence);
+    if (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+        throw VulkanError("waiting for the Vulkan device failed");
+}
+
+} // namespace iblkit::vulkan

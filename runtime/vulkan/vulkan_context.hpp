@@ -1,0 +1,82 @@
+#pragma once
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace iblkit::vulkan {
+
+// Collects what the validation layer says, including what it says while the context is
+// being destroyed (leaked objects), so it must outlive the context.
+class ValidationLog {
+public:
+    void add(std::string message);
+    std::vector<std::string> messages() const;
+
+private:
+    mutable std::mutex mutex_;
+    std::vector<std::string> messages_;
+};
+
+struct DeviceInfo {
+    uint32_t index;
+    std::string name;
+    std::string type; // "cpu", "discrete-gpu", "integrated-gpu", "virtual-gpu", "other"
+    std::string driver;
+    std::string apiVersion;
+    bool isLavapipe;
+};
+
+struct ContextOptions {
+    // A device index or a case-insensitive part of its name; empty: $IBLKIT_DEVICE, else
+    // lavapipe when present, else the first device.
+    std::string device;
+    bool validation = false; // VK_LAYER_KHRONOS_validation; also on with $IBLKIT_VALIDATION=1
+    std::shared_ptr<ValidationLog> validationLog;
+};
+
+// Every Vulkan device the loader sees. Throws VulkanError when there is none.
+std::vector<DeviceInfo> listDevices();
+
+// Instance, the chosen device, its compute queue, a command pool and a pipeline cache.
+class VulkanContext {
+public:
+    explicit VulkanContext(const ContextOptions& options = {});
+    VulkanContext(const VulkanContext&) = delete;
+    VulkanContext& operator=(const VulkanContext&) = delete;
+
+    const DeviceInfo& deviceInfo() const { return deviceInfo_; }
+    const vk::raii::Device& device() const { return device_; }
+    const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
+    const vk::raii::PipelineCache& pipelineCache() const { return pipelineCache_; }
+    bool validationEnabled() const { return validationEnabled_; }
+    // Nanoseconds per timestamp tick, 0 when the queue has no timestamps.
+    double timestampPeriod() const { return timestampPeriod_; }
+
+    uint32_t memoryTypeIndex(uint32_t allowedTypes, vk::MemoryPropertyFlags properties) const;
+    vk::DeviceSize largestHeapSize() const;
+    // Records commands into a fresh command buffer, submits it and waits for it.
+    void submitAndWait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
+
+private:
+
+    vk::raii::Context loader_;
+    std::shared_ptr<ValidationLog> validationLog_;
+    bool validationEnabled_ = false;
+    vk::raii::Instance instance_{nullptr};
+    vk::raii::DebugUtilsMessengerEXT messenger_{nullptr};
+    vk::raii::PhysicalDevice physicalDevice_{nullptr};
+    DeviceInfo deviceInfo_;
+    uint32_t queueFamily_ = 0;
+    double timestampPeriod_ = 0;
+    vk::raii::Device device_{nullptr};
+    vk::raii::Queue queue_{nullptr};
+    vk::raii::CommandPool commandPool_{nullptr};
+    vk::raii::PipelineCache pipelineCache_{nullptr};
+};
+
+} // namespace iblkit::vulkan
