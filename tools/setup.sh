@@ -7,6 +7,7 @@ readonly IBLKIT_PACKAGES=(
   cmake ninja-build g++ pkg-config
   glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
 )
 
 missing_packages() {

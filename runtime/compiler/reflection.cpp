@@ -7,6 +7,7 @@
 #include <spirv_cross/spirv_cross.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <tuple>
 
 namespace iblkit::compiler {
@@ -173,6 +174,39 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::ve
                 out.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
     }
     return out;
+}
+
+ShaderReflection reflectSpirv(const std::vector<uint32_t>& spirv, const std::string& entryPoint,
+                              const std::string& sourceName) {
+    std::optional<ShaderStage> stage;
+    std::vector<ResourceRegister> registers;
+    try {
+        spirv_cross::Compiler compiler(spirv);
+        for (const auto& entry : compiler.get_entry_points_and_stages())
+            if (entry.name == entryPoint) {
+                compiler.set_entry_point(entry.name, entry.execution_model);
+                if (entry.execution_model == spv::ExecutionModelGLCompute) stage = ShaderStage::Compute;
+                else if (entry.execution_model == spv::ExecutionModelVertex) stage = ShaderStage::Vertex;
+                else if (entry.execution_model == spv::ExecutionModelFragment) stage = ShaderStage::Fragment;
+            }
+        if (!stage) throw CompileError(sourceName + ": error: no compute, vertex or fragment entry point '" + entryPoint + "'");
+        const auto resources = compiler.get_shader_resources();
+        const auto add = [&](const auto& list, RegisterClass registerClass) {
+            for (const auto& resource : list) {
+                const uint32_t set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
+                const uint32_t binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
+                registers.push_back({resource.name, registerClass, binding, 1, set, true, set, binding});
+            }
+        };
+        add(resources.uniform_buffers, RegisterClass::ConstantBuffer);
+        add(resources.storage_buffers, RegisterClass::UnorderedAccess);
+        add(resources.separate_images, RegisterClass::ShaderResource);
+        add(resources.storage_images, RegisterClass::UnorderedAccess);
+        add(resources.separate_samplers, RegisterClass::Sampler);
+    } catch (const spirv_cross::CompilerError& error) {
+        throw CompileError(sourceName + ": error: not a SPIR-V module iblkit can read: " + error.what());
+    }
+    return reflectShader(spirv, registers, entryPoint, *stage);
 }
 
 nlohmann::json toJson(const ShaderReflection& reflection) {

@@ -60,6 +60,11 @@ struct ShaderReflection {
 ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::vector<ResourceRegister>& registers,
                                const std::string& entryPoint, ShaderStage stage);
 
+// The reflection of a SPIR-V module compiled elsewhere: its resources keep the set and binding
+// decorations they have, and, no HLSL being at hand, each binding stands for the register.
+ShaderReflection reflectSpirv(const std::vector<uint32_t>& spirv, const std::string& entryPoint,
+                              const std::string& sourceName);
+
 nlohmann::json toJson(const ShaderReflection& reflection);
 
 } // namespace iblkit::compiler

@@ -25,7 +25,7 @@ std::string slurpAndRemove(const std::string& path) {
 
 } // namespace
 
-ProcessResult runProcess(const std::vector<std::string>& command) {
+ProcessResult runProcess(const std::vector<std::string>& command, const std::vector<std::string>& environment) {
     const auto folder = std::filesystem::temp_directory_path().string();
     std::string outPath = folder + "/iblkit-out-XXXXXX";
     std::string errPath = folder + "/iblkit-err-XXXXXX";
@@ -39,8 +39,12 @@ ProcessResult runProcess(const std::vector<std::string>& command) {
     std::vector<char*> argv;
     for (const auto& argument : command) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
+    std::vector<char*> envp;
+    for (char** variable = environ; *variable; ++variable) envp.push_back(*variable);
+    for (const auto& variable : environment) envp.push_back(const_cast<char*>(variable.c_str()));
+    envp.push_back(nullptr);
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     close(outFd);
     close(errFd);

@@ -1,6 +1,8 @@
 #include "command_line.hpp"
 #include "compile_all_command.hpp"
 #include "compile_command.hpp"
+#include "devices_command.hpp"
+#include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -13,6 +15,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     iblkit::cli::addCompileCommand(app);
     iblkit::cli::addCompileAllCommand(app);
+    iblkit::cli::addDevicesCommand(app);
+    iblkit::cli::addRunCommand(app);
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {
@@ -24,6 +28,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         fmt::print(stderr, "iblkit: error: {}\n", error.what());
         return 2;
+    } catch (const iblkit::cli::ExpectationsFailed&) {
+        return 3;
     } catch (const std::exception& error) {
         fmt::print(stderr, "{}\n", error.what());
         return 1;

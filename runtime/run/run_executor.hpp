@@ -1,0 +1,21 @@
+#pragma once
+
+#include "run_file.hpp"
+
+#include <ostream>
+#include <string>
+
+namespace iblkit::run {
+
+struct RunOptions {
+    std::string device;      // see vulkan::ContextOptions
+    bool validation = false; // any validation message then fails the run
+};
+
+// Compiles the shader, makes and fills the resources, dispatches, checks every expectation
+// and saves what was asked, printing a line for each step to `out`. Returns true when every
+// expectation passed. Throws RunError, compiler::CompileError or vulkan::VulkanError when the
+// run cannot be carried out at all.
+bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out);
+
+} // namespace iblkit::run

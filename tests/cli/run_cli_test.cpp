@@ -1,0 +1,152 @@
+// `iblkit devices` and `iblkit run` as a user runs them: the documented examples pass with
+// validation on, a failed expectation is reported with its worst value, and each broken run
+// file gets one line naming the problem and a non-zero exit.
+#include "run_process.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace iblkit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class RunCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = fs::temp_directory_path() / ("iblkit-run-" + std::to_string(::getpid()) + "-" +
+                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(folder);
+    }
+    void TearDown() override { fs::remove_all(folder); }
+
+    // A documented example, with its paths made to work from the scratch folder.
+    json example(const std::string& name) const {
+        std::ifstream stream("docs/examples/" + name);
+        json run = json::parse(stream);
+        run["shader"] = fs::absolute(fs::path("docs/examples") / run["shader"].get<std::string>()).lexically_normal();
+        run["include"] = json::array({fs::absolute("hlsl").string()});
+        for (auto& [resource, file] : run["save"].items()) file = (folder / file.get<std::string>()).string();
+        return run;
+    }
+    json fastPrefilter() const {
+        json run = example("prefilter_white_furnace.run.json");
+        run["defines"]["SAMPLE_COUNT"] = "16";
+        run.erase("save");
+        return run;
+    }
+    ProcessResult iblkitRun(const json& run, std::vector<std::string> environment = {}) const {
+        const auto path = folder / "test.run.json";
+        std::ofstream(path) << run.dump(2);
+        return runProcess({IBLKIT_EXECUTABLE, "run", path.string(), "--validate"}, environment);
+    }
+    void expectError(const json& run, const std::string& expected) const {
+        const auto result = iblkitRun(run);
+        EXPECT_NE(result.exitCode, 0);
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err << result.out;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    }
+
+    fs::path folder;
+};
+
+TEST_F(RunCli, DevicesListsLavapipeAsTheDefault) {
+    const auto result = runProcess({IBLKIT_EXECUTABLE, "devices"});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.out.find("* 0  llvmpipe"), std::string::npos) << result.out;
+}
+
+TEST_F(RunCli, WithoutAVulkanDriverOneLineSaysWhatToInstall) {
+    for (const char* command : {"devices", "run"}) {
+        std::vector<std::string> arguments = {IBLKIT_EXECUTABLE, command};
+        if (std::string(command) == "run") arguments.push_back("docs/examples/brdf_lut.run.json");
+        const auto result = runProcess(arguments, {"VK_DRIVER_FILES=/nonexistent/icd.json", "VK_ICD_FILENAMES=/nonexistent/icd.json"});
+        EXPECT_NE(result.exitCode, 0) << command;
+        EXPECT_EQ(result.err, "no Vulkan device found: install Mesa's lavapipe (Debian package mesa-vulkan-drivers) "
+                              "or a GPU driver\n")
+            << command;
+    }
+}
+
+TEST_F(RunCli, ThePrefilterExamplePassesAndSavesItsOutput) {
+    const auto result = iblkitRun(example("prefilter_white_furnace.run.json"));
+    ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_NE(result.out.find("PASS Prefiltered: 24576 values within abs 0.0001"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("1 of 1 expectations passed"), std::string::npos);
+    EXPECT_EQ(fs::file_size(folder / "prefiltered.npy"), 128u + 24576u * 4u);
+}
+
+TEST_F(RunCli, TheLutExamplePassesAndSavesItsOutput) {
+    const auto result = iblkitRun(example("brdf_lut.run.json"));
+    ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_NE(result.out.find("PASS Precomputed: 524288 values within [0, 1]"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("dispatch 64x64x1 groups"), std::string::npos) << result.out;
+    EXPECT_TRUE(fs::exists(folder / "brdf_lut.npy"));
+}
+
+TEST_F(RunCli, AFailedExpectationNamesItsWorstValueAndExitsWith3) {
+    auto run = fastPrefilter();
+    run["expect"][0]["fill"] = {1, 1, 1, 0.5};
+    const auto result = iblkitRun(run);
+    EXPECT_EQ(result.exitCode, 3) << result.err;
+    EXPECT_NE(result.out.find("FAIL Prefiltered: 24576 values within abs 0.0001; 6144 outside, worst at mip 0 layer 0 (0, 0) "
+                              "channel 3: expected 0.5, got 0"),
+              std::string::npos)
+        << result.out;
+    EXPECT_NE(result.out.find("0 of 1 expectations passed"), std::string::npos);
+}
+
+TEST_F(RunCli, BindingANameTheShaderLacks) {
+    auto run = fastPrefilter();
+    run["resources"]["Extra"] = {{"kind", "sampler"}};
+    expectError(run, "resources.Extra: the shader has no resource of that name (it has: PrefilterSpecularParameter, "
+                     "EnvMap, EnvMapSampler, Prefiltered)");
+}
+
+TEST_F(RunCli, MissingAResourceTheShaderNeeds) {
+    auto run = fastPrefilter();
+    run["resources"].erase("EnvMapSampler");
+    expectError(run, "the shader needs 'EnvMapSampler' (sampler), which the run file does not give");
+}
+
+TEST_F(RunCli, AResourceOfTheWrongKind) {
+    auto run = fastPrefilter();
+    run["resources"]["EnvMapSampler"] = {{"kind", "buffer"}, {"count", 4}};
+    expectError(run, "resources.EnvMapSampler: is a buffer, but the shader declares a sampler");
+}
+
+TEST_F(RunCli, AStorageImageOfTheWrongFormat) {
+    auto run = example("brdf_lut.run.json");
+    run["resources"]["Precomputed"]["format"] = "R32G32_SFLOAT";
+    expectError(run, "'Precomputed': wrong format: the shader declares R16G16_SFLOAT, the image is R32G32_SFLOAT");
+}
+
+TEST_F(RunCli, ADispatchOfZeroSize) {
+    auto run = fastPrefilter();
+    run["dispatch"]["threads"] = {32, 0, 6};
+    expectError(run, "dispatch of zero size: 32x0x6 threads");
+}
+
+TEST_F(RunCli, AnAllocationThatCannotFit) {
+    auto run = fastPrefilter();
+    run["resources"]["EnvMap"]["size"] = {1 << 20, 1 << 20};
+    run["resources"]["EnvMap"]["mips"] = 1;
+    expectError(run, "image 'EnvMap': 1048576x1048576 exceeds the device's limit");
+}
+
+TEST_F(RunCli, AMissingDataFile) {
+    auto run = fastPrefilter();
+    run["resources"]["EnvMap"].erase("fill");
+    run["resources"]["EnvMap"]["file"] = "env.bin";
+    expectError(run, "env.bin: error: no such data file");
+}
+
+} // namespace
+} // namespace iblkit::testing

@@ -1,0 +1,95 @@
+#include "data_file.hpp"
+#include "run_error.hpp"
+#include "run_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace iblkit::run {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RunFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = fs::temp_directory_path() / ("iblkit-runfile-" + std::to_string(::getpid()));
+        fs::create_directories(folder);
+    }
+    void TearDown() override { fs::remove_all(folder); }
+
+    fs::path write(const std::string& text) const {
+        const auto path = folder / "test.run.json";
+        std::ofstream(path) << text;
+        return path;
+    }
+    std::string errorOf(const std::string& text) const {
+        try {
+            readRunFile(write(text));
+        } catch (const RunError& error) {
+            return error.what();
+        }
+        return "no error";
+    }
+    fs::path folder;
+};
+
+TEST_F(RunFiles, TheDocumentedPrefilterExampleReadsAsWritten) {
+    const auto spec = readRunFile("docs/examples/prefilter_white_furnace.run.json");
+    EXPECT_EQ(spec.shader, fs::path("docs/examples/../../hlsl/PrefilterSpecularCS.hlsl"));
+    EXPECT_EQ(spec.defines.at("SAMPLE_COUNT"), "1024");
+    ASSERT_EQ(spec.resources.size(), 4u);
+    const auto& env = *std::find_if(spec.resources.begin(), spec.resources.end(), [](auto& r) { return r.name == "EnvMap"; });
+    EXPECT_EQ(env.dimension, "cube");
+    EXPECT_EQ(env.layers, 6u);
+    EXPECT_EQ(env.mips, 7u);
+    EXPECT_EQ(env.initial.fill, (std::vector<double>{1, 1, 1, 1}));
+    EXPECT_EQ(spec.threads, (std::array<uint32_t, 3>{32, 32, 6}));
+    ASSERT_EQ(spec.expectations.size(), 1u);
+    EXPECT_EQ(spec.expectations[0].tolerance.absolute, 1e-4);
+    EXPECT_EQ(spec.saves.at("Prefiltered"), fs::path("docs/examples/prefiltered.npy"));
+}
+
+TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
+    const std::string head = R"({"shader": "x.hlsl", )";
+    EXPECT_NE(errorOf("{").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"dispatch": {"threads": [1]}})").find("needs a \"shader\""), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("resources": {}})").find("needs a \"dispatch\""), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1], "groups": [1]}})").find("exactly one of"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "dispath": 1})").find("unknown key 'dispath'"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "resources": {"A": {"kind": "texture"}}})")
+                  .find("resources.A: unknown kind 'texture'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "resources": {"A": {"kind": "image", "format": "R32_SFLOAT"}}})")
+                  .find("resources.A: needs a \"size\""),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "expect": [{"resource": "A"}]})")
+                  .find("expect[0]: needs exactly one of"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "expect": [{"resource": "A", "range": [1, 0]}]})")
+                  .find("expect[0].range: takes [min, max]"),
+              std::string::npos);
+}
+
+TEST_F(RunFiles, NpyFilesRoundTripAndRawFilesMustHaveTheRightSize) {
+    const auto& format = vulkan::texelFormatNamed("R16G16_SFLOAT");
+    const std::vector<float> values = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
+    writeValues(folder / "a.npy", format, values, {1, 1, 3, 2});
+    EXPECT_EQ(readValues(folder / "a.npy", format, 6), values);
+    std::ifstream npy(folder / "a.npy", std::ios::binary);
+    std::string header(128, '\0');
+    npy.read(header.data(), 128);
+    EXPECT_NE(header.find("'shape': (1, 1, 3, 2)"), std::string::npos);
+    EXPECT_EQ(fs::file_size(folder / "a.npy") % 16, (6 * 4) % 16) << "the header is padded to 64 bytes";
+    writeValues(folder / "a.bin", format, values, {6});
+    EXPECT_EQ(fs::file_size(folder / "a.bin"), 12u) << "raw data in the format: 6 halves";
+    EXPECT_EQ(readValues(folder / "a.bin", format, 6), values);
+    EXPECT_THROW(readValues(folder / "a.bin", format, 7), RunError);
+    EXPECT_THROW(readValues(folder / "missing.bin", format, 6), RunError);
+}
+
+} // namespace
+} // namespace iblkit::run
