@@ -1,6 +1,7 @@
 // `iblkit compile` and `iblkit compile-all` as a user runs them: every output written on
 // success; on bad input one clear message, a non-zero exit, and no file written or damaged.
 #include "run_process.hpp"
+#include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,13 +25,6 @@ std::string readFile(const fs::path& path) {
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        out = fs::temp_directory_path() / ("iblkit-cli-" + std::to_string(::getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(out);
-        fs::create_directories(out);
-    }
-    void TearDown() override { fs::remove_all(out); }
 
     ProcessResult iblkit(std::vector<std::string> arguments) const {
         arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
@@ -48,7 +42,8 @@ protected:
         EXPECT_EQ(filesInOut(), 0u) << "a failed run wrote files";
     }
 
-    fs::path out;
+    TempFolder scratch;
+    const fs::path& out = scratch.path();
 };
 
 TEST_F(Cli, CompileWritesAllSevenFiles) {

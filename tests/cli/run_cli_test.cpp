@@ -2,6 +2,7 @@
 // validation on, a failed expectation is reported with its worst value, and each broken run
 // file gets one line naming the problem and a non-zero exit.
 #include "run_process.hpp"
+#include "temp_folder.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -20,12 +21,6 @@ using nlohmann::json;
 
 class RunCli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder = fs::temp_directory_path() / ("iblkit-run-" + std::to_string(::getpid()) + "-" +
-                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(folder);
-    }
-    void TearDown() override { fs::remove_all(folder); }
 
     // A documented example, with its paths made to work from the scratch folder.
     json example(const std::string& name) const {
@@ -54,7 +49,8 @@ protected:
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
     }
 
-    fs::path folder;
+    TempFolder scratch;
+    const fs::path& folder = scratch.path();
 };
 
 TEST_F(RunCli, DevicesListsLavapipeAsTheDefault) {

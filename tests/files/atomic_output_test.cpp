@@ -1,4 +1,5 @@
 #include "atomic_output.hpp"
+#include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,13 +14,6 @@ namespace {
 
 class AtomicOutputTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder = fs::temp_directory_path() / ("iblkit-atomic-" + std::to_string(::getpid()) + "-" +
-                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder);
-        fs::create_directories(folder);
-    }
-    void TearDown() override { fs::remove_all(folder); }
 
     static std::string read(const fs::path& path) {
         std::ifstream stream(path, std::ios::binary);
@@ -29,7 +23,8 @@ protected:
     }
     size_t entriesInFolder() const { return std::distance(fs::directory_iterator(folder), fs::directory_iterator()); }
 
-    fs::path folder;
+    iblkit::testing::TempFolder scratch;
+    const fs::path& folder = scratch.path();
 };
 
 TEST_F(AtomicOutputTest, CommitWritesEveryFile) {

@@ -1,6 +1,7 @@
 #include "data_file.hpp"
 #include "run_error.hpp"
 #include "run_file.hpp"
+#include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +16,6 @@ namespace fs = std::filesystem;
 
 class RunFiles : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder = fs::temp_directory_path() / ("iblkit-runfile-" + std::to_string(::getpid()));
-        fs::create_directories(folder);
-    }
-    void TearDown() override { fs::remove_all(folder); }
 
     fs::path write(const std::string& text) const {
         const auto path = folder / "test.run.json";
@@ -34,7 +30,8 @@ protected:
         }
         return "no error";
     }
-    fs::path folder;
+    testing::TempFolder scratch;
+    const fs::path& folder = scratch.path();
 };
 
 TEST_F(RunFiles, TheDocumentedPrefilterExampleReadsAsWritten) {

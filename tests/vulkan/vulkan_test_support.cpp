@@ -1,23 +1,16 @@
 #include "vulkan_test_support.hpp"
 
-#include <filesystem>
-#include <fstream>
-#include <unistd.h>
+#include "temp_folder.hpp"
 
 namespace iblkit::testing {
 
 compiler::CompiledShader compileTestShader(const std::string& name, const std::string& source,
                                            std::map<std::string, std::string> imageFormats) {
-    const auto folder = std::filesystem::temp_directory_path() / ("iblkit-vk-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder);
-    const auto path = folder / (name + ".hlsl");
-    std::ofstream(path) << source;
+    const TempFolder folder;
     compiler::CompileOptions options;
-    options.source = path;
+    options.source = folder.write(name + ".hlsl", source);
     options.imageFormats = std::move(imageFormats);
-    auto shader = compiler::compileShader(options);
-    std::filesystem::remove_all(folder);
-    return shader;
+    return compiler::compileShader(options);
 }
 
 } // namespace iblkit::testing

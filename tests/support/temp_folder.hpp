@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,8 +15,9 @@ class TempFolder {
 public:
     TempFolder() {
         const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                ("iblkit-" + std::to_string(::getpid()) + "-" + test->test_suite_name() + "-" + test->name());
+        std::string name = "iblkit-" + std::to_string(::getpid()) + "-" + test->test_suite_name() + "-" + test->name();
+        std::replace(name.begin(), name.end(), '/', '_'); // parameterized tests' names hold slashes
+        path_ = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }
