@@ -145,8 +145,14 @@ std::vector<DeviceInfo> listDevices() {
 VulkanContext::VulkanContext(const ContextOptions& options)
     : validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
     const char* validationFromEnvironment = std::getenv("IBLKIT_VALIDATION");
-    const bool wanted = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");
-    if (wanted && !layerAvailable(loader_, kValidationLayer))
+    const bool asked = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");
+#ifdef NDEBUG
+    const bool debugBuild = false;
+#else
+    const bool debugBuild = true; // debug builds validate whenever the layer is installed
+#endif
+    const bool wanted = asked || (debugBuild && layerAvailable(loader_, kValidationLayer));
+    if (asked && !layerAvailable(loader_, kValidationLayer))
         throw VulkanError("validation was asked for, but VK_LAYER_KHRONOS_validation is not installed "
                           "(Debian package vulkan-validationlayers)");
     validationEnabled_ = wanted;

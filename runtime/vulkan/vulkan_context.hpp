@@ -35,7 +35,9 @@ struct ContextOptions {
     // A device index or a case-insensitive part of its name; empty: $IBLKIT_DEVICE, else
     // lavapipe when present, else the first device.
     std::string device;
-    bool validation = false; // VK_LAYER_KHRONOS_validation; also on with $IBLKIT_VALIDATION=1
+    // VK_LAYER_KHRONOS_validation; also on with $IBLKIT_VALIDATION=1, and in debug builds
+    // whenever the layer is installed.
+    bool validation = false;
     std::shared_ptr<ValidationLog> validationLog;
 };
 

@@ -2,6 +2,7 @@
 // writes every storage format the kit uses at every mip.
 #include "block_writer.hpp"
 #include "compute_program.hpp"
+#include "vulkan_error.hpp"
 #include "vulkan_test_support.hpp"
 
 #include <cmath>
@@ -141,6 +142,36 @@ void main(uint3 id : SV_DispatchThreadID) { if (id.x < count) Output[id.x] = Inp
     std::vector<float> output(input.size());
     std::memcpy(output.data(), bytes.data(), bytes.size());
     for (size_t i = 0; i < input.size(); ++i) ASSERT_EQ(output[i], input[i] * 2.0f) << i;
+}
+
+} // namespace
+} // namespace iblkit::vulkan
+
+namespace iblkit::vulkan {
+namespace {
+
+class Constants : public testing::VulkanTest {};
+
+TEST_F(Constants, SpecializationAndPushConstantsReachTheShaderByName) {
+    const auto shader = testing::compileTestShader("constants", R"(
+[[vk::constant_id(7)]] const uint Multiplier = 1;
+[[vk::constant_id(9)]] const float Offset = 0.0;
+[[vk::push_constant]] cbuffer Push { float scale; uint base; };
+RWStructuredBuffer<float> Output;
+[numthreads(4, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) { Output[id.x] = (base + id.x) * Multiplier * scale + Offset; }
+)");
+    Buffer output(context(), 4 * 4, vk::BufferUsageFlagBits::eStorageBuffer, "Output");
+    ComputeProgram program(context(), shader.spirv, shader.reflection, {{"Multiplier", 3}, {"Offset", 0.5}});
+    program.bind("Output", output);
+    program.setPushConstants(packBlock("Push", shader.reflection.pushConstants, shader.reflection.pushConstantSize,
+                                       {{"scale", {2.0}}, {"base", {10}}}));
+    program.dispatchGroups(context(), {1, 1, 1});
+    const auto bytes = output.read();
+    float values[4];
+    std::memcpy(values, bytes.data(), sizeof values);
+    for (uint32_t i = 0; i < 4; ++i) EXPECT_EQ(values[i], (10.0f + i) * 3 * 2 + 0.5f) << i;
+    EXPECT_THROW(ComputeProgram(context(), shader.spirv, shader.reflection, {{"Multiplyer", 3}}), VulkanError);
 }
 
 } // namespace
