@@ -7,7 +7,7 @@ readonly IBLKIT_PACKAGES=(
   cmake ninja-build g++ pkg-config
   glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
 )
 
 missing_packages() {

@@ -15,6 +15,9 @@ enum class OptimizationLevel { None, Performance, Size };
 
 struct CompileOptions {
     std::filesystem::path source;
+    // When set, compiled instead of the file's contents; `source` still names it in messages
+    // and its folder is where "#include" looks first.
+    std::optional<std::string> sourceText;
     std::string entryPoint = "main";
     std::optional<ShaderStage> stage; // deduced from the entry point's attributes when empty
     std::vector<std::filesystem::path> includeDirs;

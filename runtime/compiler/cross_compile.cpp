@@ -119,6 +119,21 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
     return out;
 }
 
+CrossCompiled toVulkanGlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
+    spirv_cross::CompilerGLSL compiler(spirv);
+    auto options = compiler.get_common_options();
+    options.version = 450;
+    options.es = false;
+    options.vulkan_semantics = true;
+    compiler.set_common_options(options);
+    CrossCompiled out;
+    for (const auto& resource : reflection.resources)
+        out.bindings.push_back({resource.name, "set" + std::to_string(resource.location.set), resource.location.binding,
+                                "", "", ""});
+    out.source = compiler.compile();
+    return out;
+}
+
 CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
     spirv_cross::CompilerMSL compiler(spirv);
     auto options = compiler.get_msl_options();
@@ -184,6 +199,7 @@ std::string_view crossTargetName(CrossTarget target) {
     case CrossTarget::Essl: return "essl";
     case CrossTarget::Msl: return "msl";
     case CrossTarget::Hlsl: return "hlsl";
+    case CrossTarget::VulkanGlsl: return "vulkan-glsl";
     }
     return "unknown";
 }
@@ -196,6 +212,7 @@ CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderRefle
         case CrossTarget::Essl: return toOpenGl(spirv, reflection, true, sourceName);
         case CrossTarget::Msl: return toMsl(spirv, reflection);
         case CrossTarget::Hlsl: return toHlsl(spirv, reflection);
+        case CrossTarget::VulkanGlsl: return toVulkanGlsl(spirv, reflection);
         }
     } catch (const spirv_cross::CompilerError& error) {
         throw CompileError(sourceName + ": error: " + std::string(crossTargetName(target)) +

@@ -8,7 +8,9 @@
 
 namespace iblkit::compiler {
 
-enum class CrossTarget { Glsl, Essl, Msl, Hlsl };
+// VulkanGlsl is GLSL 450 with Vulkan semantics (sets, bindings, separate textures and samplers
+// kept): the form that compiles back to SPIR-V for Vulkan.
+enum class CrossTarget { Glsl, Essl, Msl, Hlsl, VulkanGlsl };
 std::string_view crossTargetName(CrossTarget target);
 
 // Where one HLSL resource lands in a target language.

@@ -2,6 +2,7 @@
 
 #include "compile_error.hpp"
 #include "diagnostics.hpp"
+#include "glslang_process.hpp"
 #include "hlsl_register_resolver.hpp"
 #include "include_resolver.hpp"
 
@@ -21,27 +22,6 @@ namespace {
 constexpr int kHlslVersion = 100;
 constexpr auto kMessages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules |
                                                     EShMsgHlslOffsets);
-
-// glslang keeps process-wide tables: set them up once and tear them down at exit.
-void initializeGlslangOnce() {
-    struct Process {
-        Process() { glslang::InitializeProcess(); }
-        ~Process() { glslang::FinalizeProcess(); }
-    };
-    static Process process;
-}
-
-EShLanguage toGlslang(ShaderStage stage) {
-    switch (stage) {
-    case ShaderStage::Vertex: return EShLangVertex;
-    case ShaderStage::TessControl: return EShLangTessControl;
-    case ShaderStage::TessEvaluation: return EShLangTessEvaluation;
-    case ShaderStage::Geometry: return EShLangGeometry;
-    case ShaderStage::Fragment: return EShLangFragment;
-    case ShaderStage::Compute: return EShLangCompute;
-    }
-    return EShLangCompute;
-}
 
 std::string preambleOf(const CompileOptions& options) {
     std::string preamble;
@@ -111,7 +91,7 @@ std::string readSource(const std::filesystem::path& path) {
 FrontendResult compileHlsl(const CompileOptions& options) {
     initializeGlslangOnce();
     const std::string sourceName = options.source.string();
-    const std::string text = readSource(options.source);
+    const std::string text = options.sourceText ? *options.sourceText : readSource(options.source);
     const ShaderStage stage = stageOf(options, sourceName, text);
     const EShLanguage language = toGlslang(stage);
 

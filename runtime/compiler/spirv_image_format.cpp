@@ -43,8 +43,9 @@ public:
         const uint32_t variable = storageImageVariable(name);
         const uint32_t imageType = imageTypeOf(variable);
         check(name, variable, imageType, formatName);
-        const uint32_t ownType = unsharedImageType(variable, imageType);
-        module_.definition(ownType)->operands[kImageFormat] = format->spirvFormat;
+        auto* image = module_.definition(imageType);
+        if (image->operands[kImageFormat] == format->spirvFormat) return;
+        retarget(variable, imageType, format->spirvFormat);
         if (format->esslStandIn != format->glslName) module_.requireCapability(spv::CapabilityStorageImageExtendedFormats);
     }
 
@@ -88,17 +89,30 @@ private:
                      " channels but its element type has " + std::to_string(written));
     }
 
-    // The variable's image type, split off when another variable shares it.
-    uint32_t unsharedImageType(uint32_t variable, uint32_t imageType) {
+    // Gives the variable an image type of the wanted format: its own type changed in place when
+    // nothing else uses it, else an identical type already declared, else a new one (SPIR-V
+    // forbids two identical declarations).
+    void retarget(uint32_t variable, uint32_t imageType, uint32_t spirvFormat) {
         const uint32_t pointerType = module_.definition(variable)->operands[0];
-        // Owned: the image type is used by the variable's pointer type and its loads alone.
-        const size_t ownUses = 1 + module_.loadsOf(variable).size();
-        if (module_.usesOf(imageType) == ownUses && module_.usesOf(pointerType) == 1) return imageType;
-        const uint32_t newImage = module_.cloneTypeAfter(imageType, pointerType);
-        const uint32_t newPointer = module_.cloneTypeAfter(pointerType, newImage);
-        module_.definition(newPointer)->operands[2] = newImage;
-        module_.retypeVariable(variable, newPointer, imageType, newImage);
-        return newImage;
+        SpirvInstruction wanted = *module_.definition(imageType);
+        wanted.operands[kImageFormat] = spirvFormat;
+        uint32_t target = module_.findTypeLike(wanted);
+        const size_t ownUses = 1 + module_.loadsOf(variable).size(); // its pointer type and its loads
+        const bool owned = module_.usesOf(imageType) == ownUses && module_.usesOf(pointerType) == 1;
+        if (!target && owned) {
+            module_.definition(imageType)->operands[kImageFormat] = spirvFormat;
+            return;
+        }
+        if (!target) {
+            target = module_.cloneTypeAfter(imageType, pointerType);
+            module_.definition(target)->operands[kImageFormat] = spirvFormat;
+        }
+        uint32_t pointer = module_.findUniformConstantPointer(target);
+        if (!pointer) {
+            pointer = module_.cloneTypeAfter(pointerType, target);
+            module_.definition(pointer)->operands[2] = target;
+        }
+        module_.retypeVariable(variable, pointer, imageType, target);
     }
 
     SpirvModule& module_;

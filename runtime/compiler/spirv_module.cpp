@@ -125,6 +125,22 @@ std::vector<uint32_t> SpirvModule::componentsWrittenTo(uint32_t variable) const 
     return components;
 }
 
+uint32_t SpirvModule::findTypeLike(const SpirvInstruction& type) const {
+    for (const auto& instruction : instructions_)
+        if (instruction.opcode == type.opcode && instruction.operands.size() == type.operands.size() &&
+            std::equal(instruction.operands.begin() + 1, instruction.operands.end(), type.operands.begin() + 1))
+            return instruction.operands[0];
+    return 0;
+}
+
+uint32_t SpirvModule::findUniformConstantPointer(uint32_t pointee) const {
+    for (const auto& instruction : instructions_)
+        if (instruction.opcode == spv::OpTypePointer && instruction.operands[1] == spv::StorageClassUniformConstant &&
+            instruction.operands[2] == pointee)
+            return instruction.operands[0];
+    return 0;
+}
+
 uint32_t SpirvModule::cloneTypeAfter(uint32_t typeId, uint32_t afterId) {
     SpirvInstruction clone = *definition(typeId);
     const uint32_t newId = header_[kIdBoundWord]++;

@@ -31,6 +31,10 @@ public:
     // The component count of every texel OpImageWrite stores through a load of variable.
     std::vector<uint32_t> componentsWrittenTo(uint32_t variable) const;
 
+    // A type declared exactly like `type` (same opcode and operands but the result id), or 0.
+    uint32_t findTypeLike(const SpirvInstruction& type) const;
+    // The UniformConstant pointer type to `pointee`, or 0.
+    uint32_t findUniformConstantPointer(uint32_t pointee) const;
     // Declares a copy of a type under a new id right after the declaration of afterId.
     uint32_t cloneTypeAfter(uint32_t typeId, uint32_t afterId);
     // Gives variable the new pointer type and its loads the new image type.

@@ -4,41 +4,15 @@
 #include "compute_program.hpp"
 #include "vulkan_test_support.hpp"
 
+#include "cube_environment.hpp"
+#include "pbr.hpp"
 #include "shader_manifest.hpp"
 
-#include <array>
 
 namespace iblkit::vulkan {
 namespace {
 
 constexpr uint32_t kSize = 8;
-
-// The direction through (s, t) in [0, 1]^2 of a face, inverting the Vulkan specification's
-// "Cube Map Face Selection" table (sc, tc, ma per face; s = (sc / |ma| + 1) / 2).
-std::array<float, 3> vulkanDirection(uint32_t face, float s, float t) {
-    const float a = 2 * s - 1, b = 2 * t - 1;
-    switch (face) {
-    case 0: return {1, -b, -a};
-    case 1: return {-1, -b, a};
-    case 2: return {a, 1, b};
-    case 3: return {a, -1, -b};
-    case 4: return {a, -b, 1};
-    default: return {-a, -b, -1};
-    }
-}
-
-// The prefilter shader's table, transcribed from hlsl/PrefilterSpecularCS.hlsl.
-std::array<float, 3> seedDirection(uint32_t face, float s, float t) {
-    const float u = (s - 0.5f) * 2, v = (t - 0.5f) * -2;
-    switch (face) {
-    case 0: return {1, v, -u};
-    case 1: return {-1, v, u};
-    case 2: return {u, 1, -v};
-    case 3: return {u, -1, v};
-    case 4: return {u, v, 1};
-    default: return {-u, v, -1};
-    }
-}
 
 // Every texel holds (face, column, row, 1): a lookup tells exactly which texel it hit.
 Image identityCube(const VulkanContext& context) {
@@ -62,11 +36,16 @@ void expectEveryTexelFoundItself(const std::vector<float>& values) {
             }
 }
 
+// The reference's transcription of the shader's table against the Vulkan specification's
+// face-selection table, texel by texel.
 TEST(CubeConvention, TheSeedShadersFaceTableIsVulkans) {
     for (uint32_t face = 0; face < 6; ++face)
-        for (float s : {0.0625f, 0.3f, 0.5f, 0.9375f})
-            for (float t : {0.0625f, 0.7f, 0.9375f})
-                EXPECT_EQ(seedDirection(face, s, t), vulkanDirection(face, s, t)) << face << " " << s << " " << t;
+        for (uint32_t y = 0; y < kSize; ++y)
+            for (uint32_t x = 0; x < kSize; ++x) {
+                const glm::dvec3 seed = reference::PrefilterFaceDirection<double>(face, x, y, kSize);
+                const glm::dvec3 vulkan = glm::normalize(reference::cubeTexelDirection(face, x, y, kSize));
+                EXPECT_LT(glm::length(seed - vulkan), 1e-15) << "face " << face << " (" << x << ", " << y << ")";
+            }
 }
 
 class CubeOrientation : public testing::VulkanTest {};

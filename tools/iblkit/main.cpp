@@ -1,6 +1,7 @@
 #include "command_line.hpp"
 #include "compile_all_command.hpp"
 #include "compile_command.hpp"
+#include "consistency_command.hpp"
 #include "devices_command.hpp"
 #include "run_command.hpp"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addCompileAllCommand(app);
     iblkit::cli::addDevicesCommand(app);
     iblkit::cli::addRunCommand(app);
+    iblkit::cli::addConsistencyCommand(app);
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {

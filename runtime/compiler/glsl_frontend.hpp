@@ -1,0 +1,16 @@
+#pragma once
+
+#include "shader_stage.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace iblkit::compiler {
+
+// GLSL (with Vulkan semantics) -> SPIR-V for Vulkan 1.1 with glslang's GLSL frontend, validated:
+// how the consistency suite turns the cross-compiled GLSL back into something to run.
+// Throws CompileError with glslang's messages.
+std::vector<uint32_t> compileVulkanGlsl(const std::string& source, ShaderStage stage, const std::string& sourceName);
+
+} // namespace iblkit::compiler
