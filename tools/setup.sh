@@ -8,6 +8,7 @@ readonly IBLKIT_PACKAGES=(
   glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
+  libegl-dev libgl-dev libgl1-mesa-dri
 )
 
 missing_packages() {

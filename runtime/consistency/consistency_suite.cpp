@@ -1,11 +1,14 @@
 #include "consistency_suite.hpp"
 
+#include "gl_bake.hpp"
 #include "gpu_bake.hpp"
 #include "reference_bake.hpp"
 #include "shader_manifest.hpp"
 #include "shader_paths.hpp"
 
 #include <fmt/core.h>
+
+#include <functional>
 
 #include <glslang/build_info.h>
 #include <spirv-tools/libspirv.h>
@@ -24,17 +27,23 @@ bool withinBounds(const ErrorStats& vsFloat, const ErrorStats& vsDouble, const B
            vsDouble.maxAbsolute <= bounds.maxVsDouble && vsDouble.rms <= bounds.rmsVsDouble;
 }
 
-template <typename GpuRun>
+constexpr const char* kOpenGlPath = "d. HLSL → SPIR-V → GLSL 450 on OpenGL 4.5 (EGL)";
+
+// Runs one output on every Vulkan path and on OpenGL.
+using PathRun = std::function<std::vector<float>(ShaderPath)>;
+using OpenGlRun = std::function<std::vector<float>()>;
+
 void addOutput(std::vector<ConsistencyRow>& rows, const std::string& output, const std::vector<float>& floatReference,
-               const std::vector<double>& doubleReference, const Bounds& bounds, const GpuRun& gpuRun) {
+               const std::vector<double>& doubleReference, const Bounds& bounds, const PathRun& vulkanRun,
+               const OpenGlRun& openGlRun) {
     rows.push_back({"f. C++ reference, float", output, {}, measureError(floatReference, doubleReference), bounds, true, true});
-    for (const auto path : kVulkanPaths) {
-        const auto gpu = gpuRun(path);
+    const auto add = [&](std::string path, const std::vector<float>& gpu) {
         const auto vsFloat = measureError(gpu, floatReference);
         const auto vsDouble = measureError(gpu, doubleReference);
-        rows.push_back({std::string(pathName(path)), output, vsFloat, vsDouble, bounds, false,
-                        withinBounds(vsFloat, vsDouble, bounds)});
-    }
+        rows.push_back({std::move(path), output, vsFloat, vsDouble, bounds, false, withinBounds(vsFloat, vsDouble, bounds)});
+    };
+    for (const auto path : kVulkanPaths) add(std::string(pathName(path)), vulkanRun(path));
+    add(kOpenGlPath, openGlRun());
 }
 
 } // namespace
@@ -78,12 +87,18 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
     return options;
 }
 
+std::string_view openGlPathName() { return kOpenGlPath; }
+
 std::vector<ConsistencyRow> runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options) {
     std::vector<ConsistencyRow> rows;
+    const opengl::EglContext gl;
+    const auto lutForm = openGlForm(options.lutShader);
+    const auto prefilterForm = openGlForm(options.prefilterShader);
     for (const uint32_t size : options.lutSizes) {
         addOutput(rows, fmt::format("LUT {}²", size), reference::referenceBrdfLut<float>(size, options.sampleCount),
                   reference::referenceBrdfLut<double>(size, options.sampleCount), lutBounds(size),
-                  [&](ShaderPath path) { return gpuBrdfLut(context, compileForPath(path, options.lutShader), size); });
+                  [&](ShaderPath path) { return gpuBrdfLut(context, compileForPath(path, options.lutShader), size); },
+                  [&] { return glBrdfLut(gl, lutForm, size); });
     }
     const auto environment = reference::CubeEnvironment::testEnvironment(options.environmentSize);
     for (const float roughness : options.roughnesses) {
@@ -91,19 +106,22 @@ std::vector<ConsistencyRow> runConsistency(const vulkan::VulkanContext& context,
         addOutput(rows, fmt::format("prefilter {}² r={}", size, roughness),
                   reference::referencePrefilter<float>(environment, roughness, size, options.sampleCount),
                   reference::referencePrefilter<double>(environment, double(roughness), size, options.sampleCount),
-                  prefilterBounds(), [&](ShaderPath path) {
+                  prefilterBounds(),
+                  [&](ShaderPath path) {
                       return gpuPrefilter(context, compileForPath(path, options.prefilterShader), environment, roughness, size);
-                  });
+                  },
+                  [&] { return glPrefilter(gl, prefilterForm, environment, roughness, size); });
     }
     return rows;
 }
 
 std::string renderMarkdown(const std::vector<ConsistencyRow>& rows, const vulkan::VulkanContext& context,
-                           const SuiteOptions& options, const std::string& command) {
+                           const std::string& openGlRenderer, const SuiteOptions& options, const std::string& command) {
     std::string text = "# Consistency: every form of the seed shaders against the C++ reference\n\n";
     text += fmt::format("Made by `{}`; do not edit.\n\n", command);
     const auto& device = context.deviceInfo();
     text += fmt::format("- Device: {} ({}, Vulkan {}), driver {}\n", device.name, device.type, device.apiVersion, device.driver);
+    text += fmt::format("- OpenGL: {}\n", openGlRenderer);
     text += fmt::format("- glslang {}.{}.{}, SPIRV-Tools {}, Vulkan headers {}\n", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR,
                         GLSLANG_VERSION_PATCH, spvSoftwareVersionString(), VK_HEADER_VERSION);
     text += fmt::format("- {} samples per texel; the LUT written as R32G32_SFLOAT; the prefilter over a {}² procedural "
@@ -113,7 +131,7 @@ std::string renderMarkdown(const std::vector<ConsistencyRow>& rows, const vulkan
             "NaN and infinite GPU values; against the C++ reference computed in float (f) and in double (g). "
             "A path passes when it has no NaN or infinity and its largest and RMS errors against both are within the "
             "bounds (max / RMS). The row \"f.\" is the float reference against the double one, shown for scale.\n"
-            "- Path d (the GLSL 450 form on OpenGL 4.5 through EGL) is not part of this report yet.\n\n";
+            "\n";
     text += "| output | path | max abs vs f | max ULP vs f | RMS vs f | max abs vs g | max ULP vs g | RMS vs g | NaN/Inf "
             "| bounds vs f | bounds vs g | pass |\n";
     text += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";

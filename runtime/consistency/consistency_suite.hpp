@@ -39,8 +39,9 @@ struct ConsistencyRow {
     bool passed;
 };
 
-// Every path of every output, against the C++ reference in float and in double; the first row
-// of each output is the float reference itself against the double one.
+// Every path of every output — the four Vulkan paths and d, the GLSL form on OpenGL 4.5 through
+// EGL — against the C++ reference in float and in double; the first row of each output is the
+// float reference itself against the double one.
 std::vector<ConsistencyRow> runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options);
 
 // The bounds, and why each is those numbers (boundsRationale).
@@ -49,6 +50,9 @@ Bounds prefilterBounds();
 std::string boundsRationale();
 
 std::string renderMarkdown(const std::vector<ConsistencyRow>& rows, const vulkan::VulkanContext& context,
-                           const SuiteOptions& options, const std::string& command);
+                           const std::string& openGlRenderer, const SuiteOptions& options, const std::string& command);
+
+// The name of path d in the rows.
+std::string_view openGlPathName();
 
 } // namespace iblkit::consistency

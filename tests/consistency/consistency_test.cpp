@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -35,7 +36,9 @@ std::vector<ConsistencyRow> run(const SuiteOptions& options) {
 
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(testSizes(defaultSuiteOptions()));
-    ASSERT_EQ(rows.size(), 5u * 5u) << "LUT 32² and four prefilter roughnesses, the float reference and four paths each";
+    ASSERT_EQ(rows.size(), 5u * 6u) << "LUT 32² and four prefilter roughnesses: the float reference and five paths each";
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 5)
+        << "path d runs on OpenGL for every output";
     for (const auto& row : rows) {
         if (row.isReference) continue;
         EXPECT_TRUE(row.passed) << row.output << " / " << row.path << ": max " << row.vsFloat.maxAbsolute << " vs float, "
@@ -108,9 +111,12 @@ TEST(CommittedReport, IsTheCommandsOutputWithEveryPathWithinItsBounds) {
     EXPECT_NE(report.find("Made by `iblkit consistency --out docs/consistency.md`"), std::string::npos);
     for (const char* output : {"| LUT 512² |", "| LUT 32² |", "| prefilter 32² r=0 |", "| prefilter 32² r=0.25 |",
                                "| prefilter 32² r=0.5 |", "| prefilter 32² r=1 |"})
-        for (const auto path : kVulkanPaths)
+        for (const auto path : kVulkanPaths) {
             EXPECT_NE(report.find(std::string(output) + " " + std::string(pathName(path)) + " |"), std::string::npos)
                 << output << " " << pathName(path);
+            EXPECT_NE(report.find(std::string(output) + " " + std::string(openGlPathName()) + " |"), std::string::npos)
+                << output << " on OpenGL";
+        }
     EXPECT_EQ(report.find("**no**"), std::string::npos) << "a row of the committed report is outside its bounds";
     EXPECT_NE(report.find(boundsRationale()), std::string::npos) << "the report's bounds are not the suite's";
 }

@@ -2,6 +2,7 @@
 
 #include "atomic_output.hpp"
 #include "consistency_suite.hpp"
+#include "egl_context.hpp"
 #include "run_command.hpp"
 
 #include <fmt/core.h>
@@ -28,7 +29,7 @@ void addConsistencyCommand(CLI::App& app) {
         std::string invocation = "iblkit consistency";
         if (arguments->samples != 1024) invocation += fmt::format(" --samples {}", arguments->samples);
         if (!arguments->out.empty()) invocation += " --out " + arguments->out;
-        const auto report = consistency::renderMarkdown(rows, context, options, invocation);
+        const auto report = consistency::renderMarkdown(rows, context, opengl::EglContext().renderer(), options, invocation);
         if (arguments->out.empty()) fmt::print("{}", report);
         else files::writeFileAtomically(arguments->out, report);
         size_t failed = 0;
