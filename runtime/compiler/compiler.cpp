@@ -42,9 +42,9 @@ CompiledShader compileShader(const CompileOptions& options) {
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
-    validateSpirv(shader.namedSpirv, shader.sourceName);
+    if (options.optimization != OptimizationLevel::None) validateSpirv(shader.namedSpirv, shader.sourceName);
     shader.spirv = options.stripDebugInfo ? stripDebugInfo(shader.namedSpirv, shader.sourceName) : shader.namedSpirv;
-    validateSpirv(shader.spirv, shader.sourceName);
+    if (options.stripDebugInfo) validateSpirv(shader.spirv, shader.sourceName);
     shader.bindingShifts = options.bindingShifts;
     shader.includedFiles = std::move(frontend.includedFiles);
     shader.warnings = std::move(frontend.warnings);

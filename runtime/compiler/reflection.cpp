@@ -136,11 +136,15 @@ const ReflectedResource* ShaderReflection::find(const std::string& name) const {
 ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::vector<ResourceRegister>& registers,
                                const std::string& entryPoint, ShaderStage stage) {
     spirv_cross::Compiler compiler(spirv);
+    // A module may hold several entry points: reflect the one asked for (its resources, its
+    // workgroup size).
+    for (const auto& entry : compiler.get_entry_points_and_stages())
+        if (entry.name == entryPoint) compiler.set_entry_point(entry.name, entry.execution_model);
     ShaderReflection out;
     out.entryPoint = entryPoint;
     out.stage = stage;
     Reflector reflector{compiler, registers, out};
-    const auto resources = compiler.get_shader_resources();
+    const auto resources = compiler.get_shader_resources(compiler.get_active_interface_variables());
     for (const auto& resource : resources.uniform_buffers) reflector.addBuffer(resource, ResourceKind::ConstantBuffer);
     for (const auto& resource : resources.storage_buffers) reflector.addBuffer(resource, ResourceKind::StorageBuffer);
     for (const auto& resource : resources.separate_images) reflector.addImage(resource, false);
@@ -190,7 +194,7 @@ ShaderReflection reflectSpirv(const std::vector<uint32_t>& spirv, const std::str
                 else if (entry.execution_model == spv::ExecutionModelFragment) stage = ShaderStage::Fragment;
             }
         if (!stage) throw CompileError(sourceName + ": error: no compute, vertex or fragment entry point '" + entryPoint + "'");
-        const auto resources = compiler.get_shader_resources();
+        const auto resources = compiler.get_shader_resources(compiler.get_active_interface_variables());
         const auto add = [&](const auto& list, RegisterClass registerClass) {
             for (const auto& resource : list) {
                 const uint32_t set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);

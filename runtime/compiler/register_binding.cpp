@@ -59,6 +59,12 @@ ResourceRegister bindResource(const DeclaredResource& resource, uint32_t registe
 
 std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
                                               const BindingShifts& shifts, const std::string& sourceName) {
+    for (RegisterClass a : kRegisterClasses)
+        for (RegisterClass b : kRegisterClasses)
+            if (a < b && shifts.of(a) == shifts.of(b))
+                throw CompileError(sourceName + ": error: the binding shifts of " + registerLetter(a) + " and " +
+                                   registerLetter(b) + " are both " + std::to_string(shifts.of(a)) +
+                                   "; each class needs a range of its own");
     std::map<ClassAndSpace, std::map<uint32_t, std::string>> taken;
     for (const auto& resource : declared) {
         if (!resource.explicitRegister) continue;

@@ -42,7 +42,11 @@ struct ConsistencyRow {
 // Every path of every output — the four Vulkan paths and d, the GLSL form on OpenGL 4.5 through
 // EGL — against the C++ reference in float and in double; the first row of each output is the
 // float reference itself against the double one.
-std::vector<ConsistencyRow> runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options);
+struct ConsistencyResult {
+    std::vector<ConsistencyRow> rows;
+    std::string openGlRenderer;
+};
+ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options);
 
 // The bounds, and why each is those numbers (boundsRationale).
 Bounds lutBounds(uint32_t size);

@@ -17,7 +17,6 @@ template <typename Reference>
 ErrorStats measure(std::span<const float> actual, std::span<const Reference> reference) {
     if (actual.size() != reference.size()) throw std::invalid_argument("measureError: sizes differ");
     ErrorStats stats;
-    stats.count = actual.size();
     double squares = 0;
     for (size_t i = 0; i < actual.size(); ++i) {
         if (!std::isfinite(actual[i])) {
@@ -28,10 +27,7 @@ ErrorStats measure(std::span<const float> actual, std::span<const Reference> ref
         squares += error * error;
         const double ulp = double(std::llabs(orderedFloat(actual[i]) - orderedFloat(float(reference[i]))));
         stats.maxUlp = std::max(stats.maxUlp, ulp);
-        if (error > stats.maxAbsolute) {
-            stats.maxAbsolute = error;
-            stats.worstIndex = i;
-        }
+        stats.maxAbsolute = std::max(stats.maxAbsolute, error);
     }
     stats.rms = actual.empty() ? 0 : std::sqrt(squares / double(actual.size()));
     return stats;

@@ -9,12 +9,10 @@ namespace iblkit::consistency {
 // float32 units in the last place (against the reference rounded to float), the root mean
 // square error, and how many GPU values are NaN or infinite.
 struct ErrorStats {
-    size_t count = 0;
     size_t nonFinite = 0;
     double maxAbsolute = 0;
     double maxUlp = 0;
     double rms = 0;
-    size_t worstIndex = 0;
 };
 
 ErrorStats measureError(std::span<const float> actual, std::span<const float> reference);

@@ -4,19 +4,27 @@
 #include "gl_error.hpp"
 #include "gl_object.hpp"
 
+#include <algorithm>
+
 namespace iblkit::consistency {
 namespace {
 
-GLuint slotOf(const compiler::CrossCompiled& form, const std::string& resource) {
-    for (const auto& binding : form.bindings)
+GLuint slotOf(const OpenGlForm& form, const std::string& resource) {
+    for (const auto& binding : form.glsl.bindings)
         if (binding.resource == resource) return binding.slot;
     throw opengl::GlError("the GLSL form records no binding for '" + resource + "'");
 }
 
-void dispatch(const opengl::EglContext& context, const opengl::GlObject& program, uint32_t x, uint32_t y, uint32_t z) {
+void dispatch(const opengl::EglContext& context, const opengl::GlObject& program, const OpenGlForm& form,
+              std::array<uint32_t, 3> threads) {
     const auto& gl = context.gl();
     gl.UseProgram(program.name());
-    gl.DispatchCompute((x + 7) / 8, (y + 7) / 8, z);
+    std::array<GLuint, 3> groups{};
+    for (int axis = 0; axis < 3; ++axis) {
+        const uint32_t size = std::max(1u, form.workgroupSize[axis]);
+        groups[axis] = (threads[axis] + size - 1) / size;
+    }
+    gl.DispatchCompute(groups[0], groups[1], groups[2]);
     gl.MemoryBarrier(GL_ALL_BARRIER_BITS);
     gl.Finish();
     context.check("the dispatch");
@@ -31,25 +39,26 @@ std::vector<float> readBack(const opengl::EglContext& context, const opengl::GlO
 
 } // namespace
 
-compiler::CrossCompiled openGlForm(const compiler::CompileOptions& options) {
-    return compiler::crossCompileShader(compiler::compileShader(options), compiler::CrossTarget::Glsl);
+OpenGlForm openGlForm(const compiler::CompileOptions& options) {
+    const auto shader = compiler::compileShader(options);
+    return {compiler::crossCompileShader(shader, compiler::CrossTarget::Glsl), shader.reflection.workgroupSize};
 }
 
-std::vector<float> glBrdfLut(const opengl::EglContext& context, const compiler::CrossCompiled& form, uint32_t size) {
+std::vector<float> glBrdfLut(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size) {
     const auto& gl = context.gl();
-    const auto program = opengl::createComputeProgram(context, form.source, "PrecomputedBrdfCS (GLSL)");
+    const auto program = opengl::createComputeProgram(context, form.glsl.source, "PrecomputedBrdfCS (GLSL)");
     const auto lut = opengl::createTexture(context, GL_TEXTURE_2D);
     gl.TextureStorage2D(lut.name(), 1, GL_RG32F, GLsizei(size), GLsizei(size));
     gl.BindImageTexture(slotOf(form, "Precomputed"), lut.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     context.check("binding the LUT");
-    dispatch(context, program, size, size, 1);
+    dispatch(context, program, form, {size, size, 1});
     return readBack(context, lut, GL_RG, size_t(size) * size * 2);
 }
 
-std::vector<float> glPrefilter(const opengl::EglContext& context, const compiler::CrossCompiled& form,
+std::vector<float> glPrefilter(const opengl::EglContext& context, const OpenGlForm& form,
                                const reference::CubeEnvironment& environment, float roughness, uint32_t size) {
     const auto& gl = context.gl();
-    const auto program = opengl::createComputeProgram(context, form.source, "PrefilterSpecularCS (GLSL)");
+    const auto program = opengl::createComputeProgram(context, form.glsl.source, "PrefilterSpecularCS (GLSL)");
     const auto envMap = opengl::createTexture(context, GL_TEXTURE_CUBE_MAP);
     const auto n = GLsizei(environment.size());
     gl.TextureStorage2D(envMap.name(), 1, GL_RGBA32F, n, n);
@@ -72,7 +81,7 @@ std::vector<float> glPrefilter(const opengl::EglContext& context, const compiler
     gl.NamedBufferData(parameters.name(), sizeof block, block, GL_STATIC_DRAW);
     gl.BindBufferBase(GL_UNIFORM_BUFFER, slotOf(form, "PrefilterSpecularParameter"), parameters.name());
     context.check("binding the prefilter's resources");
-    dispatch(context, program, size, size, 6);
+    dispatch(context, program, form, {size, size, 6});
     return readBack(context, prefiltered, GL_RGBA, size_t(size) * size * 6 * 4);
 }
 

@@ -1,6 +1,7 @@
 #include "gpu_bake.hpp"
 
 #include "compute_program.hpp"
+#include "vulkan_error.hpp"
 
 namespace iblkit::consistency {
 
@@ -22,6 +23,8 @@ std::vector<float> gpuPrefilter(const vulkan::VulkanContext& context, const Path
     vulkan::Image prefiltered(context, {"Prefiltered", &rgba32, size, size, 6, 1, false, true});
     // The round-tripped HLSL renames cbuffer members; the block holds one float at its first member's offset.
     const auto* parameters = program.reflection.find("PrefilterSpecularParameter");
+    if (!parameters || parameters->members.empty())
+        throw vulkan::VulkanError("the prefilter program has no PrefilterSpecularParameter cbuffer with a member");
     vulkan::Buffer parameterBuffer(context, 16, vk::BufferUsageFlagBits::eUniformBuffer, "PrefilterSpecularParameter");
     parameterBuffer.write(std::as_bytes(std::span(&roughness, 1)), parameters->members.at(0).offset);
     compute.bind("EnvMap", envMap);

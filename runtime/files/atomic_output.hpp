@@ -13,8 +13,10 @@ public:
 };
 
 // Writes a set of files all or nothing: every file goes to a temporary beside its final path,
-// and only when all were written are they renamed into place. A failure removes the
-// temporaries and leaves every existing file as it was. Throws FileError.
+// and only when all were written are they renamed into place, each rename atomic. A failure
+// while writing removes the temporaries and leaves every existing file as it was; a rename can
+// fail only if a folder changes under the run, and then the files renamed before it stay new.
+// Throws FileError.
 class AtomicOutput {
 public:
     AtomicOutput() = default;

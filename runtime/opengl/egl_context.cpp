@@ -22,32 +22,24 @@ EglContext::EglContext() {
         throw GlError("EGL has no surfaceless platform: install Mesa's EGL (Debian packages libegl1 and libgl1-mesa-dri)");
     const auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr))
+    if (!getPlatformDisplay) throw GlError("EGL lacks eglGetPlatformDisplayEXT");
+    const EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
         throw GlError("cannot open EGL's surfaceless display (Debian package libgl1-mesa-dri)");
-    const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
-    if (!hasExtension(extensions, "EGL_KHR_surfaceless_context") || !hasExtension(extensions, "EGL_KHR_no_config_context")) {
-        eglTerminate(display_);
+    display_.handle = display;
+    const char* extensions = eglQueryString(display, EGL_EXTENSIONS);
+    if (!hasExtension(extensions, "EGL_KHR_surfaceless_context") || !hasExtension(extensions, "EGL_KHR_no_config_context"))
         throw GlError("the EGL display cannot make a context without a surface");
-    }
-    eglBindAPI(EGL_OPENGL_API);
+    if (!eglBindAPI(EGL_OPENGL_API)) throw GlError("EGL offers no desktop OpenGL");
     const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-    if (context_ == EGL_NO_CONTEXT || !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
-        if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+    context_.display = display;
+    context_.handle = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context_.handle == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_.handle))
         throw GlError("the driver offers no OpenGL 4.5 core context");
-    }
     gl_ = loadGlFunctions();
     // Vulkan always filters cubes across faces; OpenGL only when asked.
     gl_.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-}
-
-EglContext::~EglContext() {
-    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display_, context_);
-    eglTerminate(display_);
 }
 
 std::string EglContext::renderer() const {

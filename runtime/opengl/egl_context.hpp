@@ -13,7 +13,6 @@ namespace iblkit::opengl {
 class EglContext {
 public:
     EglContext();
-    ~EglContext();
     EglContext(const EglContext&) = delete;
     EglContext& operator=(const EglContext&) = delete;
 
@@ -23,8 +22,25 @@ public:
     void check(const char* what) const;
 
 private:
-    EGLDisplay display_ = EGL_NO_DISPLAY;
-    EGLContext context_ = EGL_NO_CONTEXT;
+    // Each releases what it holds, so a constructor that throws halfway leaks nothing.
+    struct Display {
+        EGLDisplay handle = EGL_NO_DISPLAY;
+        ~Display() {
+            if (handle != EGL_NO_DISPLAY) eglTerminate(handle);
+        }
+    };
+    struct Context {
+        EGLDisplay display = EGL_NO_DISPLAY;
+        EGLContext handle = EGL_NO_CONTEXT;
+        ~Context() {
+            if (handle == EGL_NO_CONTEXT) return;
+            eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            eglDestroyContext(display, handle);
+        }
+    };
+
+    Display display_;
+    Context context_;
     GlFunctions gl_{};
 };
 

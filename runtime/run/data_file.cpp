@@ -1,6 +1,5 @@
 #include "data_file.hpp"
 
-#include "atomic_output.hpp"
 #include "run_error.hpp"
 
 #include <cstring>
@@ -83,36 +82,33 @@ std::string npyBytes(const std::vector<float>& values, const std::vector<size_t>
 
 } // namespace
 
-std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount) {
+std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) throw RunError(path.string() + ": error: no such data file");
-    std::vector<float> values;
-    if (isNpy(path)) {
-        values = readNpy(path);
-    } else {
-        const std::string bytes = slurp(path);
-        if (bytes.size() != expectedCount * format.bytesPerChannel)
-            throw RunError(path.string() + ": error: holds " + std::to_string(bytes.size()) + " bytes; " +
-                           std::to_string(expectedCount) + " values of " + std::string(format.name) + " take " +
-                           std::to_string(expectedCount * format.bytesPerChannel));
-        values.resize(expectedCount);
-        vulkan::decodeTexels(format, std::as_bytes(std::span(bytes.data(), bytes.size())), values);
-    }
+    if (isNpy(path)) return readNpy(path);
+    const std::string bytes = slurp(path);
+    if (bytes.size() % format.bytesPerChannel != 0)
+        throw RunError(path.string() + ": error: holds " + std::to_string(bytes.size()) + " bytes, not a whole number of " +
+                       std::string(format.name) + " components");
+    std::vector<float> values(bytes.size() / format.bytesPerChannel);
+    vulkan::decodeTexels(format, std::as_bytes(std::span(bytes.data(), bytes.size())), values);
+    return values;
+}
+
+std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount) {
+    auto values = readValues(path, format);
     if (values.size() != expectedCount)
         throw RunError(path.string() + ": error: holds " + std::to_string(values.size()) + " values, not " +
                        std::to_string(expectedCount));
     return values;
 }
 
-void writeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, const std::vector<float>& values,
-                 const std::vector<size_t>& shape) {
-    if (isNpy(path)) {
-        files::writeFileAtomically(path, npyBytes(values, shape));
-        return;
-    }
+std::string encodeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format,
+                         const std::vector<float>& values, const std::vector<size_t>& shape) {
+    if (isNpy(path)) return npyBytes(values, shape);
     std::string bytes(values.size() * format.bytesPerChannel, '\0');
     vulkan::encodeTexels(format, values, std::as_writable_bytes(std::span(bytes.data(), bytes.size())));
-    files::writeFileAtomically(path, bytes);
+    return bytes;
 }
 
 } // namespace iblkit::run

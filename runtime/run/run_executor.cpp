@@ -1,5 +1,6 @@
 #include "run_executor.hpp"
 
+#include "atomic_output.hpp"
 #include "block_writer.hpp"
 #include "compiler.hpp"
 #include "compute_program.hpp"
@@ -27,7 +28,12 @@ struct Program {
 
 Program loadShader(const RunSpec& spec) {
     if (spec.shader.extension() == ".spv") {
+        if (!spec.includeDirs.empty() || !spec.defines.empty() || !spec.imageFormats.empty())
+            throw RunError(spec.runFile.string() + ": error: \"include\", \"defines\" and \"image_formats\" apply to HLSL "
+                           "shaders, not to " + spec.shader.string());
         const std::string bytes = compiler::readSource(spec.shader);
+        if (bytes.size() % 4 != 0 || bytes.size() < 20)
+            throw RunError(spec.shader.string() + ": error: not a SPIR-V module (" + std::to_string(bytes.size()) + " bytes)");
         std::vector<uint32_t> words(bytes.size() / 4);
         std::memcpy(words.data(), bytes.data(), words.size() * 4);
         return {words, compiler::reflectSpirv(words, spec.entry, spec.shader.string())};
@@ -68,7 +74,7 @@ public:
                    timing.wallMilliseconds);
         size_t passed = 0;
         for (const auto& expectation : spec_.expectations) passed += check(expectation);
-        for (const auto& [name, path] : spec_.saves) save(name, path);
+        saveAll();
         bool clean = true;
         for (const auto& message : log_->messages()) {
             fmt::print(out_, "FAIL validation: {}\n", message);
@@ -105,6 +111,13 @@ private:
             if (!given) fail("resources: the shader needs '" + resource.name + "' (" +
                              std::string(compiler::resourceKindName(resource.kind)) + "), which the run file does not give");
         }
+        const auto holdsValues = [&](const std::string& name, const std::string& where) {
+            const auto found = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
+            if (found == spec_.resources.end()) fail(where + ": no resource named '" + name + "'");
+            if (found->kind == "sampler") fail(where + ": '" + name + "' is a sampler: it holds no values");
+        };
+        for (const auto& expectation : spec_.expectations) holdsValues(expectation.resource, "expect");
+        for (const auto& [name, path] : spec_.saves) holdsValues(name, "save");
     }
 
     // The values of a fill, a list or a file, for a resource or an expectation of `count` values.
@@ -153,7 +166,7 @@ private:
             const auto& format = bufferFormat(spec);
             size_t count = spec.count ? spec.count : spec.sizeBytes / 4;
             if (!count) count = spec.initial.values.size();
-            if (!count && !spec.initial.file.empty()) count = std::filesystem::file_size(spec.initial.file) / 4;
+            if (!count && !spec.initial.file.empty()) count = readValues(spec.initial.file, format).size();
             if (!count) fail("resources." + spec.name + ": give \"count\", \"size_bytes\", \"values\" or \"file\"");
             auto buffer = std::make_unique<vulkan::Buffer>(context_, std::max<size_t>(count * 4, reflected.blockSize),
                                                            vk::BufferUsageFlagBits::eStorageBuffer, spec.name);
@@ -289,15 +302,20 @@ private:
         return result.passed;
     }
 
-    void save(const std::string& name, const std::filesystem::path& path) const {
-        const auto data = readback(name);
-        std::vector<size_t> shape{data.values.size()};
-        if (data.image && data.image->desc().mips == 1) {
-            const auto& desc = data.image->desc();
-            shape = {desc.layers, desc.height, desc.width, desc.format->channels};
+    // Every save or none: all are written to temporaries first (files::AtomicOutput).
+    void saveAll() const {
+        files::AtomicOutput output;
+        for (const auto& [name, path] : spec_.saves) {
+            const auto data = readback(name);
+            std::vector<size_t> shape{data.values.size()};
+            if (data.image && data.image->desc().mips == 1) {
+                const auto& desc = data.image->desc();
+                shape = {desc.layers, desc.height, desc.width, desc.format->channels};
+            }
+            output.add(path, encodeValues(path, *data.format, data.values, shape));
         }
-        writeValues(path, *data.format, data.values, shape);
-        fmt::print(out_, "saved    {} -> {}\n", name, path.string());
+        output.commit();
+        for (const auto& [name, path] : spec_.saves) fmt::print(out_, "saved    {} -> {}\n", name, path.string());
     }
 
     const RunSpec& spec_;

@@ -207,10 +207,11 @@ DispatchTiming ComputeProgram::dispatchGroups(const VulkanContext& context, std:
                               " exceeds the device's limit of " + std::to_string(limits.maxComputeWorkGroupCount[axis]));
     writeDescriptorSets();
     const bool timed = context.timestampPeriod() > 0;
-    const vk::raii::QueryPool queries(context.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
+    vk::raii::QueryPool queries(nullptr);
+    if (timed) queries = vk::raii::QueryPool(context.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
     const auto started = std::chrono::steady_clock::now();
     context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        commands.resetQueryPool(*queries, 0, 2);
+        if (timed) commands.resetQueryPool(*queries, 0, 2);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
         std::vector<vk::DescriptorSet> sets;
         for (const auto& [index, set] : sets_) sets.push_back(*set);

@@ -10,6 +10,13 @@
 namespace iblkit::vulkan {
 namespace {
 
+vk::ImageUsageFlags usageOf(const ImageDesc& desc) {
+    vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc |
+                                vk::ImageUsageFlagBits::eTransferDst;
+    if (desc.storage) usage |= vk::ImageUsageFlagBits::eStorage;
+    return usage;
+}
+
 void validate(const VulkanContext& context, const ImageDesc& desc) {
     const auto fail = [&](const std::string& why) { throw VulkanError("image '" + desc.name + "': " + why); };
     if (!desc.format) fail("no format");
@@ -24,18 +31,20 @@ void validate(const VulkanContext& context, const ImageDesc& desc) {
         fail(std::to_string(desc.width) + "x" + std::to_string(desc.height) + " exceeds the device's limit of " +
              std::to_string(limit));
     if (desc.layers > limits.maxImageArrayLayers) fail("more layers than the device's limit");
-    vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc |
-                                vk::ImageUsageFlagBits::eTransferDst;
-    if (desc.storage) usage |= vk::ImageUsageFlagBits::eStorage;
+    vk::ImageFormatProperties properties;
     try {
-        (void)context.physicalDevice().getImageFormatProperties(desc.format->format, vk::ImageType::e2D,
-                                                                vk::ImageTiling::eOptimal, usage,
-                                                                desc.cube ? vk::ImageCreateFlagBits::eCubeCompatible
-                                                                          : vk::ImageCreateFlags());
+        properties = context.physicalDevice().getImageFormatProperties(
+            desc.format->format, vk::ImageType::e2D, vk::ImageTiling::eOptimal, usageOf(desc),
+            desc.cube ? vk::ImageCreateFlagBits::eCubeCompatible : vk::ImageCreateFlags());
     } catch (const vk::FormatNotSupportedError&) {
         fail("the device does not support " + std::string(desc.format->name) +
              (desc.storage ? " as a storage image" : " as a sampled image"));
     }
+    if (desc.width > properties.maxExtent.width || desc.height > properties.maxExtent.height ||
+        desc.mips > properties.maxMipLevels || desc.layers > properties.maxArrayLayers)
+        fail("the device's limits for " + std::string(desc.format->name) + " are " +
+             std::to_string(properties.maxExtent.width) + "x" + std::to_string(properties.maxExtent.height) + ", " +
+             std::to_string(properties.maxMipLevels) + " mips, " + std::to_string(properties.maxArrayLayers) + " layers");
 }
 
 std::vector<vk::BufferImageCopy> copyRegions(const Image& image) {
@@ -76,9 +85,7 @@ uint32_t fullMipCount(uint32_t width, uint32_t height) {
 
 Image::Image(const VulkanContext& context, ImageDesc desc) : desc_(std::move(desc)), device_(&context.device()) {
     validate(context, desc_);
-    vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc |
-                                vk::ImageUsageFlagBits::eTransferDst;
-    if (desc_.storage) usage |= vk::ImageUsageFlagBits::eStorage;
+    const vk::ImageUsageFlags usage = usageOf(desc_);
     image_ = vk::raii::Image(
         context.device(),
         vk::ImageCreateInfo(desc_.cube ? vk::ImageCreateFlagBits::eCubeCompatible : vk::ImageCreateFlags(),

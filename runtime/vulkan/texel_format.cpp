@@ -82,12 +82,6 @@ const TexelFormat& texelFormatNamed(std::string_view name) {
     throw VulkanError("unsupported format '" + std::string(name) + "' (supported: " + supportedFormatNames() + ")");
 }
 
-const TexelFormat& texelFormatOf(vk::Format format) {
-    for (const auto& known : kFormats)
-        if (known.format == format) return known;
-    throw VulkanError("unsupported format " + vk::to_string(format) + " (supported: " + supportedFormatNames() + ")");
-}
-
 std::string supportedFormatNames() {
     std::string names;
     for (const auto& format : kFormats) names += (names.empty() ? "" : ", ") + std::string(format.name);

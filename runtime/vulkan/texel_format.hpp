@@ -24,7 +24,6 @@ struct TexelFormat {
 
 // Throws VulkanError naming the supported formats.
 const TexelFormat& texelFormatNamed(std::string_view name);
-const TexelFormat& texelFormatOf(vk::Format format);
 std::string supportedFormatNames();
 
 // Converts channel values (channels per texel, in order) to the format's bytes and back.

@@ -91,20 +91,26 @@ std::vector<vk::raii::PhysicalDevice> physicalDevicesOf(const vk::raii::Instance
     }
 }
 
-std::string selectorOf(const ContextOptions& options) {
-    if (!options.device.empty()) return options.device;
-    const char* fromEnvironment = std::getenv("IBLKIT_DEVICE");
-    return fromEnvironment ? fromEnvironment : "";
+vk::raii::Context loadVulkan() {
+    try {
+        return vk::raii::Context();
+    } catch (const std::runtime_error&) {
+        throw VulkanError("cannot load the Vulkan loader: install Debian packages libvulkan1 and mesa-vulkan-drivers");
+    }
 }
 
-size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& selector) {
+} // namespace
+
+size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& requested) {
+    const char* fromEnvironment = std::getenv("IBLKIT_DEVICE");
+    const std::string selector = !requested.empty() ? requested : fromEnvironment ? fromEnvironment : "";
     if (selector.empty()) {
         for (size_t i = 0; i < devices.size(); ++i)
             if (devices[i].isLavapipe) return i;
         return 0;
     }
     if (std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); })) {
-        const size_t index = std::stoul(selector);
+        const size_t index = selector.size() < 10 ? std::stoul(selector) : devices.size();
         if (index < devices.size()) return index;
         throw VulkanError("no Vulkan device has index " + selector + " (there are " + std::to_string(devices.size()) +
                           "; see iblkit devices)");
@@ -113,6 +119,8 @@ size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& s
         if (lowercase(devices[i].name).find(lowercase(selector)) != std::string::npos) return i;
     throw VulkanError("no Vulkan device matches '" + selector + "' (see iblkit devices)");
 }
+
+namespace {
 
 uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device) {
     const auto families = device.getQueueFamilyProperties();
@@ -134,7 +142,7 @@ std::vector<std::string> ValidationLog::messages() const {
 }
 
 std::vector<DeviceInfo> listDevices() {
-    vk::raii::Context loader;
+    const auto loader = loadVulkan();
     const auto instance = createInstance(loader, false, nullptr);
     const auto devices = physicalDevicesOf(instance);
     std::vector<DeviceInfo> infos;
@@ -143,7 +151,7 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 VulkanContext::VulkanContext(const ContextOptions& options)
-    : validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
+    : loader_(loadVulkan()), validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
     const char* validationFromEnvironment = std::getenv("IBLKIT_VALIDATION");
     const bool asked = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");
 #ifdef NDEBUG
@@ -151,8 +159,9 @@ VulkanContext::VulkanContext(const ContextOptions& options)
 #else
     const bool debugBuild = true; // debug builds validate whenever the layer is installed
 #endif
-    const bool wanted = asked || (debugBuild && layerAvailable(loader_, kValidationLayer));
-    if (asked && !layerAvailable(loader_, kValidationLayer))
+    const bool installed = layerAvailable(loader_, kValidationLayer);
+    const bool wanted = asked || (debugBuild && installed);
+    if (asked && !installed)
         throw VulkanError("validation was asked for, but VK_LAYER_KHRONOS_validation is not installed "
                           "(Debian package vulkan-validationlayers)");
     validationEnabled_ = wanted;
@@ -162,7 +171,7 @@ VulkanContext::VulkanContext(const ContextOptions& options)
     auto devices = physicalDevicesOf(instance_);
     std::vector<DeviceInfo> infos;
     for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
-    const size_t chosen = chooseDevice(infos, selectorOf(options));
+    const size_t chosen = chooseDevice(infos, options.device);
     physicalDevice_ = std::move(devices[chosen]);
     deviceInfo_ = infos[chosen];
 

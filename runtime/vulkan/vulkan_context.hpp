@@ -44,6 +44,10 @@ struct ContextOptions {
 // Every Vulkan device the loader sees. Throws VulkanError when there is none.
 std::vector<DeviceInfo> listDevices();
 
+// The device a context would choose for `selector` (see ContextOptions::device; empty reads
+// $IBLKIT_DEVICE). Throws VulkanError when nothing matches.
+size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& selector);
+
 // Instance, the chosen device, its compute queue, a command pool and a pipeline cache.
 class VulkanContext {
 public:

@@ -137,6 +137,13 @@ TEST_F(RunCli, AnAllocationThatCannotFit) {
     expectError(run, "image 'EnvMap': 1048576x1048576 exceeds the device's limit");
 }
 
+TEST_F(RunCli, ASaveOfAnUnknownResourceFailsBeforeAnythingIsWritten) {
+    auto run = fastPrefilter();
+    run["save"] = {{"Prefiltered", (folder / "a.npy").string()}, {"Nope", (folder / "b.npy").string()}};
+    expectError(run, "save: no resource named 'Nope'");
+    EXPECT_FALSE(fs::exists(folder / "a.npy"));
+}
+
 TEST_F(RunCli, AMissingDataFile) {
     auto run = fastPrefilter();
     run["resources"]["EnvMap"].erase("fill");

@@ -70,6 +70,13 @@ TEST(RegisterRule, ARegisterBeyondItsClassRangeIsAnErrorNotAClash) {
         << "the class with the largest shift is unbounded";
 }
 
+TEST(RegisterRule, TwoClassesWithTheSameShiftAreAnError) {
+    BindingShifts shifts;
+    parseBindingShift("t=0", shifts);
+    EXPECT_THROW(assignRegisters({at("cb", RC::ConstantBuffer, 0), at("tex", RC::ShaderResource, 0)}, shifts, "x.hlsl"),
+                 CompileError);
+}
+
 TEST(RegisterRule, ShiftsAreParsedAndValidated) {
     BindingShifts shifts;
     parseBindingShift("t=200", shifts);

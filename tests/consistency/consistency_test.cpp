@@ -28,7 +28,7 @@ std::vector<ConsistencyRow> run(const SuiteOptions& options) {
     std::vector<ConsistencyRow> rows;
     {
         const vulkan::VulkanContext context({"", true, log});
-        rows = runConsistency(context, options);
+        rows = runConsistency(context, options).rows;
     }
     for (const auto& message : log->messages()) ADD_FAILURE() << "validation: " << message;
     return rows;

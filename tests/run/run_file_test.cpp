@@ -1,3 +1,4 @@
+#include "atomic_output.hpp"
 #include "data_file.hpp"
 #include "run_error.hpp"
 #include "run_file.hpp"
@@ -74,17 +75,18 @@ TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
 TEST_F(RunFiles, NpyFilesRoundTripAndRawFilesMustHaveTheRightSize) {
     const auto& format = vulkan::texelFormatNamed("R16G16_SFLOAT");
     const std::vector<float> values = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
-    writeValues(folder / "a.npy", format, values, {1, 1, 3, 2});
+    files::writeFileAtomically(folder / "a.npy", encodeValues(folder / "a.npy", format, values, {1, 1, 3, 2}));
     EXPECT_EQ(readValues(folder / "a.npy", format, 6), values);
     std::ifstream npy(folder / "a.npy", std::ios::binary);
     std::string header(128, '\0');
     npy.read(header.data(), 128);
     EXPECT_NE(header.find("'shape': (1, 1, 3, 2)"), std::string::npos);
     EXPECT_EQ(fs::file_size(folder / "a.npy") % 16, (6 * 4) % 16) << "the header is padded to 64 bytes";
-    writeValues(folder / "a.bin", format, values, {6});
+    files::writeFileAtomically(folder / "a.bin", encodeValues(folder / "a.bin", format, values, {6}));
     EXPECT_EQ(fs::file_size(folder / "a.bin"), 12u) << "raw data in the format: 6 halves";
     EXPECT_EQ(readValues(folder / "a.bin", format, 6), values);
     EXPECT_THROW(readValues(folder / "a.bin", format, 7), RunError);
+    EXPECT_EQ(readValues(folder / "a.npy", format).size(), 6u) << "without a count, as many values as the file holds";
     EXPECT_THROW(readValues(folder / "missing.bin", format, 6), RunError);
 }
 

@@ -1,17 +1,20 @@
 # Build-time shader compilation with the kit's own compiler.
 #
-# iblkit_add_shader(NAME SOURCE src.hlsl [ENTRY main] [INCLUDE_DIRS dir...]
+# iblkit_add_shader(NAME SOURCE src.hlsl [ENTRY main] [STAGE comp] [INCLUDE_DIRS dir...]
 #                   [DEFINES NAME=VALUE...] [IMAGE_FORMATS Resource=format...])
 # compiles SOURCE to ${CMAKE_BINARY_DIR}/shaders/NAME.spv with its reflection NAME.json,
 # rebuilt whenever the source or anything it #includes changes (through the depfile).
 function(iblkit_add_shader name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "SOURCE;ENTRY" "INCLUDE_DIRS;DEFINES;IMAGE_FORMATS")
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "SOURCE;ENTRY;STAGE" "INCLUDE_DIRS;DEFINES;IMAGE_FORMATS")
   if(NOT ARG_ENTRY)
     set(ARG_ENTRY main)
   endif()
   set(out_dir ${CMAKE_BINARY_DIR}/shaders)
   set(spv ${out_dir}/${name}.spv)
   set(flags -E ${ARG_ENTRY})
+  if(ARG_STAGE)
+    list(APPEND flags -S ${ARG_STAGE})
+  endif()
   foreach(dir IN LISTS ARG_INCLUDE_DIRS)
     list(APPEND flags -I ${dir})
   endforeach()
@@ -63,9 +66,22 @@ function(iblkit_add_shaders_from_manifest manifest)
     if(no_entry)
       set(entry main)
     endif()
+    string(JSON stage ERROR_VARIABLE no_stage GET ${text} shaders ${index} stage)
+    if(no_stage)
+      set(stage "")
+    endif()
+    set(includes ${folder})
+    string(JSON include_count ERROR_VARIABLE no_includes LENGTH ${text} shaders ${index} include)
+    if(NOT no_includes AND include_count GREATER 0)
+      math(EXPR last_include "${include_count} - 1")
+      foreach(include_index RANGE ${last_include})
+        string(JSON include GET ${text} shaders ${index} include ${include_index})
+        list(APPEND includes ${folder}/${include})
+      endforeach()
+    endif()
     _iblkit_manifest_assignments("${text}" ${index} image_formats formats)
     _iblkit_manifest_assignments("${text}" ${index} defines defines)
-    iblkit_add_shader(${name} SOURCE ${folder}/${source} ENTRY ${entry} INCLUDE_DIRS ${folder}
+    iblkit_add_shader(${name} SOURCE ${folder}/${source} ENTRY ${entry} STAGE "${stage}" INCLUDE_DIRS ${includes}
                       DEFINES ${defines} IMAGE_FORMATS ${formats})
   endforeach()
   get_property(outputs GLOBAL PROPERTY IBLKIT_SHADER_OUTPUTS)

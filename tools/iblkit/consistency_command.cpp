@@ -2,7 +2,6 @@
 
 #include "atomic_output.hpp"
 #include "consistency_suite.hpp"
-#include "egl_context.hpp"
 #include "run_command.hpp"
 
 #include <fmt/core.h>
@@ -23,19 +22,23 @@ void addConsistencyCommand(CLI::App& app) {
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
     command->add_option("--samples", arguments->samples, "Samples per texel (default 1024, the documents')");
     command->callback([arguments] {
-        const vulkan::VulkanContext context({arguments->device, false, nullptr});
+        auto log = std::make_shared<vulkan::ValidationLog>();
+        const vulkan::VulkanContext context({arguments->device, false, log});
         const auto options = consistency::defaultSuiteOptions("hlsl/shaders.json", arguments->samples);
-        const auto rows = consistency::runConsistency(context, options);
+        const auto [rows, openGlRenderer] = consistency::runConsistency(context, options);
         std::string invocation = "iblkit consistency";
         if (arguments->samples != 1024) invocation += fmt::format(" --samples {}", arguments->samples);
         if (!arguments->out.empty()) invocation += " --out " + arguments->out;
-        const auto report = consistency::renderMarkdown(rows, context, opengl::EglContext().renderer(), options, invocation);
+        const auto report = consistency::renderMarkdown(rows, context, openGlRenderer, options, invocation);
         if (arguments->out.empty()) fmt::print("{}", report);
         else files::writeFileAtomically(arguments->out, report);
         size_t failed = 0;
         for (const auto& row : rows) failed += !row.passed;
+        // Debug builds, and IBLKIT_VALIDATION=1, run with the validation layer: what it says fails the run.
+        const auto messages = log->messages();
+        for (const auto& message : messages) fmt::print(stderr, "validation: {}\n", message);
         fmt::print(stderr, "{} of {} results within their bounds\n", rows.size() - failed, rows.size());
-        if (failed) throw ExpectationsFailed{};
+        if (failed || !messages.empty()) throw ExpectationsFailed{};
     });
 }
 

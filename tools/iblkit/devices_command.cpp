@@ -10,10 +10,9 @@ void addDevicesCommand(CLI::App& app) {
     auto* command = app.add_subcommand("devices", "List the Vulkan devices (the default one is marked *)");
     command->callback([] {
         const auto devices = vulkan::listDevices();
-        bool anyLavapipe = false;
-        for (const auto& device : devices) anyLavapipe |= device.isLavapipe;
+        const size_t chosen = vulkan::chooseDevice(devices, "");
         for (const auto& device : devices) {
-            const bool isDefault = anyLavapipe ? device.isLavapipe : device.index == 0;
+            const bool isDefault = device.index == chosen;
             fmt::print("{} {}  {}  {}  Vulkan {}  {}\n", isDefault ? '*' : ' ', device.index, device.name, device.type,
                        device.apiVersion, device.driver);
         }

@@ -12,6 +12,7 @@
 
 int main(int argc, char** argv) {
     CLI::App app{"iblkit: HLSL image-based-lighting shaders in every form, and the proof that they agree"};
+    app.name("iblkit");
     app.set_version_flag("--version", std::string("iblkit ") + IBLKIT_VERSION);
     app.require_subcommand(1);
     iblkit::cli::addCompileCommand(app);
