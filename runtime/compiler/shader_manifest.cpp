@@ -47,4 +47,10 @@ std::vector<ManifestShader> readShaderManifest(const std::filesystem::path& mani
     return shaders;
 }
 
+CompileOptions manifestShaderOptions(const std::filesystem::path& manifest, const std::string& name) {
+    for (auto& shader : readShaderManifest(manifest))
+        if (shader.name == name) return std::move(shader.options);
+    throw CompileError(manifest.string() + ": error: no shader named '" + name + "'");
+}
+
 } // namespace iblkit::compiler

@@ -18,4 +18,7 @@ struct ManifestShader {
 // always an include folder. Throws CompileError.
 std::vector<ManifestShader> readShaderManifest(const std::filesystem::path& manifest);
 
+// The options of the manifest's shader of that name; throws CompileError when there is none.
+CompileOptions manifestShaderOptions(const std::filesystem::path& manifest, const std::string& name);
+
 } // namespace iblkit::compiler

@@ -17,12 +17,6 @@
 namespace iblkit::consistency {
 namespace {
 
-compiler::CompileOptions manifestShader(const std::string& manifest, const std::string& name) {
-    for (const auto& entry : compiler::readShaderManifest(manifest))
-        if (entry.name == name) return entry.options;
-    throw std::runtime_error(manifest + ": no shader " + name);
-}
-
 bool withinBounds(const ErrorStats& vsFloat, const ErrorStats& vsDouble, const Bounds& bounds) {
     return vsFloat.nonFinite == 0 && vsFloat.maxAbsolute <= bounds.maxVsFloat && vsFloat.rms <= bounds.rmsVsFloat &&
            vsDouble.maxAbsolute <= bounds.maxVsDouble && vsDouble.rms <= bounds.rmsVsDouble;
@@ -81,9 +75,9 @@ std::string boundsRationale() {
 SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCount) {
     SuiteOptions options;
     options.sampleCount = sampleCount;
-    options.lutShader = manifestShader(manifest, "PrecomputedBrdfCS");
+    options.lutShader = compiler::manifestShaderOptions(manifest, "PrecomputedBrdfCS");
     options.lutShader.imageFormats["Precomputed"] = "rg32f";
-    options.prefilterShader = manifestShader(manifest, "PrefilterSpecularCS");
+    options.prefilterShader = compiler::manifestShaderOptions(manifest, "PrefilterSpecularCS");
     for (auto* shader : {&options.lutShader, &options.prefilterShader})
         shader->defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
     return options;

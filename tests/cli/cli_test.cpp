@@ -1,5 +1,6 @@
 // `iblkit compile` and `iblkit compile-all` as a user runs them: every output written on
 // success; on bad input one clear message, a non-zero exit, and no file written or damaged.
+#include "read_file.hpp"
 #include "run_process.hpp"
 #include "temp_folder.hpp"
 
@@ -15,13 +16,6 @@ namespace iblkit::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readFile(const fs::path& path) {
-    std::ifstream stream(path, std::ios::binary);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return text.str();
-}
 
 class Cli : public ::testing::Test {
 protected:

@@ -1,6 +1,7 @@
 // glsl/ holds the GLSL, ESSL, MSL and reflection the compiler makes from hlsl/ today;
 // `cmake --build build --target refresh-glsl` rewrites it.
 #include "compiler.hpp"
+#include "read_file.hpp"
 #include "seed_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -13,13 +14,6 @@ namespace iblkit::compiler {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readFile(const fs::path& path) {
-    std::ifstream stream(path, std::ios::binary);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return text.str();
-}
 
 TEST(CommittedForms, GlslFolderMatchesTheCompilersOutput) {
     const std::map<CrossTarget, std::string> extensions = {
@@ -35,7 +29,7 @@ TEST(CommittedForms, GlslFolderMatchesTheCompilersOutput) {
         for (const auto& [path, text] : files) {
             expectedFiles.insert(path);
             ASSERT_TRUE(fs::exists(path)) << path << " is missing; run: cmake --build build --target refresh-glsl";
-            EXPECT_TRUE(readFile(path) == text) << path << " is stale; run: cmake --build build --target refresh-glsl";
+            EXPECT_TRUE(testing::readFile(path) == text) << path << " is stale; run: cmake --build build --target refresh-glsl";
         }
     }
     for (const auto& file : fs::directory_iterator("glsl"))

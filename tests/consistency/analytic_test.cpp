@@ -57,13 +57,10 @@ protected:
 
     static PathProgram seedProgram(const std::string& name, std::map<std::string, std::string> defines,
                                    std::map<std::string, std::string> formats = {}) {
-        for (auto entry : compiler::readShaderManifest("hlsl/shaders.json"))
-            if (entry.name == name) {
-                for (auto& [key, value] : defines) entry.options.defines[key] = value;
-                for (auto& [key, value] : formats) entry.options.imageFormats[key] = value;
-                return compileForPath(ShaderPath::Glslang, entry.options);
-            }
-        throw std::runtime_error(name);
+        auto options = compiler::manifestShaderOptions("hlsl/shaders.json", name);
+        for (auto& [key, value] : defines) options.defines[key] = value;
+        for (auto& [key, value] : formats) options.imageFormats[key] = value;
+        return compileForPath(ShaderPath::Glslang, options);
     }
 
     std::shared_ptr<vulkan::ValidationLog> log = std::make_shared<vulkan::ValidationLog>();

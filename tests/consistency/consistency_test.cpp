@@ -2,6 +2,7 @@
 // bounds measured and explained in docs/consistency.md; deliberately broken shaders do not.
 #include "consistency_suite.hpp"
 #include "shader_paths.hpp"
+#include "read_file.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -55,9 +56,7 @@ protected:
     SuiteOptions broken(const std::string& file, const std::string& faithful, const std::string& brokenText) {
         fs::copy("hlsl", scratch.path() / "hlsl", fs::copy_options::recursive);
         const auto path = scratch.path() / "hlsl" / file;
-        std::stringstream text;
-        text << std::ifstream(path).rdbuf();
-        std::string source = text.str();
+        std::string source = testing::readFile(path);
         const auto at = source.find(faithful);
         EXPECT_NE(at, std::string::npos) << "the faithful text to break is no longer in " << file;
         source.replace(at, faithful.size(), brokenText);
@@ -105,9 +104,7 @@ namespace {
 // docs/consistency.md is the output of the command it names, committed; the numbers depend on
 // the machine, the shape does not.
 TEST(CommittedReport, IsTheCommandsOutputWithEveryPathWithinItsBounds) {
-    std::stringstream text;
-    text << std::ifstream("docs/consistency.md").rdbuf();
-    const std::string report = text.str();
+    const std::string report = testing::readFile("docs/consistency.md");
     ASSERT_FALSE(report.empty()) << "docs/consistency.md is missing; run: iblkit consistency --out docs/consistency.md";
     EXPECT_NE(report.find("Made by `iblkit consistency --out docs/consistency.md`"), std::string::npos);
     for (const char* output : {"| LUT 512² |", "| LUT 32² |", "| prefilter 32² r=0 |", "| prefilter 32² r=0.25 |",

@@ -1,4 +1,5 @@
 #include "atomic_output.hpp"
+#include "read_file.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -15,12 +16,6 @@ namespace {
 class AtomicOutputTest : public ::testing::Test {
 protected:
 
-    static std::string read(const fs::path& path) {
-        std::ifstream stream(path, std::ios::binary);
-        std::ostringstream text;
-        text << stream.rdbuf();
-        return text.str();
-    }
     size_t entriesInFolder() const { return std::distance(fs::directory_iterator(folder), fs::directory_iterator()); }
 
     iblkit::testing::TempFolder scratch;
@@ -32,8 +27,8 @@ TEST_F(AtomicOutputTest, CommitWritesEveryFile) {
     output.add(folder / "a.txt", "alpha");
     output.add(folder / "b.txt", "beta");
     output.commit();
-    EXPECT_EQ(read(folder / "a.txt"), "alpha");
-    EXPECT_EQ(read(folder / "b.txt"), "beta");
+    EXPECT_EQ(iblkit::testing::readFile(folder / "a.txt"), "alpha");
+    EXPECT_EQ(iblkit::testing::readFile(folder / "b.txt"), "beta");
     EXPECT_EQ(entriesInFolder(), 2u) << "no temporary may be left behind";
 }
 
@@ -52,7 +47,7 @@ TEST_F(AtomicOutputTest, AFailedAddKeepsExistingFilesAndLeavesNoTemporaries) {
     AtomicOutput output;
     output.add(folder / "good.spv", "NEW");
     EXPECT_THROW(output.add(folder / "missing" / "x.txt", "x"), FileError);
-    EXPECT_EQ(read(folder / "good.spv"), "GOOD");
+    EXPECT_EQ(iblkit::testing::readFile(folder / "good.spv"), "GOOD");
     EXPECT_EQ(entriesInFolder(), 1u);
 }
 

@@ -85,9 +85,7 @@ void main(uint3 id : SV_DispatchThreadID) {
 // environment along its own direction for the texel: with the identity cube each output texel
 // must name itself. A swapped or mirrored face in the shader's table fails here.
 TEST_F(CubeOrientation, ThePrefilterShaderAtRoughnessZeroFindsEachTexelItself) {
-    compiler::CompileOptions options;
-    for (const auto& entry : compiler::readShaderManifest("hlsl/shaders.json"))
-        if (entry.name == "PrefilterSpecularCS") options = entry.options;
+    auto options = compiler::manifestShaderOptions("hlsl/shaders.json", "PrefilterSpecularCS");
     options.defines["SAMPLE_COUNT"] = "4";
     const auto shader = compiler::compileShader(options);
     auto env = identityCube(context());

@@ -17,12 +17,9 @@ namespace {
 class RuntimeErrors : public testing::VulkanTest {
 protected:
     ComputeProgram lutProgram() {
-        for (const auto& entry : compiler::readShaderManifest("hlsl/shaders.json"))
-            if (entry.name == "PrecomputedBrdfCS") {
-                auto options = entry.options;
-                options.defines["SAMPLE_COUNT"] = "1";
-                lut_ = compiler::compileShader(options);
-            }
+        auto options = compiler::manifestShaderOptions("hlsl/shaders.json", "PrecomputedBrdfCS");
+        options.defines["SAMPLE_COUNT"] = "1";
+        lut_ = compiler::compileShader(options);
         return ComputeProgram(context(), lut_.spirv, lut_.reflection);
     }
     Image lutImage(const char* format, bool storage = true) {

@@ -10,9 +10,7 @@ namespace iblkit::vulkan {
 namespace {
 
 compiler::CompiledShader seed(const std::string& name) {
-    for (const auto& entry : compiler::readShaderManifest("hlsl/shaders.json"))
-        if (entry.name == name) return compiler::compileShader(entry.options);
-    throw std::runtime_error(name + " missing");
+    return compiler::compileShader(compiler::manifestShaderOptions("hlsl/shaders.json", name));
 }
 
 class SeedRun : public testing::VulkanTest {};
