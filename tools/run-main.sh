@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The main job on its built-in default: every shader of hlsl/ compiled into every form
-# (SPIR-V, GLSL 450, ESSL 310, MSL, HLSL, reflection JSON) in build/out/shaders.
+# The main job on its built-in default: bake the built-in environment (a sky with a bright sun
+# and a checkered ground) into build/out/bake: specular.ktx2, brdf_lut.ktx2, irradiance.ktx2,
+# manifest.json and preview.png.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
-build/tools/iblkit/iblkit compile-all hlsl/shaders.json -o build/out/shaders
-echo "iblkit: outputs in build/out/shaders" >&2
+build/tools/iblkit/iblkit bake -o build/out/bake "$@"

@@ -63,7 +63,7 @@ struct ConfiguredShader {
 
 ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
     if (options.stage) return *options.stage;
-    IncludeResolver includes(options.includeDirs);
+    IncludeResolver includes(options.includeDirs, &options.virtualFiles);
     includes.addSource(sourceName, text);
     ConfiguredShader configured(EShLangCompute, options, sourceName, text);
     std::string preprocessed;
@@ -95,7 +95,7 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     const ShaderStage stage = stageOf(options, sourceName, text);
     const EShLanguage language = toGlslang(stage);
 
-    IncludeResolver includes(options.includeDirs);
+    IncludeResolver includes(options.includeDirs, &options.virtualFiles);
     includes.addSource(sourceName, text);
     ConfiguredShader configured(language, options, sourceName, text);
     if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes))

@@ -27,8 +27,9 @@ int lineOfInclude(const std::string& includerText, const std::string& headerName
 
 } // namespace
 
-IncludeResolver::IncludeResolver(std::vector<std::filesystem::path> includeDirs)
-    : includeDirs_(std::move(includeDirs)) {}
+IncludeResolver::IncludeResolver(std::vector<std::filesystem::path> includeDirs,
+                                 const std::map<std::string, std::string>* virtualFiles)
+    : includeDirs_(std::move(includeDirs)), virtualFiles_(virtualFiles) {}
 
 void IncludeResolver::addSource(const std::string& name, std::string text) { texts_[name] = std::move(text); }
 
@@ -56,12 +57,20 @@ IncludeResolver::IncludeResult* IncludeResolver::includeSystem(const char* heade
     return nullptr;
 }
 
+bool IncludeResolver::readVirtualFile(const std::string& name, std::string& text) const {
+    if (!virtualFiles_) return false;
+    const auto found = virtualFiles_->find(name);
+    if (found == virtualFiles_->end()) return false;
+    text = found->second;
+    return true;
+}
+
 IncludeResolver::IncludeResult* IncludeResolver::load(const std::filesystem::path& path, const std::string& headerName,
                                                       const char* includerName) {
     const std::string name = path.lexically_normal().string();
     std::string text;
     if (!texts_.count(name)) {
-        if (!readFile(path, text)) return nullptr;
+        if (!readVirtualFile(name, text) && !readFile(path, text)) return nullptr;
         texts_[name] = std::move(text);
         includedFiles_.push_back(name);
     }

@@ -20,7 +20,8 @@ struct IncludeSite {
 // (#include <x> against the -I folders only), and remembers every file it read.
 class IncludeResolver : public glslang::TShader::Includer {
 public:
-    explicit IncludeResolver(std::vector<std::filesystem::path> includeDirs);
+    explicit IncludeResolver(std::vector<std::filesystem::path> includeDirs,
+                             const std::map<std::string, std::string>* virtualFiles = nullptr);
 
     void addSource(const std::string& name, std::string text); // the top-level file
     IncludeResult* includeLocal(const char* headerName, const char* includerName, size_t depth) override;
@@ -32,9 +33,11 @@ public:
     const IncludeSite* includeSite(const std::string& name) const;
 
 private:
+    bool readVirtualFile(const std::string& name, std::string& text) const;
     IncludeResult* load(const std::filesystem::path& path, const std::string& headerName, const char* includerName);
 
     std::vector<std::filesystem::path> includeDirs_;
+    const std::map<std::string, std::string>* virtualFiles_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, IncludeSite> sites_;
     std::vector<std::string> includedFiles_;

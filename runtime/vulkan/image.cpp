@@ -171,6 +171,27 @@ std::vector<std::byte> Image::downloadBytes(const VulkanContext& context) const 
     return staging.read();
 }
 
+void Image::copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip) {
+    if (source.desc().format != desc_.format || mip >= desc_.mips || mip >= source.desc().mips ||
+        source.mipWidth(mip) != mipWidth(mip) || source.mipHeight(mip) != mipHeight(mip) ||
+        source.desc().layers != desc_.layers)
+        throw VulkanError("image '" + desc_.name + "': mip " + std::to_string(mip) + " of '" + source.desc().name +
+                          "' differs in format, size or layers");
+    const vk::ImageSubresourceLayers layers(vk::ImageAspectFlagBits::eColor, mip, 0, desc_.layers);
+    const vk::ImageCopy region(layers, {}, layers, {}, vk::Extent3D(mipWidth(mip), mipHeight(mip), 1));
+    const LayoutUse reading{vk::ImageLayout::eTransferSrcOptimal, vk::AccessFlagBits::eTransferRead,
+                            vk::PipelineStageFlagBits::eTransfer};
+    const LayoutUse writing{vk::ImageLayout::eTransferDstOptimal, vk::AccessFlagBits::eTransferWrite,
+                            vk::PipelineStageFlagBits::eTransfer};
+    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
+        transition(commands, source, kResting, reading);
+        transition(commands, *this, kResting, writing);
+        commands.copyImage(source.handle(), reading.layout, *image_, writing.layout, region);
+        transition(commands, source, reading, kResting);
+        transition(commands, *this, writing, kResting);
+    });
+}
+
 std::vector<float> Image::download(const VulkanContext& context) const {
     const auto bytes = downloadBytes(context);
     std::vector<float> values(valueCount());

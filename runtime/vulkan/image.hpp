@@ -46,6 +46,9 @@ public:
     void upload(const VulkanContext& context, std::span<const float> values);
     void uploadBytes(const VulkanContext& context, std::span<const std::byte> bytes);
     std::vector<float> download(const VulkanContext& context) const;
+    // Copies every layer of one mip of `source`, which must have this image's format and
+    // that mip's size, into the same mip of this image.
+    void copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip);
     std::vector<std::byte> downloadBytes(const VulkanContext& context) const;
 
 private:

@@ -1,6 +1,9 @@
 #include "run_process.hpp"
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <fcntl.h>
 #include <fstream>
@@ -25,7 +28,8 @@ std::string slurpAndRemove(const std::string& path) {
 
 } // namespace
 
-ProcessResult runProcess(const std::vector<std::string>& command, const std::vector<std::string>& environment) {
+ProcessResult runProcess(const std::vector<std::string>& command, const std::vector<std::string>& environment,
+                         double killAfterSeconds) {
     const auto folder = std::filesystem::temp_directory_path().string();
     std::string outPath = folder + "/iblkit-out-XXXXXX";
     std::string errPath = folder + "/iblkit-err-XXXXXX";
@@ -50,7 +54,19 @@ ProcessResult runProcess(const std::vector<std::string>& command, const std::vec
     close(errFd);
     if (spawned != 0) throw std::runtime_error("cannot start " + command.front());
     int status = 0;
-    waitpid(pid, &status, 0);
+    if (killAfterSeconds > 0) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(killAfterSeconds);
+        while (waitpid(pid, &status, WNOHANG) == 0) {
+            if (std::chrono::steady_clock::now() >= deadline) {
+                kill(pid, SIGKILL);
+                waitpid(pid, &status, 0);
+                break;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    } else {
+        waitpid(pid, &status, 0);
+    }
     return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurpAndRemove(outPath),
             slurpAndRemove(errPath)};
 }

@@ -1,3 +1,4 @@
+#include "bake_command.hpp"
 #include "command_line.hpp"
 #include "compile_all_command.hpp"
 #include "compile_command.hpp"
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addDevicesCommand(app);
     iblkit::cli::addRunCommand(app);
     iblkit::cli::addConsistencyCommand(app);
+    iblkit::cli::addBakeCommand(app);
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {

@@ -1,0 +1,130 @@
+#include "bake.hpp"
+
+#include "bake_directory.hpp"
+#include "bake_error.hpp"
+#include "bake_manifest.hpp"
+#include "environment_input.hpp"
+#include "float_image.hpp"
+#include "gpu_steps.hpp"
+#include "sha256.hpp"
+#include "vulkan_context.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <unistd.h>
+
+namespace iblkit::bake {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double cubeChainBytes(uint32_t size) { return 6.0 * size * size * 16 * 4 / 3; }
+
+std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e9); }
+
+// Refuses sizes whose images would not fit, before any of them is made.
+void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
+                 uint32_t size) {
+    const double panorama = double(input.panorama.width) * input.panorama.height * 16;
+    const double device = 2 * cubeChainBytes(size) + panorama + double(settings.lutSize) * settings.lutSize * 8 +
+                          6.0 * settings.irradianceSize * settings.irradianceSize * 16;
+    // The host holds each image as floats while it downloads and encodes it.
+    const double host = device + 2 * cubeChainBytes(size);
+    const double heap = double(context.largestHeapSize());
+    const double ram = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (device > heap)
+        throw BakeError(fmt::format("this bake needs about {} of device memory; the device's largest heap is {} "
+                                    "(lower --size or --lut-size)", gigabytes(device), gigabytes(heap)));
+    if (host > ram)
+        throw BakeError(fmt::format("this bake needs about {} of memory; the machine has {} (lower --size or --lut-size)",
+                                    gigabytes(host), gigabytes(ram)));
+}
+
+// Exposure that maps the environment's mean luminance to 0.4 before the filmic curve.
+float previewExposure(const Irradiance& irradiance) {
+    const glm::dvec3 mean = irradiance.shRadiance[0] * 0.282094791773878;
+    const double luminance = 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+    return luminance > 0 ? float(0.4 / luminance) : 1.f;
+}
+
+std::vector<uint8_t> toRgba8(const std::vector<float>& rgba) {
+    std::vector<uint8_t> bytes(rgba.size());
+    std::transform(rgba.begin(), rgba.end(), bytes.begin(),
+                   [](float v) { return uint8_t(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); });
+    return bytes;
+}
+
+void checkFiniteOutput(const std::string& name, const std::vector<float>& values) {
+    const auto bad = std::count_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+    if (bad > 0) throw BakeError(fmt::format("internal error: {} has {} NaN/Inf values", name, bad));
+}
+
+BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image& image, const std::string& name,
+                      image_io::PixelFormat format) {
+    auto values = image.download(context);
+    checkFiniteOutput(name, values);
+    if (image.desc().format->channels != image_io::channelCount(format))
+        throw BakeError("internal error: " + name + " has the wrong channel count");
+    return {name, format, image.desc().width, image.desc().layers, image.desc().mips, std::move(values)};
+}
+
+} // namespace
+
+uint32_t builtInPanoramaWidth(uint32_t size) { return std::clamp(8 * size, 64u, 4096u); }
+
+BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
+    const auto started = Clock::now();
+    validateSettings(settings);
+    BakeDirectory directory(settings.outputDir);
+
+    progress.begin("load");
+    const auto input = loadEnvironment(settings.environment, settings.sanitize,
+                                       builtInPanoramaWidth(settings.size.value_or(kDefaultSize)));
+    const uint32_t size = resolvedSize(settings, input.cubeSize);
+    if (!std::has_single_bit(size))
+        throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));
+    const uint32_t mips = resolvedMips(settings, size);
+    const vulkan::VulkanContext context(settings.context);
+    checkMemory(context, settings, input, size);
+    progress.end();
+
+    auto source = buildSourceCube(context, input, size, progress);
+    auto specular = prefilterSpecular(context, source, mips, settings.samples, progress);
+    auto lut = integrateBrdfLut(context, settings.lutSize, settings.lutSamples, progress);
+    auto irradiance = computeIrradiance(context, source, settings.irradianceSize, progress);
+    const float exposure = previewExposure(irradiance);
+    const auto preview = renderPreview(context, specular, irradiance.cube, lut, exposure, progress);
+
+    progress.begin("write");
+    const auto lutFormat =
+        settings.lutFormat == LutFormat::Rg16Float ? image_io::PixelFormat::Rg16Float : image_io::PixelFormat::Rg32Float;
+    std::vector<BakedTexture> textures{download(context, specular, "specular", image_io::PixelFormat::Rgba16Float),
+                                       download(context, lut, "brdf_lut", lutFormat),
+                                       download(context, irradiance.cube, "irradiance", image_io::PixelFormat::Rgba16Float)};
+    size_t clamped = 0;
+    for (auto& texture : textures) clamped += applyHalfRangePolicy(texture, settings.clampHalf);
+    const std::string writer = "iblkit " + toolVersion;
+    std::vector<WrittenFile> files;
+    for (const auto& texture : textures)
+        for (auto& file : writeTexture(directory.staging(), texture, settings, writer)) files.push_back(std::move(file));
+    const auto png = directory.staging() / "preview.png";
+    image_io::writePng(png, preview.width, preview.height, toRgba8(preview.rgba));
+    files.push_back({"preview.png", sha256OfFile(png), size_t(std::filesystem::file_size(png))});
+
+    auto manifest = bakeManifest({toolVersion, context.deviceInfo().name, &input, &settings, size, mips, &irradiance,
+                                  clamped, exposure});
+    manifest["files"] = filesJson(files);
+    const std::string manifestText = manifest.dump(2) + "\n";
+    files.push_back(writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText))));
+    directory.commit();
+    progress.end();
+
+    const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
+    return {settings.outputDir, context.deviceInfo().name, progress.steps(), wall, files, manifest};
+}
+
+} // namespace iblkit::bake

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "bake_outputs.hpp"
+#include "bake_progress.hpp"
+#include "bake_settings.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace iblkit::bake {
+
+struct BakeSummary {
+    std::filesystem::path outputDir;
+    std::string device;
+    std::vector<StepTiming> steps;
+    double wallMilliseconds;
+    std::vector<WrittenFile> files;
+    nlohmann::json manifest;
+};
+
+// Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,
+// irradiance.ktx2, preview.png and manifest.json (and .dds / exr/ when asked), all or nothing.
+// Throws BakeError, image_io::ImageError, compiler::CompileError or vulkan::VulkanError.
+BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress);
+
+// The width of the built-in environment's panorama for a cube of `size`: two panorama texels
+// per cube texel across, so its small sun is resolved.
+uint32_t builtInPanoramaWidth(uint32_t size);
+
+} // namespace iblkit::bake

@@ -1,0 +1,106 @@
+#include "bake_manifest.hpp"
+
+namespace iblkit::bake {
+namespace {
+
+using nlohmann::json;
+
+json coefficientsJson(const std::array<glm::dvec3, 9>& coefficients) {
+    json list = json::array();
+    for (const auto& c : coefficients) list.push_back({c.r, c.g, c.b});
+    return list;
+}
+
+json inputJson(const EnvironmentInput& input) {
+    json files = json::array();
+    for (const auto& file : input.files) files.push_back({{"path", file.path.string()}, {"sha256", file.sha256}});
+    json result = {{"kind", inputKindName(input.kind)}, {"files", files}};
+    if (input.kind == InputKind::BuiltIn || input.kind == InputKind::Panorama)
+        result["panorama"] = {input.panorama.width, input.panorama.height};
+    else
+        result["cube_size"] = input.cubeSize;
+    result["sanitized_texels"] = input.sanitizedTexels;
+    return result;
+}
+
+json settingsJson(const ManifestFacts& facts) {
+    const auto& s = *facts.settings;
+    return {{"size", facts.size},
+            {"mips", facts.mips},
+            {"samples", s.samples},
+            {"lut_size", s.lutSize},
+            {"lut_samples", s.lutSamples},
+            {"lut_format", s.lutFormat == LutFormat::Rg16Float ? "rg16f" : "rg32f"},
+            {"irradiance_size", s.irradianceSize},
+            {"dds", s.dds},
+            {"exr", s.exr},
+            {"sanitize", s.sanitize},
+            {"clamp_half", s.clampHalf}};
+}
+
+json specularJson(const ManifestFacts& facts) {
+    json roughness = json::array();
+    for (uint32_t mip = 0; mip < facts.mips; ++mip) roughness.push_back(roughnessOfMip(mip, facts.mips));
+    return {{"file", "specular.ktx2"},
+            {"format", "R16G16B16A16_SFLOAT"},
+            {"size", facts.size},
+            {"mips", facts.mips},
+            {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
+            {"roughness", roughness},
+            {"samples", facts.settings->samples},
+            {"shader", "hlsl/PrefilterSpecularCS.hlsl"}};
+}
+
+json irradianceJson(const ManifestFacts& facts) {
+    const auto& irradiance = *facts.irradiance;
+    return {{"file", "irradiance.ktx2"},
+            {"format", "R16G16B16A16_SFLOAT"},
+            {"size", facts.settings->irradianceSize},
+            {"texel", "E(n) / pi: multiply by albedo for Lambertian diffuse"},
+            {"source_mip_size", irradiance.cubeSourceSize},
+            {"shader", "hlsl/IrradianceCubeCS.hlsl"},
+            {"sh",
+             {{"basis", "real spherical harmonics l <= 2 in the order (0,0) (1,-1) (1,0) (1,1) (2,-2) (2,-1) (2,0) "
+                        "(2,1) (2,2); Y_1-1 ~ y, Y_10 ~ z, Y_11 ~ x (hlsl/Common/SphericalHarmonics.fxh)"},
+              {"radiance", coefficientsJson(irradiance.shRadiance)},
+              {"irradiance_over_pi", coefficientsJson(irradianceCoefficients(irradiance.shRadiance))},
+              {"source_mip_size", irradiance.shSourceSize},
+              {"shader", "hlsl/ShProjectCS.hlsl"}}}};
+}
+
+} // namespace
+
+std::array<glm::dvec3, 9> irradianceCoefficients(const std::array<glm::dvec3, 9>& radiance) {
+    std::array<glm::dvec3, 9> result;
+    for (size_t k = 0; k < 9; ++k) result[k] = radiance[k] * (k == 0 ? 1.0 : k < 4 ? 2.0 / 3.0 : 0.25);
+    return result;
+}
+
+json bakeManifest(const ManifestFacts& facts) {
+    const auto& s = *facts.settings;
+    return {{"generator", "iblkit"},
+            {"version", facts.toolVersion},
+            {"manifest_format", 1},
+            {"device", facts.device},
+            {"input", inputJson(*facts.input)},
+            {"settings", settingsJson(facts)},
+            {"specular", specularJson(facts)},
+            {"brdf_lut",
+             {{"file", "brdf_lut.ktx2"},
+              {"format", s.lutFormat == LutFormat::Rg16Float ? "R16G16_SFLOAT" : "R32G32_SFLOAT"},
+              {"size", s.lutSize},
+              {"samples", s.lutSamples},
+              {"axes", "u = N.V, v = roughness, at texel centres; texel = (scale, bias) of F0"},
+              {"shader", "hlsl/PrecomputedBrdfCS.hlsl"}}},
+            {"irradiance", irradianceJson(facts)},
+            {"half_range", {{"policy", s.clampHalf ? "clamp to 65504" : "refuse"}, {"clamped_values", facts.clampedValues}}},
+            {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
+}
+
+json filesJson(const std::vector<WrittenFile>& files) {
+    json list = json::array();
+    for (const auto& file : files) list.push_back({{"name", file.name}, {"sha256", file.sha256}, {"bytes", file.bytes}});
+    return list;
+}
+
+} // namespace iblkit::bake

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "bake_outputs.hpp"
+#include "bake_settings.hpp"
+#include "environment_input.hpp"
+#include "gpu_steps.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace iblkit::bake {
+
+struct ManifestFacts {
+    std::string toolVersion;
+    std::string device;
+    const EnvironmentInput* input;
+    const BakeSettings* settings;
+    uint32_t size;
+    uint32_t mips;
+    const Irradiance* irradiance;
+    size_t clampedValues;
+    float previewExposure;
+};
+
+// manifest.json without its "files" list (added once every file is written).
+nlohmann::json bakeManifest(const ManifestFacts& facts);
+nlohmann::json filesJson(const std::vector<WrittenFile>& files);
+
+// Irradiance coefficients from radiance ones: E(n) / pi = sum c_lm Y_lm(n) with c_lm = A_l / pi
+// L_lm and A = (pi, 2 pi / 3, pi / 4) per band (Ramamoorthi and Hanrahan 2001).
+std::array<glm::dvec3, 9> irradianceCoefficients(const std::array<glm::dvec3, 9>& radiance);
+
+} // namespace iblkit::bake

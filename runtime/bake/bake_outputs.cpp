@@ -1,0 +1,104 @@
+#include "bake_outputs.hpp"
+
+#include "bake_error.hpp"
+#include "dds.hpp"
+#include "float_image.hpp"
+#include "ktx2.hpp"
+#include "sha256.hpp"
+#include "texel_checks.hpp"
+
+#include <fmt/core.h>
+
+#include <array>
+#include <fstream>
+
+namespace iblkit::bake {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<const char*, 6> kFaceNames = {"px", "nx", "py", "ny", "pz", "nz"};
+
+uint32_t mipSize(const BakedTexture& texture, uint32_t mip) { return std::max(1u, texture.size >> mip); }
+
+size_t levelOffset(const BakedTexture& texture, uint32_t mip) {
+    size_t offset = 0;
+    for (uint32_t level = 0; level < mip; ++level) offset += size_t(mipSize(texture, level)) * mipSize(texture, level);
+    return offset * texture.faces * image_io::channelCount(texture.format);
+}
+
+std::string locate(const BakedTexture& texture, size_t valueIndex) {
+    const uint32_t channels = image_io::channelCount(texture.format);
+    uint32_t mip = 0;
+    while (mip + 1 < texture.mips && levelOffset(texture, mip + 1) <= valueIndex) ++mip;
+    const size_t texel = (valueIndex - levelOffset(texture, mip)) / channels, size = mipSize(texture, mip);
+    return fmt::format("mip {}, face {}, row {}, column {}", mip, kFaceNames[texel / (size * size)], texel / size % size,
+                       texel % size);
+}
+
+void writeFile(const fs::path& path, std::span<const std::byte> bytes) {
+    std::ofstream stream(path, std::ios::binary);
+    stream.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    if (!stream.flush()) throw BakeError("cannot write '" + path.string() + "'");
+}
+
+WrittenFile describe(const fs::path& folder, const std::string& name) {
+    std::error_code error;
+    const auto bytes = fs::file_size(folder / name, error);
+    return {name, sha256OfFile(folder / name), size_t(bytes)};
+}
+
+std::vector<WrittenFile> writeExrFaces(const fs::path& folder, const BakedTexture& texture) {
+    fs::create_directories(folder / "exr");
+    const uint32_t channels = image_io::channelCount(texture.format);
+    std::vector<WrittenFile> written;
+    for (uint32_t mip = 0; mip < texture.mips; ++mip)
+        for (uint32_t face = 0; face < texture.faces; ++face) {
+            const uint32_t size = mipSize(texture, mip);
+            image_io::FloatImage image{size, size, channels == 2 ? 3u : channels, {}};
+            const float* start = texture.values.data() + levelOffset(texture, mip) + size_t(face) * size * size * channels;
+            for (size_t texel = 0; texel < size_t(size) * size; ++texel) {
+                image.values.insert(image.values.end(), start + texel * channels, start + (texel + 1) * channels);
+                if (channels == 2) image.values.push_back(0.f); // EXR has no two-channel RGB layout: blue is 0
+            }
+            std::string name = "exr/" + texture.name;
+            if (texture.mips > 1) name += "_mip" + std::to_string(mip);
+            if (texture.faces == 6) name += std::string("_") + kFaceNames[face];
+            name += ".exr";
+            image_io::writeExr(folder / name, image);
+            written.push_back(describe(folder, name));
+        }
+    return written;
+}
+
+} // namespace
+
+size_t applyHalfRangePolicy(BakedTexture& texture, bool clamp) {
+    if (image_io::bytesPerChannel(texture.format) != 2) return 0;
+    const auto overflow = findHalfOverflow(texture.values);
+    if (overflow.count == 0) return 0;
+    if (!clamp)
+        throw BakeError(fmt::format("{}: {} values exceed the 16-bit float range (largest {:g}, the first at {}); "
+                                    "bake with --clamp-half to clamp them to 65504",
+                                    texture.name, overflow.count, overflow.largest, locate(texture, overflow.firstValue)));
+    clampToHalfRange(texture.values);
+    return overflow.count;
+}
+
+WrittenFile writeBytes(const fs::path& folder, const std::string& name, std::span<const std::byte> bytes) {
+    writeFile(folder / name, bytes);
+    return {name, sha256Hex(bytes), bytes.size()};
+}
+
+std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture& texture, const BakeSettings& settings,
+                                      const std::string& writer) {
+    const auto gpuTexture =
+        image_io::makeTexture(texture.format, texture.size, texture.size, texture.faces, texture.mips, texture.values);
+    std::vector<WrittenFile> written{writeBytes(folder, texture.name + ".ktx2", image_io::encodeKtx2(gpuTexture, writer))};
+    if (settings.dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));
+    if (settings.exr)
+        for (auto& file : writeExrFaces(folder, texture)) written.push_back(std::move(file));
+    return written;
+}
+
+} // namespace iblkit::bake

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "bake_settings.hpp"
+#include "texture.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace iblkit::bake {
+
+struct WrittenFile {
+    std::string name; // relative to the bake folder
+    std::string sha256;
+    size_t bytes;
+};
+
+// A baked texture as floats (order mip, face, row, column, channel) on its way to the files.
+struct BakedTexture {
+    std::string name; // "specular": specular.ktx2, specular.dds, exr/specular_mip0_px.exr ...
+    image_io::PixelFormat format; // of the KTX2 and DDS files; EXR files keep 32-bit floats
+    uint32_t size;
+    uint32_t faces;
+    uint32_t mips;
+    std::vector<float> values; // channelCount(format) per texel
+};
+
+// Values beyond half range in a 16-bit texture: refused (BakeError naming the texture, the
+// count, the largest and where the first is) unless clamp, which clamps them to 65504.
+// Returns how many were clamped.
+size_t applyHalfRangePolicy(BakedTexture& texture, bool clamp);
+
+// Writes name.ktx2, with --dds name.dds, with --exr every face and mip under exr/.
+std::vector<WrittenFile> writeTexture(const std::filesystem::path& folder, const BakedTexture& texture,
+                                      const BakeSettings& settings, const std::string& writer);
+
+WrittenFile writeBytes(const std::filesystem::path& folder, const std::string& name, std::span<const std::byte> bytes);
+
+} // namespace iblkit::bake

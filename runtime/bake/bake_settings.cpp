@@ -1,0 +1,61 @@
+#include "bake_settings.hpp"
+
+#include "bake_error.hpp"
+
+#include <bit>
+#include <string>
+
+namespace iblkit::bake {
+namespace {
+
+void requireRange(const char* name, uint32_t value, uint32_t low, uint32_t high) {
+    if (value < low || value > high)
+        throw BakeError(std::string(name) + " " + std::to_string(value) + " is out of range (" + std::to_string(low) +
+                        " to " + std::to_string(high) + ")");
+}
+
+void requirePowerOfTwo(const char* name, uint32_t value) {
+    if (!std::has_single_bit(value))
+        throw BakeError(std::string(name) + " " + std::to_string(value) +
+                        " is not a power of two (each mip must halve the one above it exactly)");
+}
+
+} // namespace
+
+uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize) {
+    if (inputCubeSize == 0) return settings.size.value_or(kDefaultSize);
+    if (settings.size && *settings.size != inputCubeSize)
+        throw BakeError("the input cube's faces are " + std::to_string(inputCubeSize) + "x" +
+                        std::to_string(inputCubeSize) + "; --size " + std::to_string(*settings.size) +
+                        " must match them or be left out");
+    return inputCubeSize;
+}
+
+uint32_t resolvedMips(const BakeSettings& settings, uint32_t size) {
+    const uint32_t fullChain = static_cast<uint32_t>(std::bit_width(size));
+    if (settings.mips) {
+        requireRange("--mips", *settings.mips, 1, fullChain);
+        return *settings.mips;
+    }
+    const uint32_t floor = std::min(size, kSpecularFloor);
+    return fullChain - static_cast<uint32_t>(std::bit_width(floor)) + 1;
+}
+
+void validateSettings(const BakeSettings& settings) {
+    if (settings.size) {
+        requireRange("--size", *settings.size, 1, kMaxCubeSize);
+        requirePowerOfTwo("--size", *settings.size);
+    }
+    requireRange("--samples", settings.samples, 1, kMaxSamples);
+    requireRange("--lut-samples", settings.lutSamples, 1, kMaxSamples);
+    requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
+    requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
+    if (settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
+    if (settings.size) resolvedMips(settings, *settings.size); // the chain of an input cube is checked once it is read
+}
+
+float roughnessOfMip(uint32_t mip, uint32_t mips) {
+    return mips > 1 ? float(mip) / float(mips - 1) : 0.f;
+}
+
+} // namespace iblkit::bake

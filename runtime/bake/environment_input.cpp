@@ -1,0 +1,122 @@
+#include "environment_input.hpp"
+
+#include "bake_error.hpp"
+#include "default_environment.hpp"
+#include "files.hpp"
+#include "image_error.hpp"
+#include "sha256.hpp"
+#include "texel_checks.hpp"
+#include "texture.hpp"
+
+#include <fmt/core.h>
+
+#include <array>
+
+namespace iblkit::bake {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+// Refuses NaN/Inf texels, or with `sanitize` sets them to 0; returns how many were set.
+size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, const std::string& name, bool sanitize) {
+    const auto found = findNonFiniteTexels(values, channels);
+    if (found.count == 0) return 0;
+    if (!sanitize)
+        throw BakeError(fmt::format("{} has {} NaN/Inf texel{} (the first at column {}, row {}: {}); "
+                                    "bake with --sanitize to replace them by 0",
+                                    name, found.count, found.count == 1 ? "" : "s", found.firstTexel % width,
+                                    found.firstTexel / width, found.firstValue));
+    return replaceNonFiniteTexels(values, channels);
+}
+
+std::vector<float> toRgba(const image_io::FloatImage& image) {
+    if (image.channels == 4) return image.values;
+    std::vector<float> rgba;
+    rgba.reserve(size_t(image.width) * image.height * 4);
+    for (size_t texel = 0; texel < size_t(image.width) * image.height; ++texel) {
+        const float* at = &image.values[texel * image.channels];
+        rgba.insert(rgba.end(), {at[0], at[1], at[2], 1.f});
+    }
+    return rgba;
+}
+
+EnvironmentInput loadPanorama(const fs::path& path, bool sanitize) {
+    EnvironmentInput input{InputKind::Panorama, {{path, sha256OfFile(path)}}, image_io::readFloatImage(path), 0, {}, 0};
+    auto& image = input.panorama;
+    if (image.width != 2 * image.height)
+        throw BakeError(fmt::format("{} is {}x{}; an equirectangular panorama must be twice as wide as it is high",
+                                    quoted(path), image.width, image.height));
+    input.sanitizedTexels = checkFinite(image.values, image.channels, image.width, quoted(path), sanitize);
+    return input;
+}
+
+fs::path findFace(const fs::path& folder, int face) {
+    static const std::array<std::array<const char*, 2>, 6> kNames = {
+        {{"px", "posx"}, {"nx", "negx"}, {"py", "posy"}, {"ny", "negy"}, {"pz", "posz"}, {"nz", "negz"}}};
+    for (const char* name : kNames[face])
+        for (const char* extension : {".hdr", ".exr"})
+            if (fs::exists(folder / (std::string(name) + extension))) return folder / (std::string(name) + extension);
+    throw BakeError(fmt::format("{} has no {} face ({}.hdr, {}.exr, {}.hdr or {}.exr)", quoted(folder),
+                                std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], kNames[face][0], kNames[face][0],
+                                kNames[face][1], kNames[face][1]));
+}
+
+EnvironmentInput loadFaces(const fs::path& folder, bool sanitize) {
+    EnvironmentInput input{InputKind::Faces, {}, {}, 0, {}, 0};
+    for (int face = 0; face < 6; ++face) {
+        const auto path = findFace(folder, face);
+        auto image = image_io::readFloatImage(path);
+        if (image.width != image.height)
+            throw BakeError(fmt::format("{} is {}x{}; a cube face must be square", quoted(path), image.width, image.height));
+        if (face == 0) input.cubeSize = image.width;
+        if (image.width != input.cubeSize)
+            throw BakeError(fmt::format("{} is {}x{}; the +X face is {}x{}", quoted(path), image.width, image.height,
+                                        input.cubeSize, input.cubeSize));
+        input.sanitizedTexels += checkFinite(image.values, image.channels, image.width, quoted(path), sanitize);
+        const auto rgba = toRgba(image);
+        input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
+        input.files.push_back({path, sha256OfFile(path)});
+    }
+    return input;
+}
+
+EnvironmentInput loadCubeFile(const fs::path& path, bool sanitize) {
+    const auto texture = image_io::readTextureFile(path);
+    if (texture.faces != 6) throw BakeError(quoted(path) + " is a 2D texture, not a cube");
+    if (texture.width != texture.height) throw BakeError(quoted(path) + " has faces that are not square");
+    if (image_io::channelCount(texture.format) != 4)
+        throw BakeError(fmt::format("{} is {}; an environment cube needs RGBA texels", quoted(path),
+                                    image_io::vulkanFormatName(texture.format)));
+    auto values = image_io::textureValues(texture);
+    values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
+    EnvironmentInput input{InputKind::Cube, {{path, sha256OfFile(path)}}, {}, texture.width, std::move(values), 0};
+    input.sanitizedTexels = checkFinite(input.cubeTexels, 4, texture.width, quoted(path), sanitize);
+    return input;
+}
+
+} // namespace
+
+std::string_view inputKindName(InputKind kind) {
+    switch (kind) {
+    case InputKind::BuiltIn: return "built-in";
+    case InputKind::Panorama: return "equirectangular";
+    case InputKind::Faces: return "faces";
+    case InputKind::Cube: return "cube";
+    }
+    return "?";
+}
+
+EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, bool sanitize, uint32_t builtInWidth) {
+    if (!path) return {InputKind::BuiltIn, {}, defaultEnvironmentPanorama(builtInWidth), 0, {}, 0};
+    std::error_code error;
+    if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
+    if (fs::is_directory(*path, error)) return loadFaces(*path, sanitize);
+    std::string extension = path->extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".ktx2" || extension == ".dds") return loadCubeFile(*path, sanitize);
+    return loadPanorama(*path, sanitize);
+}
+
+} // namespace iblkit::bake

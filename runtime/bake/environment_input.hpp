@@ -1,0 +1,39 @@
+#pragma once
+
+#include "float_image.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace iblkit::bake {
+
+enum class InputKind { BuiltIn, Panorama, Faces, Cube };
+std::string_view inputKindName(InputKind kind);
+
+struct InputFile {
+    std::filesystem::path path;
+    std::string sha256;
+};
+
+// An environment as read from disk, before any GPU work: either an equirectangular panorama
+// or mip 0 of a cube (RGBA floats ordered face +X..-Z, row, column).
+struct EnvironmentInput {
+    InputKind kind = InputKind::BuiltIn;
+    std::vector<InputFile> files;
+    image_io::FloatImage panorama; // BuiltIn, Panorama
+    uint32_t cubeSize = 0;         // Faces, Cube
+    std::vector<float> cubeTexels;
+    size_t sanitizedTexels = 0;    // NaN/Inf texels set to 0 (only with sanitize)
+};
+
+// ENV: an .hdr or .exr panorama (2:1), a folder of six faces (px, nx, py, ny, pz, nz or posx ...
+// negz, each .hdr or .exr), or a .ktx2 / .dds cube; empty: the built-in environment at
+// `builtInWidth`. NaN/Inf texels are refused unless `sanitize`. Throws BakeError or
+// image_io::ImageError, one line each.
+EnvironmentInput loadEnvironment(const std::optional<std::filesystem::path>& path, bool sanitize,
+                                 uint32_t builtInWidth);
+
+} // namespace iblkit::bake

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "bake_progress.hpp"
+#include "environment_input.hpp"
+#include "image.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace iblkit::bake {
+
+// The environment as an RGBA32F cube of `size` with its full mip chain (2x2 means).
+vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
+                              BakeProgress& progress);
+
+// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by PrefilterSpecularCS
+// at roughnessOfMip(m, mips) with `samples` samples (SAMPLE_COUNT).
+vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
+                                uint32_t samples, BakeProgress& progress);
+
+// PrecomputedBrdfCS over size x size, stored as R32G32_SFLOAT (the host rounds to 16 bits).
+vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, uint32_t samples,
+                               BakeProgress& progress);
+
+struct Irradiance {
+    vulkan::Image cube;               // RGBA32F, E(n) / pi
+    std::array<glm::dvec3, 9> shRadiance; // projections of radiance on Y_lm (Common/SphericalHarmonics.fxh)
+    double solidAngle;                // the sphere's 4 pi as the projection's texels summed it
+    uint32_t shSourceSize;            // the source mip each was computed from
+    uint32_t cubeSourceSize;
+};
+
+// The source mip at most this size that the irradiance steps read.
+inline constexpr uint32_t kShSourceLimit = 64;
+inline constexpr uint32_t kIrradianceSourceLimit = 32;
+
+Irradiance computeIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t size,
+                             BakeProgress& progress);
+
+struct Preview {
+    uint32_t width, height;
+    std::vector<float> rgba; // tone mapped, sRGB encoded, in [0, 1]
+};
+
+inline constexpr uint32_t kPreviewColumns = 7;   // roughness 0, 1/6, ..., 1
+inline constexpr uint32_t kPreviewRows = 3;      // metalness 0, 0.5, 1
+inline constexpr uint32_t kPreviewCellSize = 128;
+
+Preview renderPreview(const vulkan::VulkanContext& context, vulkan::Image& specular, vulkan::Image& irradiance,
+                      vulkan::Image& brdfLut, float exposure, BakeProgress& progress);
+
+} // namespace iblkit::bake

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+
+namespace iblkit::bake {
+
+// SHA-256 (OpenSSL's) as 64 lower-case hex digits.
+std::string sha256Hex(std::span<const std::byte> bytes);
+std::string sha256OfFile(const std::filesystem::path& path); // BakeError when unreadable
+
+} // namespace iblkit::bake

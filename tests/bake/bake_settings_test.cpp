@@ -1,0 +1,87 @@
+// The bake's settings: the documented defaults and the refusal of every out-of-range value.
+#include "bake_error.hpp"
+#include "bake_settings.hpp"
+#include "texel_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace iblkit::bake {
+namespace {
+
+BakeSettings settingsWithOutput() {
+    BakeSettings settings;
+    settings.outputDir = "out";
+    return settings;
+}
+
+TEST(BakeSettings, DefaultChainEndsAtEightByEightWithRoughnessOne) {
+    const auto settings = settingsWithOutput();
+    EXPECT_EQ(resolvedSize(settings, 0), 256u);
+    EXPECT_EQ(resolvedMips(settings, 256), 6u); // 256, 128, 64, 32, 16, 8
+    EXPECT_EQ(resolvedMips(settings, 8), 1u);
+    EXPECT_EQ(resolvedMips(settings, 4), 1u);
+    EXPECT_FLOAT_EQ(roughnessOfMip(0, 6), 0.f);
+    EXPECT_FLOAT_EQ(roughnessOfMip(1, 6), 0.2f);
+    EXPECT_FLOAT_EQ(roughnessOfMip(5, 6), 1.f);
+}
+
+TEST(BakeSettings, InputCubeSetsTheSizeAndAConflictingSizeIsRefused) {
+    auto settings = settingsWithOutput();
+    EXPECT_EQ(resolvedSize(settings, 128), 128u);
+    settings.size = 64;
+    EXPECT_THROW(resolvedSize(settings, 128), BakeError);
+    settings.size = 128;
+    EXPECT_EQ(resolvedSize(settings, 128), 128u);
+}
+
+TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
+    const auto refused = [](auto change, const std::string& name) {
+        auto settings = settingsWithOutput();
+        change(settings);
+        try {
+            validateSettings(settings);
+            ADD_FAILURE() << name << " was accepted";
+        } catch (const BakeError& error) {
+            EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what();
+        }
+    };
+    refused([](BakeSettings& s) { s.size = 100; }, "--size 100 is not a power of two");
+    refused([](BakeSettings& s) { s.size = 0; }, "--size");
+    refused([](BakeSettings& s) { s.size = 32768; }, "--size");
+    refused([](BakeSettings& s) { s.samples = 0; }, "--samples");
+    refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
+    refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
+    auto settings = settingsWithOutput();
+    settings.mips = 10; // a 256 cube has 9
+    EXPECT_THROW(resolvedMips(settings, 256), BakeError);
+}
+
+TEST(TexelChecks, NonFiniteTexelsAreCountedWithTheFirstOneAndAlphaIsIgnored) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    std::vector<float> rgba = {1, 1, 1, nan, 2, inf, 2, 1, 3, 3, nan, 1};
+    const auto found = findNonFiniteTexels(rgba, 4);
+    EXPECT_EQ(found.count, 2u);
+    EXPECT_EQ(found.firstTexel, 1u);
+    EXPECT_TRUE(std::isinf(found.firstValue));
+    EXPECT_EQ(replaceNonFiniteTexels(rgba, 4), 2u);
+    const std::vector<float> colours = {rgba[0], rgba[1], rgba[2], rgba[4], rgba[5], rgba[6], rgba[8], rgba[9], rgba[10]};
+    EXPECT_EQ(colours, (std::vector<float>{1, 1, 1, 0, 0, 0, 0, 0, 0}));
+    EXPECT_TRUE(std::isnan(rgba[3])) << "alpha carries no light and is left alone";
+}
+
+TEST(TexelChecks, HalfOverflowIsFoundAndClamped) {
+    std::vector<float> values = {1, 65504, 65520, -1e6f};
+    const auto found = findHalfOverflow(values);
+    EXPECT_EQ(found.count, 2u);
+    EXPECT_EQ(found.firstValue, 2u);
+    EXPECT_EQ(found.largest, 1e6f);
+    clampToHalfRange(values);
+    EXPECT_EQ(values, (std::vector<float>{1, 65504, 65504, -65504}));
+}
+
+} // namespace
+} // namespace iblkit::bake

@@ -1,0 +1,174 @@
+// `iblkit bake` as a user runs it: the default bake, progress and --json, and for every kind
+// of bad input one line naming the problem, a non-zero exit and the output folder untouched.
+#include "float_image.hpp"
+#include "read_file.hpp"
+#include "run_process.hpp"
+#include "temp_folder.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+namespace iblkit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every file of a folder with its contents, to show a folder did not change.
+std::map<std::string, std::string> snapshot(const fs::path& folder) {
+    std::map<std::string, std::string> files;
+    if (!fs::exists(folder)) return files;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file()) files[fs::relative(entry.path(), folder).string()] = readFile(entry.path());
+    return files;
+}
+
+// A Radiance HDR file of flat RGBE texels (stb reads widths below 8 and non-RLE rows as flat).
+std::string radianceHdr(uint32_t width, uint32_t height, unsigned char exponent) {
+    std::string text = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " +
+                       std::to_string(width) + "\n";
+    for (uint32_t i = 0; i < width * height; ++i) text += std::string{char(128), char(128), char(128), char(exponent)};
+    return text;
+}
+
+class BakeCli : public ::testing::Test {
+protected:
+    ProcessResult iblkit(std::vector<std::string> arguments, double killAfterSeconds = 0) const {
+        arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
+        return runProcess(arguments, {}, killAfterSeconds);
+    }
+    // Small and quick: what every test but the default bake runs with.
+    std::vector<std::string> small(std::vector<std::string> arguments) const {
+        for (const char* flag : {"--size", "16", "--samples", "16", "--lut-size", "8", "--lut-samples", "16",
+                                 "--irradiance-size", "4", "--quiet"})
+            arguments.push_back(flag);
+        return arguments;
+    }
+    void expectFailure(const std::vector<std::string>& arguments, const std::string& expected) const {
+        const auto before = snapshot(scratch.path());
+        const auto result = iblkit(arguments);
+        EXPECT_NE(result.exitCode, 0);
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_EQ(snapshot(scratch.path()), before) << "a failed bake changed the folder";
+    }
+    std::string at(const std::string& name) const { return (scratch.path() / name).string(); }
+
+    TempFolder scratch;
+};
+
+TEST_F(BakeCli, DefaultBakeWritesEveryOutputWithProgress) {
+    const auto result = iblkit({"bake", "-o", at("out")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    for (const char* name : {"specular.ktx2", "brdf_lut.ktx2", "irradiance.ktx2", "manifest.json", "preview.png"})
+        EXPECT_GT(fs::file_size(scratch.path() / "out" / name), 0u) << name;
+    for (const char* step : {"source cube", "prefilter", "brdf lut", "irradiance", "preview", "100%"})
+        EXPECT_NE(result.err.find(step), std::string::npos) << step << " is not reported:\n" << result.err;
+    const auto manifest = nlohmann::json::parse(readFile(scratch.path() / "out" / "manifest.json"));
+    EXPECT_EQ(manifest["specular"]["size"], 256);
+    EXPECT_EQ(manifest["specular"]["mips"], 6);
+    EXPECT_EQ(manifest["brdf_lut"]["size"], 512);
+    EXPECT_EQ(manifest["brdf_lut"]["format"], "R16G16_SFLOAT");
+    EXPECT_EQ(manifest["settings"]["samples"], 1024);
+}
+
+TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
+    const auto result = iblkit(small({"bake", "-o", at("out"), "--json"}));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(result.err, "");
+    const auto summary = nlohmann::json::parse(result.out);
+    std::vector<std::string> steps;
+    for (const auto& step : summary["steps"]) {
+        steps.push_back(step["name"]);
+        EXPECT_GE(step["wall_ms"].get<double>(), 0);
+        EXPECT_GE(step["device_ms"].get<double>(), 0);
+    }
+    EXPECT_EQ(steps, (std::vector<std::string>{"load", "source cube", "prefilter", "brdf lut", "irradiance", "preview",
+                                               "write"}));
+    EXPECT_GT(summary["steps"][2]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+}
+
+TEST_F(BakeCli, PanoramaFacesAndCubeInputsBake) {
+    scratch.write("sky.hdr", radianceHdr(32, 16, 129));
+    ASSERT_EQ(iblkit(small({"bake", at("sky.hdr"), "-o", at("from-hdr")})).exitCode, 0);
+    for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"})
+        scratch.write(std::string("faces/") + face + ".hdr", radianceHdr(16, 16, 129));
+    const auto faces = iblkit(small({"bake", at("faces"), "-o", at("from-faces"), "--dds"}));
+    ASSERT_EQ(faces.exitCode, 0) << faces.err;
+    const auto manifest = nlohmann::json::parse(readFile(scratch.path() / "from-faces" / "manifest.json"));
+    EXPECT_EQ(manifest["input"]["kind"], "faces");
+    EXPECT_EQ(manifest["input"]["files"].size(), 6u);
+    for (const char* cube : {"from-faces/specular.ktx2", "from-faces/specular.dds"}) {
+        const auto result = iblkit(small({"bake", at(cube), "-o", at(std::string("from-") + fs::path(cube).extension().string().substr(1))}));
+        EXPECT_EQ(result.exitCode, 0) << cube << ": " << result.err;
+    }
+}
+
+TEST_F(BakeCli, MissingCorruptAndUnsupportedInputsAreRefused) {
+    expectFailure(small({"bake", at("missing.hdr"), "-o", at("out")}), "missing.hdr");
+    scratch.write("corrupt.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n\x01\x02");
+    expectFailure(small({"bake", at("corrupt.hdr"), "-o", at("out")}), "corrupt.hdr");
+    scratch.write("corrupt.exr", std::string("\x76\x2f\x31\x01\x02\x00\x00\x00garbage", 15));
+    expectFailure(small({"bake", at("corrupt.exr"), "-o", at("out")}), "corrupt.exr");
+    scratch.write("sky.png", "\x89PNG\r\n\x1a\n");
+    expectFailure(small({"bake", at("sky.png"), "-o", at("out")}), "unsupported image format");
+    scratch.write("faces/px.hdr", radianceHdr(16, 16, 129));
+    expectFailure(small({"bake", at("faces"), "-o", at("out")}), "no -X face");
+}
+
+TEST_F(BakeCli, APanoramaThatIsNotTwoToOneIsRefused) {
+    scratch.write("wide.hdr", radianceHdr(30, 20, 129));
+    expectFailure(small({"bake", at("wide.hdr"), "-o", at("out")}), "30x20");
+}
+
+TEST_F(BakeCli, NonFiniteTexelsAreRefusedUnlessSanitized) {
+    image_io::FloatImage image{16, 8, 3, std::vector<float>(16 * 8 * 3, 1.f)};
+    image.values[(2 * 16 + 5) * 3 + 1] = std::numeric_limits<float>::quiet_NaN();
+    image.values[(7 * 16 + 0) * 3] = std::numeric_limits<float>::infinity();
+    image_io::writeExr(scratch.path() / "nan.exr", image);
+    expectFailure(small({"bake", at("nan.exr"), "-o", at("out")}), "2 NaN/Inf texels (the first at column 5, row 2: nan)");
+    const auto result = iblkit(small({"bake", at("nan.exr"), "-o", at("out"), "--sanitize", "--json"}));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(nlohmann::json::parse(result.out)["sanitized_texels"], 2);
+}
+
+TEST_F(BakeCli, ValuesBeyondHalfRangeAreRefusedUnlessClamped) {
+    image_io::FloatImage image{16, 8, 3, std::vector<float>(16 * 8 * 3, 1.f)};
+    for (int i = 0; i < 3; ++i) image.values[(4 * 16 + 4) * 3 + i] = 1e6f; // an unclipped sun
+    image_io::writeExr(scratch.path() / "sun.exr", image);
+    expectFailure(small({"bake", at("sun.exr"), "-o", at("out")}), "--clamp-half");
+    const auto result = iblkit(small({"bake", at("sun.exr"), "-o", at("out"), "--clamp-half", "--json"}));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_GT(nlohmann::json::parse(result.out)["clamped_values"].get<int>(), 0);
+}
+
+TEST_F(BakeCli, SizesOutOfRangeOrBeyondMemoryAreRefused) {
+    expectFailure({"bake", "-o", at("out"), "--size", "100"}, "not a power of two");
+    expectFailure({"bake", "-o", at("out"), "--size", "16384", "--quiet"}, "memory");
+    expectFailure({"bake", "-o", at("out"), "--lut-format", "rgba8"}, "--lut-format");
+    expectFailure({"bake", "-o", at("out"), "--mips", "12", "--size", "64"}, "--mips 12");
+}
+
+TEST_F(BakeCli, AFolderThatIsNotABakeIsNeverReplaced) {
+    scratch.write("mine/notes.txt", "keep me");
+    expectFailure(small({"bake", "-o", at("mine")}), "refusing to replace it");
+}
+
+TEST_F(BakeCli, AFailedOrKilledBakeLeavesTheEarlierBakeAsItWas) {
+    ASSERT_EQ(iblkit(small({"bake", "-o", at("out")})).exitCode, 0);
+    const auto good = snapshot(scratch.path() / "out");
+    scratch.write("wide.hdr", radianceHdr(30, 20, 129));
+    EXPECT_NE(iblkit(small({"bake", at("wide.hdr"), "-o", at("out")})).exitCode, 0);
+    EXPECT_EQ(snapshot(scratch.path() / "out"), good);
+    // Killed while the prefilter runs (a 256² bake with 4096 samples takes several seconds).
+    const auto killed = iblkit({"bake", "-o", at("out"), "--samples", "4096", "--quiet"}, 2.0);
+    EXPECT_EQ(killed.exitCode, 128 + 9) << "the bake finished before it could be killed";
+    EXPECT_EQ(snapshot(scratch.path() / "out"), good);
+}
+
+} // namespace
+} // namespace iblkit::testing

@@ -1,0 +1,88 @@
+#include "bake_command.hpp"
+
+#include "bake.hpp"
+#include "bake_manifest.hpp"
+#include "run_command.hpp"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+namespace iblkit::cli {
+namespace {
+
+nlohmann::json summaryJson(const bake::BakeSummary& summary) {
+    nlohmann::json steps = nlohmann::json::array();
+    for (const auto& step : summary.steps)
+        steps.push_back({{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}});
+    return {{"output", summary.outputDir.string()},
+            {"device", summary.device},
+            {"wall_ms", summary.wallMilliseconds},
+            {"steps", steps},
+            {"files", bake::filesJson(summary.files)},
+            {"sh_radiance", summary.manifest.at("irradiance").at("sh").at("radiance")},
+            {"clamped_values", summary.manifest.at("half_range").at("clamped_values")},
+            {"sanitized_texels", summary.manifest.at("input").at("sanitized_texels")}};
+}
+
+void printSummary(const bake::BakeSummary& summary) {
+    fmt::print(stderr, "baked {} on {} in {:.2f} s:", summary.outputDir.string(), summary.device,
+               summary.wallMilliseconds / 1e3);
+    for (const auto& file : summary.files)
+        if (file.name.find('/') == std::string::npos) fmt::print(stderr, " {}", file.name);
+    fmt::print(stderr, "\n");
+    const auto clamped = summary.manifest.at("half_range").at("clamped_values").get<size_t>();
+    if (clamped) fmt::print(stderr, "clamped {} values to the 16-bit float range (--clamp-half)\n", clamped);
+    const auto sanitized = summary.manifest.at("input").at("sanitized_texels").get<size_t>();
+    if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
+}
+
+} // namespace
+
+void addBakeCommand(CLI::App& app) {
+    struct Arguments {
+        bake::BakeSettings settings;
+        std::string environment;
+        std::string lutFormat = "rg16f";
+        bool quiet = false;
+        bool json = false;
+    };
+    auto arguments = std::make_shared<Arguments>();
+    auto& s = arguments->settings;
+    auto* command = app.add_subcommand(
+        "bake", "Bake an HDR environment into a prefiltered specular cube, a BRDF LUT, irradiance and a preview");
+    command->add_option("ENV", arguments->environment,
+                        "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
+    command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the bake succeeds)")->required();
+    command->add_option("--size", s.size, "Cube face size, a power of two (default 256)");
+    command->add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
+    command->add_option("--samples", s.samples, "Prefilter samples per texel (default 1024)");
+    command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
+    command->add_option("--lut-samples", s.lutSamples, "BRDF LUT samples per texel (default 1024)");
+    command->add_option("--lut-format", arguments->lutFormat, "rg16f (default) or rg32f")
+        ->check(CLI::IsMember({"rg16f", "rg32f"}));
+    command->add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
+    command->add_flag("--dds", s.dds, "Also write .dds files");
+    command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
+    command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
+    command->add_flag("--clamp-half", s.clampHalf, "Clamp values beyond 65504 in 16-bit outputs instead of refusing them");
+    command->add_flag("--validate", s.context.validation, "Run with the Vulkan validation layer; any message fails the bake");
+    command->add_option("--device", s.context.device, "Device index or part of its name (default: lavapipe)");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
+    command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
+    command->callback([arguments] {
+        auto settings = arguments->settings;
+        if (!arguments->environment.empty()) settings.environment = arguments->environment;
+        settings.lutFormat = arguments->lutFormat == "rg32f" ? bake::LutFormat::Rg32Float : bake::LutFormat::Rg16Float;
+        auto log = std::make_shared<vulkan::ValidationLog>();
+        settings.context.validationLog = log;
+        bake::BakeProgress progress(arguments->quiet);
+        const auto summary = bake::bakeEnvironment(settings, IBLKIT_VERSION, progress);
+        for (const auto& message : log->messages()) fmt::print(stderr, "validation: {}\n", message);
+        if (!log->messages().empty()) throw ExpectationsFailed{};
+        if (arguments->json) fmt::print("{}\n", summaryJson(summary).dump(2));
+        if (!arguments->quiet) printSummary(summary);
+    });
+}
+
+} // namespace iblkit::cli
