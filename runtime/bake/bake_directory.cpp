@@ -1,6 +1,7 @@
 #include "bake_directory.hpp"
 
 #include "bake_error.hpp"
+#include "file_names.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -17,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+using image_io::quoted;
 
 bool isEarlierBake(const fs::path& folder) {
     std::ifstream stream(folder / "manifest.json");

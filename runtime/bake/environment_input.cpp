@@ -2,6 +2,7 @@
 
 #include "bake_error.hpp"
 #include "default_environment.hpp"
+#include "file_names.hpp"
 #include "files.hpp"
 #include "image_error.hpp"
 #include "sha256.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+using image_io::quoted;
 
 // Refuses NaN/Inf texels, or with `sanitize` sets them to 0; returns how many were set.
 size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, const std::string& name, bool sanitize) {
@@ -29,17 +30,6 @@ size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, c
                                     name, found.count, found.count == 1 ? "" : "s", found.firstTexel % width,
                                     found.firstTexel / width, found.firstValue));
     return replaceNonFiniteTexels(values, channels);
-}
-
-std::vector<float> toRgba(const image_io::FloatImage& image) {
-    if (image.channels == 4) return image.values;
-    std::vector<float> rgba;
-    rgba.reserve(size_t(image.width) * image.height * 4);
-    for (size_t texel = 0; texel < size_t(image.width) * image.height; ++texel) {
-        const float* at = &image.values[texel * image.channels];
-        rgba.insert(rgba.end(), {at[0], at[1], at[2], 1.f});
-    }
-    return rgba;
 }
 
 EnvironmentInput loadPanorama(const fs::path& path, bool sanitize) {
@@ -75,7 +65,7 @@ EnvironmentInput loadFaces(const fs::path& folder, bool sanitize) {
             throw BakeError(fmt::format("{} is {}x{}; the +X face is {}x{}", quoted(path), image.width, image.height,
                                         input.cubeSize, input.cubeSize));
         input.sanitizedTexels += checkFinite(image.values, image.channels, image.width, quoted(path), sanitize);
-        const auto rgba = toRgba(image);
+        const auto rgba = image_io::rgbaValues(image);
         input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
         input.files.push_back({path, sha256OfFile(path)});
     }
@@ -113,8 +103,7 @@ EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, bool sanit
     std::error_code error;
     if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
     if (fs::is_directory(*path, error)) return loadFaces(*path, sanitize);
-    std::string extension = path->extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = image_io::lowerExtension(*path);
     if (extension == ".ktx2" || extension == ".dds") return loadCubeFile(*path, sanitize);
     return loadPanorama(*path, sanitize);
 }

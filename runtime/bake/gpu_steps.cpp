@@ -32,13 +32,7 @@ uint32_t supersampleFor(uint32_t panoramaWidth, uint32_t size) {
 void convertPanorama(const vulkan::VulkanContext& context, const image_io::FloatImage& panorama, vulkan::Image& cube,
                      BakeProgress& progress) {
     vulkan::Image equirect(context, {"Equirect", &rgba32(), panorama.width, panorama.height, 1, 1, false, false});
-    std::vector<float> rgba;
-    rgba.reserve(size_t(panorama.width) * panorama.height * 4);
-    for (size_t texel = 0; texel < size_t(panorama.width) * panorama.height; ++texel) {
-        const float* at = &panorama.values[texel * panorama.channels];
-        rgba.insert(rgba.end(), {at[0], at[1], at[2], 1.f});
-    }
-    equirect.upload(context, rgba);
+    equirect.upload(context, image_io::rgbaValues(panorama));
     BakeKernel kernel(context, compileBakeShader("EquirectToCubeCS"));
     kernel.program().bind("Equirect", equirect);
     kernel.program().bind("Cube", cube, 0);

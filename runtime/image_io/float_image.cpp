@@ -13,4 +13,15 @@ FloatImage readFloatImage(const std::filesystem::path& path) {
                      " (supported: .hdr, .exr)");
 }
 
+std::vector<float> rgbaValues(const FloatImage& image) {
+    if (image.channels == 4) return image.values;
+    std::vector<float> rgba;
+    rgba.reserve(size_t(image.width) * image.height * 4);
+    for (size_t texel = 0; texel < size_t(image.width) * image.height; ++texel) {
+        const float* at = &image.values[texel * image.channels];
+        rgba.insert(rgba.end(), {at[0], at[1], at[2], 1.f});
+    }
+    return rgba;
+}
+
 } // namespace iblkit::image_io

@@ -24,6 +24,9 @@ FloatImage readExr(const std::filesystem::path& path);
 // By extension, case-insensitive: .hdr/.pic -> readRadianceHdr, .exr -> readExr.
 FloatImage readFloatImage(const std::filesystem::path& path);
 
+// The image's texels as RGBA (alpha 1 where the image has none), rows top first.
+std::vector<float> rgbaValues(const FloatImage& image);
+
 // 32-bit FLOAT channels R, G, B (and A when channels is 4), ZIP compression.
 void writeExr(const std::filesystem::path& path, const FloatImage& image);
 // 8-bit RGBA, rows top first, through stb_image_write.
