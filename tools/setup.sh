@@ -10,6 +10,7 @@ readonly IBLKIT_PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
   libegl-dev libgl-dev libgl1-mesa-dri
   libopenexr-dev libstb-dev libssl-dev
+  python3-matplotlib
 )
 
 missing_packages() {

@@ -2,7 +2,7 @@
 #ifndef COMMON_IMAGE_BASED_LIGHTING_FXH
 #define COMMON_IMAGE_BASED_LIGHTING_FXH
 
-#include "PBR.fxh"
+#include "Common/PBR.fxh"
 
 // The specular IBL document's final combine, as printed: the prefiltered radiance of the
 // reflected direction at mip roughness * (mips - 1), times F0 * scale + bias from the LUT.

@@ -124,7 +124,8 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     progress.end();
 
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
-    return {settings.outputDir, context.deviceInfo().name, progress.steps(), wall, files, manifest};
+    return {settings.outputDir, context.deviceInfo().name, progress.steps(), wall, files,
+            irradiance.shRadiance, clamped, input.sanitizedTexels};
 }
 
 } // namespace iblkit::bake

@@ -4,7 +4,9 @@
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
 
-#include <nlohmann/json.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
 
 #include <string>
 #include <vector>
@@ -17,7 +19,9 @@ struct BakeSummary {
     std::vector<StepTiming> steps;
     double wallMilliseconds;
     std::vector<WrittenFile> files;
-    nlohmann::json manifest;
+    std::array<glm::dvec3, 9> shRadiance; // as in the manifest's irradiance.sh.radiance
+    size_t clampedValues;                 // values clamped to the half range (--clamp-half)
+    size_t sanitizedTexels;               // NaN/Inf input texels set to 0 (--sanitize)
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

@@ -1,7 +1,8 @@
 #include "bake_manifest.hpp"
 
+#include "kernels/sampled_methods.hpp"
+
 namespace iblkit::bake {
-namespace {
 
 using nlohmann::json;
 
@@ -10,6 +11,8 @@ json coefficientsJson(const std::array<glm::dvec3, 9>& coefficients) {
     for (const auto& c : coefficients) list.push_back({c.r, c.g, c.b});
     return list;
 }
+
+namespace {
 
 json inputJson(const EnvironmentInput& input) {
     json files = json::array();
@@ -38,6 +41,17 @@ json settingsJson(const ManifestFacts& facts) {
             {"clamp_half", s.clampHalf}};
 }
 
+// The document's shader, or its chunked twin past the loop limit (see docs/kernels.md).
+std::string sampledShader(kernels::KernelRole whole, kernels::KernelRole chunked, uint32_t samples) {
+    const auto role = kernels::chunkSamplesFor(samples) ? chunked : whole;
+    return kernels::kernelFor(role, "document").options.source.generic_string();
+}
+
+uint32_t samplesPerDispatch(uint32_t samples) {
+    const uint32_t chunk = kernels::chunkSamplesFor(samples);
+    return chunk ? chunk : samples;
+}
+
 json specularJson(const ManifestFacts& facts) {
     json roughness = json::array();
     for (uint32_t mip = 0; mip < facts.mips; ++mip) roughness.push_back(roughnessOfMip(mip, facts.mips));
@@ -48,7 +62,9 @@ json specularJson(const ManifestFacts& facts) {
             {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
             {"roughness", roughness},
             {"samples", facts.settings->samples},
-            {"shader", "hlsl/PrefilterSpecularCS.hlsl"}};
+            {"samples_per_dispatch", samplesPerDispatch(facts.settings->samples)},
+            {"shader", sampledShader(kernels::KernelRole::Prefilter, kernels::KernelRole::PrefilterChunk,
+                                     facts.settings->samples)}};
 }
 
 json irradianceJson(const ManifestFacts& facts) {
@@ -90,8 +106,9 @@ json bakeManifest(const ManifestFacts& facts) {
               {"format", s.lutFormat == LutFormat::Rg16Float ? "R16G16_SFLOAT" : "R32G32_SFLOAT"},
               {"size", s.lutSize},
               {"samples", s.lutSamples},
+              {"samples_per_dispatch", samplesPerDispatch(s.lutSamples)},
               {"axes", "u = N.V, v = roughness, at texel centres; texel = (scale, bias) of F0"},
-              {"shader", "hlsl/PrecomputedBrdfCS.hlsl"}}},
+              {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, s.lutSamples)}}},
             {"irradiance", irradianceJson(facts)},
             {"half_range", {{"policy", s.clampHalf ? "clamp to 65504" : "refuse"}, {"clamped_values", facts.clampedValues}}},
             {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};

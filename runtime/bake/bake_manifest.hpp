@@ -24,6 +24,8 @@ struct ManifestFacts {
 // manifest.json without its "files" list (added once every file is written).
 nlohmann::json bakeManifest(const ManifestFacts& facts);
 nlohmann::json filesJson(const std::vector<WrittenFile>& files);
+// Nine RGB coefficients as [[r, g, b], ...].
+nlohmann::json coefficientsJson(const std::array<glm::dvec3, 9>& coefficients);
 
 // Irradiance coefficients from radiance ones: E(n) / pi = sum c_lm Y_lm(n) with c_lm = A_l / pi
 // L_lm and A = (pi, 2 pi / 3, pi / 4) per band (Ramamoorthi and Hanrahan 2001).

@@ -46,8 +46,8 @@ void validateSettings(const BakeSettings& settings) {
         requireRange("--size", *settings.size, 1, kMaxCubeSize);
         requirePowerOfTwo("--size", *settings.size);
     }
-    requireRange("--samples", settings.samples, 1, kMaxSamples);
-    requireRange("--lut-samples", settings.lutSamples, 1, kMaxSamples);
+    requireRange("--samples", settings.samples, 1, kernels::kMaxSamples);
+    requireRange("--lut-samples", settings.lutSamples, 1, kernels::kMaxSamples);
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
     if (settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "kernels/sampled_methods.hpp"
 #include "vulkan_context.hpp"
 
 #include <cstdint>
@@ -34,7 +35,6 @@ inline constexpr uint32_t kDefaultSize = 256;
 // Sizes past these are refused before any work: a 16384² cube with its chain is ~8.6 GB as floats.
 inline constexpr uint32_t kMaxCubeSize = 16384;
 inline constexpr uint32_t kMaxLutSize = 16384;
-inline constexpr uint32_t kMaxSamples = 1u << 20;
 
 // The face size the bake uses for a source of `inputCubeSize` (0 when the input is a panorama).
 uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize);

@@ -22,7 +22,7 @@ struct CompileOptions {
     std::optional<ShaderStage> stage; // deduced from the entry point's attributes when empty
     std::vector<std::filesystem::path> includeDirs;
     // Files served from memory before the disk is asked, by path as an #include forms it
-    // ("hlsl/Common/PBR.fxh"): shaders built into a program.
+    // ("hlsl/document/Common/PBR.fxh"): shaders built into a program.
     std::map<std::string, std::string> virtualFiles;
     std::map<std::string, std::string> defines; // NAME -> VALUE ("" for a bare -D NAME)
     OptimizationLevel optimization = OptimizationLevel::None;

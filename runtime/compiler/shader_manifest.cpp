@@ -28,13 +28,18 @@ ManifestShader parseShader(const nlohmann::json& entry, const std::filesystem::p
         shader.options.includeDirs.push_back(folder / dir);
     shader.options.defines = valueOr<std::map<std::string, std::string>>(entry, "defines", {});
     shader.options.imageFormats = valueOr<std::map<std::string, std::string>>(entry, "image_formats", {});
+    shader.kernel = valueOr<std::string>(entry, "kernel", "");
+    shader.method = valueOr<std::string>(entry, "method", "");
     return shader;
 }
 
 } // namespace
 
 std::vector<ManifestShader> readShaderManifest(const std::filesystem::path& manifest) {
-    const std::string text = readSource(manifest);
+    return parseShaderManifest(readSource(manifest), manifest);
+}
+
+std::vector<ManifestShader> parseShaderManifest(const std::string& text, const std::filesystem::path& manifest) {
     std::vector<ManifestShader> shaders;
     try {
         const auto json = nlohmann::json::parse(text);

@@ -4,24 +4,41 @@
 #include "error_stats.hpp"
 #include "vulkan_context.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace iblkit::consistency {
 
 struct SuiteOptions {
+    // PrecomputedBrdfCS and PrefilterSpecularCS (the documents' shaders).
     std::vector<uint32_t> lutSizes{512, 32};
     uint32_t prefilterSize = 32;
     uint32_t environmentSize = 64;
     std::vector<float> roughnesses{0.0f, 0.25f, 0.5f, 1.0f};
     uint32_t sampleCount = 1024;
-    // The shaders under test; from hlsl/shaders.json unless a test substitutes others.
-    compiler::CompileOptions lutShader;
-    compiler::CompileOptions prefilterShader;
+    // Their chunked twins: the same sampleCount in dispatches of chunkSamples (the last one
+    // shorter), the LUT at chunkLutSize, the prefilter at prefilterSize and chunkRoughness.
+    uint32_t chunkSamples = 300;
+    uint32_t chunkLutSize = 32;
+    float chunkRoughness = 0.5f;
+    // The cube kernels: a panoramaWidth x panoramaWidth/2 panorama onto cubeSize faces with
+    // supersample² reads per texel; the test environment at mipChainSize downsampled to 1x1; its
+    // mip 1 projected on the harmonics and convolved into an irradianceSize cube.
+    uint32_t panoramaWidth = 128;
+    uint32_t cubeSize = 16;
+    uint32_t supersample = 2;
+    uint32_t mipChainSize = 32;
+    uint32_t irradianceSize = 8;
+    // PreviewCS: columns x rows spheres of cellSize pixels over a cubeSize specular cube.
+    uint32_t previewColumns = 4, previewRows = 2, previewCellSize = 16;
+    // The shaders under test, by their name in the manifest: every kernel of hlsl/shaders.json,
+    // or the same from a copy that a test has broken.
+    std::map<std::string, compiler::CompileOptions> shaders;
 };
 
-// The options the suite runs the seed shaders with: the manifest's, with SAMPLE_COUNT set and
-// the LUT written as R32G32_SFLOAT (so that the comparison measures arithmetic, not storage).
+// The options the suite runs every kernel with: the manifest's, with SAMPLE_COUNT set and the
+// LUTs written as R32G32_SFLOAT (so that the comparison measures arithmetic, not storage).
 SuiteOptions defaultSuiteOptions(const std::string& manifest = "hlsl/shaders.json", uint32_t sampleCount = 1024);
 
 // Bounds on the largest absolute error and the RMS error of a path, against each reference.
@@ -30,27 +47,36 @@ struct Bounds {
 };
 
 struct ConsistencyRow {
+    std::string kernel; // the shader's name in the manifest
     std::string path;
     std::string output;
     ErrorStats vsFloat;
     ErrorStats vsDouble;
     Bounds bounds;
-    bool isReference; // the float reference against the double one: shown, not judged
+    bool isReference; // the reference itself (against the double one): shown, not judged
     bool passed;
 };
 
-// Every path of every output — the four Vulkan paths and d, the GLSL form on OpenGL 4.5 through
-// EGL — against the C++ reference in float and in double; the first row of each output is the
-// float reference itself against the double one.
+// Every path of every output of every kernel — the four Vulkan paths and d, the GLSL form on
+// OpenGL 4.5 through EGL — against the C++ reference in float and in double; the first row of
+// each output is the float reference itself against the double one. PreviewCS has no C++
+// reference: its paths are compared with path a, whose row comes first.
 struct ConsistencyResult {
     std::vector<ConsistencyRow> rows;
     std::string openGlRenderer;
 };
 ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options);
 
-// The bounds, and why each is those numbers (boundsRationale).
+// The bounds of each output, and why each is those numbers (boundsRationale).
 Bounds lutBounds(uint32_t size);
 Bounds prefilterBounds();
+Bounds lutChunkBounds();
+Bounds prefilterChunkBounds();
+Bounds equirectBounds();
+Bounds downsampleBounds();
+Bounds shBounds();
+Bounds irradianceBounds();
+Bounds previewBounds();
 std::string boundsRationale();
 
 std::string renderMarkdown(const std::vector<ConsistencyRow>& rows, const vulkan::VulkanContext& context,

@@ -1,88 +1,92 @@
 #include "gl_bake.hpp"
 
 #include "compiler.hpp"
-#include "gl_error.hpp"
-#include "gl_object.hpp"
-
-#include <algorithm>
+#include "gl_support.hpp"
+#include "kernels/kernel_parameters.hpp"
+#include "suite_inputs.hpp"
 
 namespace iblkit::consistency {
 namespace {
 
-GLuint slotOf(const OpenGlForm& form, const std::string& resource) {
-    for (const auto& binding : form.glsl.bindings)
-        if (binding.resource == resource) return binding.slot;
-    throw opengl::GlError("the GLSL form records no binding for '" + resource + "'");
+// The environment's mip 0 as EnvMap, sampled linearly, bound at its combined slot.
+struct BoundEnvironment {
+    opengl::GlObject texture;
+    opengl::GlObject sampler;
+};
+BoundEnvironment bindEnvironment(const opengl::EglContext& context, const OpenGlForm& form,
+                                 const reference::CubeEnvironment& environment) {
+    BoundEnvironment bound{glpath::cubeTexture(context, GL_TEXTURE_CUBE_MAP, environment.size(), 1, environment.texels()),
+                           glpath::linearClampSampler(context)};
+    const GLuint unit = glpath::slotOf(form, "EnvMap+EnvMapSampler");
+    context.gl().BindTextureUnit(unit, bound.texture.name());
+    context.gl().BindSampler(unit, bound.sampler.name());
+    return bound;
 }
 
-void dispatch(const opengl::EglContext& context, const opengl::GlObject& program, const OpenGlForm& form,
-              std::array<uint32_t, 3> threads) {
-    const auto& gl = context.gl();
-    gl.UseProgram(program.name());
-    std::array<GLuint, 3> groups{};
-    for (int axis = 0; axis < 3; ++axis) {
-        const uint32_t size = std::max(1u, form.workgroupSize[axis]);
-        groups[axis] = (threads[axis] + size - 1) / size;
-    }
-    gl.DispatchCompute(groups[0], groups[1], groups[2]);
-    gl.MemoryBarrier(GL_ALL_BARRIER_BITS);
-    gl.Finish();
-    context.check("the dispatch");
+// An RG32F or RGBA32F storage image bound at the resource's slot, layered for a cube.
+opengl::GlObject bindImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                           uint32_t size, bool cube) {
+    auto image = cube ? glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1)
+                      : glpath::texture2D(context, GL_RG32F, GL_RG, size, size);
+    const GLenum format = cube ? GL_RGBA32F : GL_RG32F;
+    context.gl().BindImageTexture(glpath::slotOf(form, resource), image.name(), 0, cube, 0, GL_READ_WRITE, format);
+    context.check("binding an image");
+    return image;
 }
 
-std::vector<float> readBack(const opengl::EglContext& context, const opengl::GlObject& texture, GLenum format, size_t count) {
-    std::vector<float> values(count);
-    context.gl().GetTextureImage(texture.name(), 0, format, GL_FLOAT, GLsizei(count * sizeof(float)), values.data());
-    context.check("the readback");
-    return values;
-}
+size_t lutValues(uint32_t size) { return size_t(size) * size * 2; }
+size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
 
 } // namespace
 
 OpenGlForm openGlForm(const compiler::CompileOptions& options) {
     const auto shader = compiler::compileShader(options);
-    return {compiler::crossCompileShader(shader, compiler::CrossTarget::Glsl), shader.reflection.workgroupSize};
+    return {options.source.stem().string(), compiler::crossCompileShader(shader, compiler::CrossTarget::Glsl),
+            shader.reflection.workgroupSize, shader.reflection};
 }
 
 std::vector<float> glBrdfLut(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size) {
-    const auto& gl = context.gl();
-    const auto program = opengl::createComputeProgram(context, form.glsl.source, "PrecomputedBrdfCS (GLSL)");
-    const auto lut = opengl::createTexture(context, GL_TEXTURE_2D);
-    gl.TextureStorage2D(lut.name(), 1, GL_RG32F, GLsizei(size), GLsizei(size));
-    gl.BindImageTexture(slotOf(form, "Precomputed"), lut.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    context.check("binding the LUT");
-    dispatch(context, program, form, {size, size, 1});
-    return readBack(context, lut, GL_RG, size_t(size) * size * 2);
+    const auto program = glpath::program(context, form);
+    const auto lut = bindImage(context, form, "Precomputed", size, false);
+    glpath::dispatch(context, program, form, {size, size, 1});
+    return glpath::readTexture(context, lut, 0, GL_RG, lutValues(size));
 }
 
 std::vector<float> glPrefilter(const opengl::EglContext& context, const OpenGlForm& form,
                                const reference::CubeEnvironment& environment, float roughness, uint32_t size) {
-    const auto& gl = context.gl();
-    const auto program = opengl::createComputeProgram(context, form.glsl.source, "PrefilterSpecularCS (GLSL)");
-    const auto envMap = opengl::createTexture(context, GL_TEXTURE_CUBE_MAP);
-    const auto n = GLsizei(environment.size());
-    gl.TextureStorage2D(envMap.name(), 1, GL_RGBA32F, n, n);
-    gl.TextureSubImage3D(envMap.name(), 0, 0, 0, 0, n, n, 6, GL_RGBA, GL_FLOAT, environment.texels().data());
-    const auto sampler = opengl::createSampler(context);
-    gl.SamplerParameteri(sampler.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    gl.SamplerParameteri(sampler.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-        gl.SamplerParameteri(sampler.name(), wrap, GL_CLAMP_TO_EDGE);
-    const GLuint unit = slotOf(form, "EnvMap+EnvMapSampler");
-    gl.BindTextureUnit(unit, envMap.name());
-    gl.BindSampler(unit, sampler.name());
+    const auto program = glpath::program(context, form);
+    const auto envMap = bindEnvironment(context, form, environment);
+    const auto prefiltered = bindImage(context, form, "Prefiltered", size, true);
+    const auto parameters = glpath::bindParameters(context, form, kernels::PrefilterParameters{roughness}.members());
+    glpath::dispatch(context, program, form, {size, size, 6});
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+}
 
-    const auto prefiltered = opengl::createTexture(context, GL_TEXTURE_2D_ARRAY);
-    gl.TextureStorage3D(prefiltered.name(), 1, GL_RGBA32F, GLsizei(size), GLsizei(size), 6);
-    gl.BindImageTexture(slotOf(form, "Prefiltered"), prefiltered.name(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+std::vector<float> glBrdfLutChunks(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size,
+                                   uint32_t samples, uint32_t chunk) {
+    const auto program = glpath::program(context, form);
+    const auto accumulator = bindImage(context, form, "Accumulated", size, false);
+    const auto lut = bindImage(context, form, "Precomputed", size, false);
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        const auto parameters = glpath::bindParameters(context, form, kernels::BrdfChunkParameters{first, count, last}.members());
+        glpath::dispatch(context, program, form, {size, size, 1});
+    });
+    return glpath::readTexture(context, lut, 0, GL_RG, lutValues(size));
+}
 
-    const auto parameters = opengl::createBuffer(context);
-    const float block[4] = {roughness, 0, 0, 0};
-    gl.NamedBufferData(parameters.name(), sizeof block, block, GL_STATIC_DRAW);
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, slotOf(form, "PrefilterSpecularParameter"), parameters.name());
-    context.check("binding the prefilter's resources");
-    dispatch(context, program, form, {size, size, 6});
-    return readBack(context, prefiltered, GL_RGBA, size_t(size) * size * 6 * 4);
+std::vector<float> glPrefilterChunks(const opengl::EglContext& context, const OpenGlForm& form,
+                                     const reference::CubeEnvironment& environment, float roughness, uint32_t size,
+                                     uint32_t samples, uint32_t chunk) {
+    const auto program = glpath::program(context, form);
+    const auto envMap = bindEnvironment(context, form, environment);
+    const auto accumulator = bindImage(context, form, "Accumulated", size, true);
+    const auto prefiltered = bindImage(context, form, "Prefiltered", size, true);
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        const kernels::PrefilterChunkParameters chunkParameters{roughness, first, count, last};
+        const auto parameters = glpath::bindParameters(context, form, chunkParameters.members());
+        glpath::dispatch(context, program, form, {size, size, 6});
+    });
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }
 
 } // namespace iblkit::consistency

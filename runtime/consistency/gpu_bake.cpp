@@ -1,37 +1,61 @@
 #include "gpu_bake.hpp"
 
-#include "compute_program.hpp"
-#include "vulkan_error.hpp"
+#include "kernels/kernel_steps.hpp"
+#include "suite_inputs.hpp"
 
 namespace iblkit::consistency {
+namespace {
+
+const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
+const vulkan::TexelFormat& rg32() { return vulkan::texelFormatNamed("R32G32_SFLOAT"); }
+
+vulkan::Image uploadEnvironment(const vulkan::VulkanContext& context, const reference::CubeEnvironment& environment) {
+    vulkan::Image envMap(context, {"EnvMap", &rgba32(), environment.size(), environment.size(), 6, 1, true, false});
+    envMap.upload(context, environment.texels());
+    return envMap;
+}
+
+} // namespace
 
 std::vector<float> gpuBrdfLut(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size) {
-    vulkan::ComputeProgram compute(context, program.spirv, program.reflection);
-    vulkan::Image lut(context, {"Precomputed", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
-    compute.bind("Precomputed", lut);
-    compute.dispatchThreads(context, {size, size, 1});
+    kernels::Kernel kernel(context, program);
+    vulkan::Image lut(context, {"Precomputed", &rg32(), size, size, 1, 1, false, true});
+    kernels::runBrdfLut(kernel, lut);
     return lut.download(context);
 }
 
 std::vector<float> gpuPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
                                 const reference::CubeEnvironment& environment, float roughness, uint32_t size) {
-    vulkan::ComputeProgram compute(context, program.spirv, program.reflection);
-    const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
-    vulkan::Image envMap(context, {"EnvMap", &rgba32, environment.size(), environment.size(), 6, 1, true, false});
-    envMap.upload(context, environment.texels());
+    kernels::Kernel kernel(context, program);
+    auto envMap = uploadEnvironment(context, environment);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32, size, size, 6, 1, false, true});
-    // The round-tripped HLSL renames cbuffer members; the block holds one float at its first member's offset.
-    const auto* parameters = program.reflection.find("PrefilterSpecularParameter");
-    if (!parameters || parameters->members.empty())
-        throw vulkan::VulkanError("the prefilter program has no PrefilterSpecularParameter cbuffer with a member");
-    vulkan::Buffer parameterBuffer(context, 16, vk::BufferUsageFlagBits::eUniformBuffer, "PrefilterSpecularParameter");
-    parameterBuffer.write(std::as_bytes(std::span(&roughness, 1)), parameters->members.at(0).offset);
-    compute.bind("EnvMap", envMap);
-    compute.bind("EnvMapSampler", linear);
-    compute.bind("Prefiltered", prefiltered);
-    compute.bind("PrefilterSpecularParameter", parameterBuffer);
-    compute.dispatchThreads(context, {size, size, 6});
+    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    kernels::runPrefilter(kernel, envMap, linear, prefiltered, 0, {roughness});
+    return prefiltered.download(context);
+}
+
+std::vector<float> gpuBrdfLutChunks(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size,
+                                    uint32_t samples, uint32_t chunk) {
+    kernels::Kernel kernel(context, program);
+    vulkan::Image accumulator(context, {"Accumulated", &rg32(), size, size, 1, 1, false, true});
+    vulkan::Image lut(context, {"Precomputed", &rg32(), size, size, 1, 1, false, true});
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        kernels::runBrdfLutChunk(kernel, accumulator, lut, {first, count, last});
+    });
+    return lut.download(context);
+}
+
+std::vector<float> gpuPrefilterChunks(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const reference::CubeEnvironment& environment, float roughness, uint32_t size,
+                                      uint32_t samples, uint32_t chunk) {
+    kernels::Kernel kernel(context, program);
+    auto envMap = uploadEnvironment(context, environment);
+    const vulkan::Sampler linear(context, {});
+    vulkan::Image accumulator(context, {"Accumulated", &rgba32(), size, size, 6, 1, false, true});
+    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        kernels::runPrefilterChunk(kernel, envMap, linear, accumulator, prefiltered, 0, {roughness, first, count, last});
+    });
     return prefiltered.download(context);
 }
 

@@ -17,4 +17,12 @@ std::vector<float> gpuBrdfLut(const vulkan::VulkanContext& context, const PathPr
 std::vector<float> gpuPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
                                 const reference::CubeEnvironment& environment, float roughness, uint32_t size);
 
+// The chunked twins of both: `samples` (the program's SAMPLE_COUNT) in dispatches of `chunk`
+// samples through an accumulator image, the last dispatch writing the result.
+std::vector<float> gpuBrdfLutChunks(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size,
+                                    uint32_t samples, uint32_t chunk);
+std::vector<float> gpuPrefilterChunks(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const reference::CubeEnvironment& environment, float roughness, uint32_t size,
+                                      uint32_t samples, uint32_t chunk);
+
 } // namespace iblkit::consistency

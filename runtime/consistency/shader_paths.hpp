@@ -1,6 +1,7 @@
 #pragma once
 
 #include "compile_options.hpp"
+#include "kernels/kernel_table.hpp"
 #include "reflection.hpp"
 
 #include <cstdint>
@@ -21,10 +22,7 @@ inline constexpr ShaderPath kVulkanPaths[] = {ShaderPath::Glslang, ShaderPath::G
 
 std::string_view pathName(ShaderPath path);
 
-struct PathProgram {
-    std::vector<uint32_t> spirv;
-    compiler::ShaderReflection reflection;
-};
+using PathProgram = kernels::KernelProgram;
 
 // Compiles the shader the way the path says. Throws compiler::CompileError.
 PathProgram compileForPath(ShaderPath path, const compiler::CompileOptions& options);

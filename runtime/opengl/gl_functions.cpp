@@ -25,10 +25,10 @@ GlFunctions loadGlFunctions() {
     IBLKIT_LOAD(GetShaderInfoLog); IBLKIT_LOAD(DeleteShader); IBLKIT_LOAD(CreateProgram); IBLKIT_LOAD(AttachShader);
     IBLKIT_LOAD(LinkProgram); IBLKIT_LOAD(GetProgramiv); IBLKIT_LOAD(GetProgramInfoLog); IBLKIT_LOAD(DeleteProgram);
     IBLKIT_LOAD(UseProgram); IBLKIT_LOAD(CreateTextures); IBLKIT_LOAD(TextureStorage2D); IBLKIT_LOAD(TextureStorage3D);
-    IBLKIT_LOAD(TextureSubImage3D); IBLKIT_LOAD(GetTextureImage); IBLKIT_LOAD(DeleteTextures);
+    IBLKIT_LOAD(TextureSubImage2D); IBLKIT_LOAD(TextureSubImage3D); IBLKIT_LOAD(GetTextureImage); IBLKIT_LOAD(DeleteTextures);
     IBLKIT_LOAD(BindTextureUnit); IBLKIT_LOAD(BindImageTexture); IBLKIT_LOAD(CreateSamplers);
     IBLKIT_LOAD(SamplerParameteri); IBLKIT_LOAD(BindSampler); IBLKIT_LOAD(DeleteSamplers); IBLKIT_LOAD(CreateBuffers);
-    IBLKIT_LOAD(NamedBufferData); IBLKIT_LOAD(BindBufferBase); IBLKIT_LOAD(DeleteBuffers);
+    IBLKIT_LOAD(NamedBufferData); IBLKIT_LOAD(GetNamedBufferSubData); IBLKIT_LOAD(BindBufferBase); IBLKIT_LOAD(DeleteBuffers);
     IBLKIT_LOAD(DispatchCompute); IBLKIT_LOAD(MemoryBarrier); IBLKIT_LOAD(Finish);
 #undef IBLKIT_LOAD
     return gl;

@@ -1,6 +1,6 @@
 #pragma once
 
-// hlsl/Common/PBR.fxh in C++ with GLM, function by function: the same names, argument order,
+// hlsl/document/Common/PBR.fxh in C++ with GLM, function by function: the same names, argument order,
 // constants and order of operations, so that T = float follows the shader's arithmetic and
 // T = double gives the ground truth. The face table of PrefilterSpecularCS.hlsl is here too.
 

@@ -1,25 +1,56 @@
 #include "reference_bake.hpp"
 
+#include "parallel_rows.hpp"
 #include "pbr.hpp"
+#include "reference_irradiance.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
+#include <cmath>
 
 namespace iblkit::reference {
 namespace {
 
-// Runs row(0..rows-1) on every hardware thread.
-template <typename Row>
-void forEachRow(uint32_t rows, const Row& row) {
-    std::atomic<uint32_t> next{0};
-    const unsigned workers = std::max(1u, std::min(std::thread::hardware_concurrency(), rows));
-    std::vector<std::jthread> threads;
-    for (unsigned w = 0; w < workers; ++w)
-        threads.emplace_back([&] {
-            for (uint32_t r = next++; r < rows; r = next++) row(r);
-        });
+// hlsl/Common/Cube.fxh, function by function.
+template <typename T>
+vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
+    uv = (uv - T(0.5)) * vec2<T>(T(2), T(-2));
+    switch (face) {
+    case 0: return glm::normalize(vec3<T>(T(1), uv.y, -uv.x));
+    case 1: return glm::normalize(vec3<T>(T(-1), uv.y, uv.x));
+    case 2: return glm::normalize(vec3<T>(uv.x, T(1), -uv.y));
+    case 3: return glm::normalize(vec3<T>(uv.x, T(-1), uv.y));
+    case 4: return glm::normalize(vec3<T>(uv.x, uv.y, T(1)));
+    default: return glm::normalize(vec3<T>(-uv.x, uv.y, T(-1)));
+    }
 }
+
+float CubeAreaElement(float x, float y) { return std::atan2(x * y, std::sqrt(x * x + y * y + 1.f)); }
+
+float CubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size) {
+    const float inverseSize = 1.f / float(size);
+    const float x0 = 2.f * float(column) * inverseSize - 1.f, y0 = 2.f * float(row) * inverseSize - 1.f;
+    const float x1 = x0 + 2.f * inverseSize, y1 = y0 + 2.f * inverseSize;
+    return CubeAreaElement(x0, y0) - CubeAreaElement(x0, y1) - CubeAreaElement(x1, y0) + CubeAreaElement(x1, y1);
+}
+
+template <typename T>
+vec2<T> DirectionToEquirect(vec3<T> direction) {
+    const T longitude = std::atan2(direction.x, -direction.z);
+    const T latitude = std::acos(glm::clamp(direction.y, T(-1), T(1)));
+    return vec2<T>(T(0.5) + longitude / (T(2) * PI<T>), latitude / PI<T>);
+}
+
+// HLSL's lerp as llvmpipe computes it: a + t (b - a).
+template <typename T>
+vec3<T> lerp(vec3<T> a, vec3<T> b, T t) {
+    return a + t * (b - a);
+}
+
+size_t texelIndex(uint32_t face, uint32_t row, uint32_t column, uint32_t size) {
+    return ((size_t(face) * size + row) * size + column) * 4;
+}
+
+glm::vec3 texelRgb(const std::vector<float>& texels, size_t at) { return {texels[at], texels[at + 1], texels[at + 2]}; }
 
 } // namespace
 
@@ -56,9 +87,121 @@ std::vector<T> referencePrefilter(const CubeEnvironment& environment, T roughnes
     return faces;
 }
 
+template <typename T>
+std::vector<T> referenceEquirectToCube(const std::vector<float>& panorama, uint32_t width, uint32_t height, uint32_t size,
+                                       uint32_t supersample) {
+    const int w = int(width), h = int(height);
+    const auto texel = [&](int x, int y) { // EquirectTexel
+        x = (x % w + w) % w;
+        y = std::clamp(y, 0, h - 1);
+        const size_t at = (size_t(y) * width + size_t(x)) * 4;
+        return vec3<T>(T(panorama[at]), T(panorama[at + 1]), T(panorama[at + 2]));
+    };
+    const auto sample = [&](vec3<T> direction) { // SampleEquirect
+        const vec2<T> position = DirectionToEquirect(direction) * vec2<T>(T(w), T(h)) - T(0.5);
+        const vec2<T> cell = glm::floor(position), f = position - cell;
+        const int x = int(cell.x), y = int(cell.y);
+        const vec3<T> top = lerp(texel(x, y), texel(x + 1, y), f.x);
+        const vec3<T> bottom = lerp(texel(x, y + 1), texel(x + 1, y + 1), f.x);
+        return lerp(top, bottom, f.y);
+    };
+    std::vector<T> cube(size_t(6) * size * size * 4);
+    forEachRow(6 * size, [&](uint32_t faceRow) {
+        const uint32_t face = faceRow / size, y = faceRow % size;
+        for (uint32_t x = 0; x < size; ++x) {
+            vec3<T> sum(0);
+            for (uint32_t j = 0; j < supersample; ++j)
+                for (uint32_t i = 0; i < supersample; ++i) {
+                    const vec2<T> offset = (vec2<T>(T(i), T(j)) + T(0.5)) / T(supersample);
+                    sum += sample(CubeFaceDirection<T>(face, (vec2<T>(T(x), T(y)) + offset) / T(size)));
+                }
+            const vec3<T> color = sum / T(supersample * supersample);
+            const size_t at = texelIndex(face, y, x, size);
+            cube[at] = color.r;
+            cube[at + 1] = color.g;
+            cube[at + 2] = color.b;
+            cube[at + 3] = T(1);
+        }
+    });
+    return cube;
+}
+
+std::vector<float> downsampleCubeInFloat(const std::vector<float>& texels, uint32_t size) {
+    const uint32_t half = size / 2;
+    std::vector<float> result(size_t(6) * half * half * 4);
+    for (uint32_t face = 0; face < 6; ++face)
+        for (uint32_t row = 0; row < half; ++row)
+            for (uint32_t column = 0; column < half; ++column)
+                for (uint32_t c = 0; c < 4; ++c) {
+                    const auto at = [&](uint32_t i, uint32_t j) {
+                        return texels[texelIndex(face, 2 * row + j, 2 * column + i, size) + c];
+                    };
+                    const float sum = at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1);
+                    result[texelIndex(face, row, column, half) + c] = sum * 0.25f;
+                }
+    return result;
+}
+
+ShSums projectOnShInFloat(const std::vector<float>& texels, uint32_t size) {
+    constexpr uint32_t kGroupSize = 64;
+    ShSums sums{};
+    const uint32_t groupsPerSide = (size + 7) / 8;
+    for (uint32_t face = 0; face < 6; ++face)
+        for (uint32_t group = 0; group < groupsPerSide * groupsPerSide; ++group) {
+            std::array<std::array<glm::vec4, 9>, kGroupSize> shared{};
+            for (uint32_t thread = 0; thread < kGroupSize; ++thread) {
+                const uint32_t x = group % groupsPerSide * 8 + thread % 8, y = group / groupsPerSide * 8 + thread / 8;
+                auto basis = shBasis(glm::vec3(0.f, 0.f, 1.f));
+                glm::vec3 radiance(0.f);
+                float solidAngle = 0.f;
+                if (x < size && y < size) {
+                    basis = shBasis(CubeFaceDirection<float>(face, (glm::vec2(float(x), float(y)) + 0.5f) / float(size)));
+                    solidAngle = CubeTexelSolidAngle(x, y, size);
+                    radiance = texelRgb(texels, texelIndex(face, y, x, size));
+                }
+                for (uint32_t k = 0; k < 9; ++k) shared[thread][k] = glm::vec4(radiance * basis[k] * solidAngle, solidAngle);
+            }
+            for (uint32_t stride = kGroupSize / 2; stride > 0; stride /= 2)
+                for (uint32_t thread = 0; thread < stride; ++thread)
+                    for (uint32_t k = 0; k < 9; ++k) shared[thread][k] += shared[thread + stride][k];
+            for (uint32_t k = 0; k < 9; ++k) sums.radiance[k] += glm::dvec3(shared[0][k]);
+            sums.solidAngle += shared[0][0].w;
+        }
+    return sums;
+}
+
+std::vector<float> irradianceCubeInFloat(const std::vector<float>& texels, uint32_t size, uint32_t outSize) {
+    std::vector<float> result(size_t(6) * outSize * outSize * 4);
+    forEachRow(6 * outSize, [&](uint32_t faceRow) {
+        const uint32_t face = faceRow / outSize, y = faceRow % outSize;
+        for (uint32_t x = 0; x < outSize; ++x) {
+            const auto normal = CubeFaceDirection<float>(face, (glm::vec2(float(x), float(y)) + 0.5f) / float(outSize));
+            glm::vec3 sum(0.f);
+            for (uint32_t sourceFace = 0; sourceFace < 6; ++sourceFace)
+                for (uint32_t row = 0; row < size; ++row)
+                    for (uint32_t column = 0; column < size; ++column) {
+                        const auto uv = (glm::vec2(float(column), float(row)) + 0.5f) / float(size);
+                        const float cosine = glm::dot(normal, CubeFaceDirection<float>(sourceFace, uv));
+                        if (cosine > 0.f)
+                            sum += texelRgb(texels, texelIndex(sourceFace, row, column, size)) *
+                                   (cosine * CubeTexelSolidAngle(column, row, size));
+                    }
+            const glm::vec3 irradiance = sum / PI<float>;
+            const size_t at = texelIndex(face, y, x, outSize);
+            result[at] = irradiance.r;
+            result[at + 1] = irradiance.g;
+            result[at + 2] = irradiance.b;
+            result[at + 3] = 1.f;
+        }
+    });
+    return result;
+}
+
 template std::vector<float> referenceBrdfLut<float>(uint32_t, uint32_t);
 template std::vector<double> referenceBrdfLut<double>(uint32_t, uint32_t);
 template std::vector<float> referencePrefilter<float>(const CubeEnvironment&, float, uint32_t, uint32_t);
 template std::vector<double> referencePrefilter<double>(const CubeEnvironment&, double, uint32_t, uint32_t);
+template std::vector<float> referenceEquirectToCube<float>(const std::vector<float>&, uint32_t, uint32_t, uint32_t, uint32_t);
+template std::vector<double> referenceEquirectToCube<double>(const std::vector<float>&, uint32_t, uint32_t, uint32_t, uint32_t);
 
 } // namespace iblkit::reference

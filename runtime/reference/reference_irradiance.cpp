@@ -29,18 +29,6 @@ double cubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size) {
     return areaElement(x0, y0) - areaElement(x0, y1) - areaElement(x1, y0) + areaElement(x1, y1);
 }
 
-std::array<double, 9> shBasis(glm::dvec3 d) {
-    return {0.282094791773878,
-            0.488602511902920 * d.y,
-            0.488602511902920 * d.z,
-            0.488602511902920 * d.x,
-            1.092548430592079 * d.x * d.y,
-            1.092548430592079 * d.y * d.z,
-            0.315391565252520 * (3 * d.z * d.z - 1),
-            1.092548430592079 * d.x * d.z,
-            0.546274215296040 * (d.x * d.x - d.y * d.y)};
-}
-
 std::vector<float> downsampleCube(const std::vector<float>& texels, uint32_t size) {
     const uint32_t half = size / 2;
     std::vector<float> result(size_t(6) * half * half * 4);

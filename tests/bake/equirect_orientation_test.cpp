@@ -1,7 +1,7 @@
 // EquirectToCubeCS puts every direction of a panorama where the cube's convention says: a
 // panorama whose colour is its own direction (0.5 + 0.5 d) comes back as the direction of each
 // cube texel. The field is smooth, so only bilinear interpolation error remains.
-#include "bake_kernel.hpp"
+#include "kernels/kernel_steps.hpp"
 #include "reference_irradiance.hpp"
 #include "cube_environment.hpp"
 #include "vulkan_test_support.hpp"
@@ -33,13 +33,9 @@ TEST_F(EquirectOrientation, EveryCubeTexelSeesItsOwnDirection) {
     vulkan::Image equirect(context(), {"Equirect", &rgba32, width, height, 1, 1, false, false});
     equirect.upload(context(), panorama);
     vulkan::Image cube(context(), {"Cube", &rgba32, size, size, 6, 1, true, true});
-    BakeKernel kernel(context(), compileBakeShader("EquirectToCubeCS"));
-    kernel.program().bind("Equirect", equirect);
-    kernel.program().bind("Cube", cube);
-    kernel.setParameters({{"Supersample", {2}}});
-    BakeProgress progress(true);
-    progress.begin("test");
-    kernel.run({size, size, 6}, progress);
+    using namespace kernels;
+    Kernel kernel(context(), compileKernel(kernelFor(KernelRole::EquirectToCube)));
+    runEquirectToCube(kernel, equirect, cube, {2});
     const auto texels = cube.download(context());
 
     double worst = 0;

@@ -41,18 +41,18 @@ protected:
 };
 
 TEST_F(Cli, CompileWritesAllSevenFiles) {
-    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl", at("lut.glsl"),
+    const auto result = iblkit({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl", at("lut.glsl"),
                                 "--essl", at("lut.essl"), "--msl", at("lut.metal"), "--hlsl", at("lut.hlsl"),
                                 "--reflect", at("lut.json"), "-MD", "-MF", at("lut.d")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
     for (const char* name : {"lut.spv", "lut.glsl", "lut.essl", "lut.metal", "lut.hlsl", "lut.json", "lut.d"})
         EXPECT_GT(fs::file_size(out / name), 0u) << name;
     EXPECT_EQ(filesInOut(), 7u) << "no temporaries are left";
-    EXPECT_EQ(readFile(out / "lut.d"), at("lut.spv") + ": hlsl/PrecomputedBrdfCS.hlsl \\\n  hlsl/Common/PBR.fxh\n");
+    EXPECT_EQ(readFile(out / "lut.d"), at("lut.spv") + ": hlsl/document/PrecomputedBrdfCS.hlsl \\\n  hlsl/document/Common/PBR.fxh\n");
 }
 
 TEST_F(Cli, FlagsReachTheCompiler) {
-    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-Os", "--strip",
+    const auto result = iblkit({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-Os", "--strip",
                                 "-DSAMPLE_COUNT=64", "-I", "hlsl", "--image-format", "Precomputed=rg16f",
                                 "--binding-shift", "u=7", "--binding-shift", "b=0", "--reflect", at("lut.json")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -62,7 +62,7 @@ TEST_F(Cli, FlagsReachTheCompiler) {
 }
 
 TEST_F(Cli, RepeatableFlagsTakeOneValueEachWhereverTheSourceStands) {
-    const auto result = iblkit({"compile", "-I", "hlsl", "-D", "SAMPLE_COUNT=16", "hlsl/PrecomputedBrdfCS.hlsl", "-o",
+    const auto result = iblkit({"compile", "-I", "hlsl", "-D", "SAMPLE_COUNT=16", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o",
                                 at("lut.spv")});
     EXPECT_EQ(result.exitCode, 0) << result.err;
     EXPECT_TRUE(fs::exists(out / "lut.spv"));
@@ -70,7 +70,7 @@ TEST_F(Cli, RepeatableFlagsTakeOneValueEachWhereverTheSourceStands) {
 
 TEST_F(Cli, SameInputAndFlagsGiveByteIdenticalOutputs) {
     const auto compileInto = [&](const std::string& prefix) {
-        const auto result = iblkit({"compile", "hlsl/PrefilterSpecularCS.hlsl", "-o", at(prefix + ".spv"), "-O",
+        const auto result = iblkit({"compile", "hlsl/document/PrefilterSpecularCS.hlsl", "-o", at(prefix + ".spv"), "-O",
                                     "--glsl", at(prefix + ".glsl"), "--essl", at(prefix + ".essl"), "--msl",
                                     at(prefix + ".metal"), "--hlsl", at(prefix + ".hlsl"), "--reflect", at(prefix + ".json")});
         ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -104,12 +104,12 @@ TEST_F(Cli, MissingInclude) {
 }
 
 TEST_F(Cli, UnknownEntryPoint) {
-    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-E", "CSMain"},
-                  "hlsl/PrecomputedBrdfCS.hlsl: error: entry point 'CSMain' is not defined");
+    expectFailure({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-E", "CSMain"},
+                  "hlsl/document/PrecomputedBrdfCS.hlsl: error: entry point 'CSMain' is not defined");
 }
 
 TEST_F(Cli, UnsupportedStage) {
-    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-S", "raygen"},
+    expectFailure({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "-S", "raygen"},
                   "error: unsupported stage 'raygen'");
 }
 
@@ -118,11 +118,11 @@ TEST_F(Cli, MissingSourceFile) {
 }
 
 TEST_F(Cli, UnknownFlag) {
-    expectFailure({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "--fast-math"}, "iblkit: error:");
+    expectFailure({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "--fast-math"}, "iblkit: error:");
 }
 
 TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {
-    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl",
+    const auto result = iblkit({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl",
                                 at("no/such/folder/lut.glsl")});
     EXPECT_NE(result.exitCode, 0);
     EXPECT_NE(result.err.find("lut.glsl: error: cannot write the file: no such directory"), std::string::npos) << result.err;
@@ -131,7 +131,7 @@ TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {
 
 TEST_F(Cli, AFailedRunNeverDamagesAGoodOutput) {
     std::ofstream(out / "lut.spv") << "GOOD";
-    const auto result = iblkit({"compile", "hlsl/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-E", "nothere"});
+    const auto result = iblkit({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "-E", "nothere"});
     EXPECT_NE(result.exitCode, 0);
     EXPECT_EQ(readFile(out / "lut.spv"), "GOOD");
     EXPECT_EQ(filesInOut(), 1u);
@@ -140,8 +140,9 @@ TEST_F(Cli, AFailedRunNeverDamagesAGoodOutput) {
 TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
     const auto result = iblkit({"compile-all", "hlsl/shaders.json", "-o", at("all")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
-    const char* shaders[] = {"PrecomputedBrdfCS", "PrefilterSpecularCS", "EquirectToCubeCS", "DownsampleCubeCS",
-                             "ShProjectCS",       "IrradianceCubeCS",    "PreviewCS"};
+    const char* shaders[] = {"PrecomputedBrdfCS",      "PrefilterSpecularCS", "PrecomputedBrdfChunkCS",
+                             "PrefilterSpecularChunkCS", "EquirectToCubeCS",  "DownsampleCubeCS",
+                             "ShProjectCS",            "IrradianceCubeCS",    "PreviewCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;

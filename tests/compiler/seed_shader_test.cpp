@@ -91,7 +91,7 @@ TEST(SeedShaders, TheSameInputGivesByteIdenticalOutputs) {
 
 TEST(SeedShaders, DepfileListsTheSourceAndEveryInclude) {
     const auto shader = compileSeed("PrecomputedBrdfCS");
-    EXPECT_EQ(makeDepfile("out/lut.spv", shader), "out/lut.spv: hlsl/PrecomputedBrdfCS.hlsl \\\n  hlsl/Common/PBR.fxh\n");
+    EXPECT_EQ(makeDepfile("out/lut.spv", shader), "out/lut.spv: hlsl/document/PrecomputedBrdfCS.hlsl \\\n  hlsl/document/Common/PBR.fxh\n");
 }
 
 TEST(SeedShaders, StripRemovesNamesButKeepsTheReflection) {

@@ -43,7 +43,7 @@ protected:
         compiler::CompileOptions options;
         options.source = "hlsl/analytic_test.hlsl";
         options.sourceText = source;
-        options.includeDirs = {"hlsl"};
+        options.includeDirs = {"hlsl", "hlsl/document"};
         const auto shader = compiler::compileShader(options);
         vulkan::ComputeProgram program(*context, shader.spirv, shader.reflection);
         vulkan::Buffer output(*context, count * 4, vk::BufferUsageFlagBits::eStorageBuffer, "Output");

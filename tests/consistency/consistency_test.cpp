@@ -1,6 +1,8 @@
-// Every Vulkan path of the seed shaders computes what the C++ reference computes, within the
-// bounds measured and explained in docs/consistency.md; deliberately broken shaders do not.
+// Every path of every kernel computes what the C++ reference computes (PreviewCS: what path a
+// computes), within the bounds measured and explained in docs/consistency.md; deliberately
+// broken shaders do not.
 #include "consistency_suite.hpp"
+#include "kernels/kernel_table.hpp"
 #include "shader_paths.hpp"
 #include "read_file.hpp"
 #include "temp_folder.hpp"
@@ -15,6 +17,13 @@ namespace iblkit::consistency {
 namespace {
 
 namespace fs = std::filesystem;
+
+std::vector<std::string> allPathNames() {
+    std::vector<std::string> names;
+    for (const auto path : kVulkanPaths) names.emplace_back(pathName(path));
+    names.emplace_back(openGlPathName());
+    return names;
+}
 
 // Small enough for the broken variants, which fail long before the sizes matter.
 SuiteOptions testSizes(SuiteOptions options) {
@@ -35,12 +44,23 @@ std::vector<ConsistencyRow> run(const SuiteOptions& options) {
     return rows;
 }
 
-// The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 45 s).
+// Whether a row is of `path` (PreviewCS's path a row, its reference, says so after the name).
+bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.path.rfind(path, 0) == 0; }
+
+// The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 6u * 6u) << "LUT 512² and 32², four prefilter roughnesses: the float reference and five paths each";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 6)
+    ASSERT_EQ(rows.size(), 12u * 6u + 5u)
+        << "LUT 512² and 32², four prefilter roughnesses, the chunked LUT and prefilter, the panorama, the mip chain, the "
+           "harmonics and the irradiance cube: the float reference and five paths each; the preview: path a as the "
+           "reference and four paths";
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 13)
         << "path d runs on OpenGL for every output";
+    for (const auto& kernel : kernels::kernelTable())
+        for (const auto& path : allPathNames())
+            EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const auto& row) {
+                return row.kernel == kernel.name && isOnPath(row, path);
+            })) << kernel.name << " has no row on path " << path;
     for (const auto& row : rows) {
         if (row.isReference) continue;
         EXPECT_TRUE(row.passed) << row.output << " / " << row.path << ": max " << row.vsFloat.maxAbsolute << " vs float, "
@@ -66,33 +86,49 @@ protected:
         return options;
     }
 
-    static void expectEveryPathFails(const std::vector<ConsistencyRow>& rows, const std::string& output) {
+    static void expectEveryPathFails(const std::vector<ConsistencyRow>& rows, const std::string& kernel) {
         size_t failedPaths = 0, paths = 0;
         for (const auto& row : rows)
-            if (!row.isReference && row.output.rfind(output, 0) == 0) {
+            if (!row.isReference && row.kernel == kernel) {
                 ++paths;
                 failedPaths += !row.passed;
             }
-        EXPECT_GT(paths, 0u);
-        EXPECT_EQ(failedPaths, paths) << "a broken " << output << " passed the comparison on some path";
+        EXPECT_GT(paths, 0u) << kernel;
+        EXPECT_EQ(failedPaths, paths) << "a broken " << kernel << " passed the comparison on some path";
     }
 
     testing::TempFolder scratch;
 };
 
 TEST_F(BrokenVariant, KFromDirectLightingFailsTheLut) {
-    const auto rows = run(broken("Common/PBR.fxh", "float k = ( a * a ) / 2.f;", "float k = ( ( a + 1.f ) * ( a + 1.f ) ) / 8.f;"));
-    expectEveryPathFails(rows, "LUT");
+    const auto rows = run(broken("document/Common/PBR.fxh", "float k = ( a * a ) / 2.f;", "float k = ( ( a + 1.f ) * ( a + 1.f ) ) / 8.f;"));
+    expectEveryPathFails(rows, "PrecomputedBrdfCS");
+    expectEveryPathFails(rows, "PrecomputedBrdfChunkCS");
 }
 
 TEST_F(BrokenVariant, TransposedTangentFrameFailsThePrefilter) {
-    const auto rows = run(broken("Common/PBR.fxh", "return normalize( mul( h, toWorld ) );", "return normalize( mul( toWorld, h ) );"));
-    expectEveryPathFails(rows, "prefilter");
+    const auto rows = run(broken("document/Common/PBR.fxh", "return normalize( mul( h, toWorld ) );", "return normalize( mul( toWorld, h ) );"));
+    expectEveryPathFails(rows, "PrefilterSpecularCS");
+    expectEveryPathFails(rows, "PrefilterSpecularChunkCS");
 }
 
 TEST_F(BrokenVariant, SwappedCubeFaceFailsThePrefilter) {
-    const auto rows = run(broken("PrefilterSpecularCS.hlsl", "normal = float3( uv.x, 1.f, -uv.y );", "normal = float3( uv.x, -1.f, uv.y );"));
-    expectEveryPathFails(rows, "prefilter");
+    const auto rows = run(broken("document/PrefilterSpecularCS.hlsl", "normal = float3( uv.x, 1.f, -uv.y );", "normal = float3( uv.x, -1.f, uv.y );"));
+    expectEveryPathFails(rows, "PrefilterSpecularCS");
+}
+
+// The kit's cube geometry: +Y's direction swapped for -Y's in Cube.fxh.
+TEST_F(BrokenVariant, SwappedCubeFaceFailsEveryKernelOfCubeFxh) {
+    const auto rows = run(broken("Common/Cube.fxh", "direction = float3( uv.x, 1.f, -uv.y );", "direction = float3( uv.x, -1.f, uv.y );"));
+    for (const char* kernel : {"PrefilterSpecularChunkCS", "EquirectToCubeCS", "ShProjectCS", "IrradianceCubeCS"})
+        expectEveryPathFails(rows, kernel);
+}
+
+// A wrong 2x2 weight: texel (1, 0) read twice, (1, 1) never.
+TEST_F(BrokenVariant, WrongTexelFailsTheMipChain) {
+    const auto rows = run(broken("DownsampleCubeCS.hlsl", "Source.Load( int4( corner + int2( 1, 1 ), DTid.z, SourceMip ) )",
+                                 "Source.Load( int4( corner + int2( 1, 0 ), DTid.z, SourceMip ) )"));
+    expectEveryPathFails(rows, "DownsampleCubeCS");
 }
 
 } // namespace
@@ -107,14 +143,14 @@ TEST(CommittedReport, IsTheCommandsOutputWithEveryPathWithinItsBounds) {
     const std::string report = testing::readFile("docs/consistency.md");
     ASSERT_FALSE(report.empty()) << "docs/consistency.md is missing; run: iblkit consistency --out docs/consistency.md";
     EXPECT_NE(report.find("Made by `iblkit consistency --out docs/consistency.md`"), std::string::npos);
-    for (const char* output : {"| LUT 512² |", "| LUT 32² |", "| prefilter 32² r=0 |", "| prefilter 32² r=0.25 |",
-                               "| prefilter 32² r=0.5 |", "| prefilter 32² r=1 |"})
-        for (const auto path : kVulkanPaths) {
-            EXPECT_NE(report.find(std::string(output) + " " + std::string(pathName(path)) + " |"), std::string::npos)
-                << output << " " << pathName(path);
-            EXPECT_NE(report.find(std::string(output) + " " + std::string(openGlPathName()) + " |"), std::string::npos)
-                << output << " on OpenGL";
-        }
+    std::vector<std::string> lines;
+    std::istringstream stream(report);
+    for (std::string line; std::getline(stream, line);) lines.push_back(line);
+    for (const auto& kernel : kernels::kernelTable())
+        for (const auto& path : allPathNames())
+            EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& line) {
+                return line.rfind("| " + kernel.name + " | ", 0) == 0 && line.find(" | " + path) != std::string::npos;
+            })) << "the report has no row of " << kernel.name << " on path " << path;
     EXPECT_EQ(report.find("**no**"), std::string::npos) << "a row of the committed report is outside its bounds";
     EXPECT_NE(report.find(boundsRationale()), std::string::npos) << "the report's bounds are not the suite's";
 }

@@ -37,7 +37,7 @@ protected:
 
 TEST_F(RunFiles, TheDocumentedPrefilterExampleReadsAsWritten) {
     const auto spec = readRunFile("docs/examples/prefilter_white_furnace.run.json");
-    EXPECT_EQ(spec.shader, fs::path("docs/examples/../../hlsl/PrefilterSpecularCS.hlsl"));
+    EXPECT_EQ(spec.shader, fs::path("docs/examples/../../hlsl/document/PrefilterSpecularCS.hlsl"));
     EXPECT_EQ(spec.defines.at("SAMPLE_COUNT"), "1024");
     ASSERT_EQ(spec.resources.size(), 4u);
     const auto& env = *std::find_if(spec.resources.begin(), spec.resources.end(), [](auto& r) { return r.name == "EnvMap"; });

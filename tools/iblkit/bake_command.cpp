@@ -20,9 +20,9 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"wall_ms", summary.wallMilliseconds},
             {"steps", steps},
             {"files", bake::filesJson(summary.files)},
-            {"sh_radiance", summary.manifest.at("irradiance").at("sh").at("radiance")},
-            {"clamped_values", summary.manifest.at("half_range").at("clamped_values")},
-            {"sanitized_texels", summary.manifest.at("input").at("sanitized_texels")}};
+            {"sh_radiance", bake::coefficientsJson(summary.shRadiance)},
+            {"clamped_values", summary.clampedValues},
+            {"sanitized_texels", summary.sanitizedTexels}};
 }
 
 void printSummary(const bake::BakeSummary& summary) {
@@ -31,9 +31,9 @@ void printSummary(const bake::BakeSummary& summary) {
     for (const auto& file : summary.files)
         if (file.name.find('/') == std::string::npos) fmt::print(stderr, " {}", file.name);
     fmt::print(stderr, "\n");
-    const auto clamped = summary.manifest.at("half_range").at("clamped_values").get<size_t>();
+    const auto clamped = summary.clampedValues;
     if (clamped) fmt::print(stderr, "clamped {} values to the 16-bit float range (--clamp-half)\n", clamped);
-    const auto sanitized = summary.manifest.at("input").at("sanitized_texels").get<size_t>();
+    const auto sanitized = summary.sanitizedTexels;
     if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
 }
 

@@ -17,7 +17,7 @@ void addConsistencyCommand(CLI::App& app) {
         uint32_t samples = 1024;
     };
     auto arguments = std::make_shared<Arguments>();
-    auto* command = app.add_subcommand("consistency", "Run every form of the seed shaders and compare with the C++ reference");
+    auto* command = app.add_subcommand("consistency", "Run every kernel of hlsl/shaders.json in every form and compare with the C++ reference");
     command->add_option("--out", arguments->out, "Write the report (Markdown) to this file");
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
     command->add_option("--samples", arguments->samples, "Samples per texel (default 1024, the documents')");

@@ -1,4 +1,5 @@
 #include "bake_command.hpp"
+#include "bench_command.hpp"
 #include "command_line.hpp"
 #include "compile_all_command.hpp"
 #include "compile_command.hpp"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addRunCommand(app);
     iblkit::cli::addConsistencyCommand(app);
     iblkit::cli::addBakeCommand(app);
+    iblkit::cli::addBenchCommand(app);
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {

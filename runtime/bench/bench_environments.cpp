@@ -1,0 +1,95 @@
+#include "bench_environments.hpp"
+
+#include "bake.hpp"
+#include "bench_error.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace iblkit::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+bake::EnvironmentInput constantCube(uint32_t size, float radiance) {
+    bake::EnvironmentInput input;
+    input.kind = bake::InputKind::Cube;
+    input.cubeSize = size;
+    input.cubeTexels.assign(size_t(6) * size * size * 4, radiance);
+    for (size_t texel = 0; texel < input.cubeTexels.size() / 4; ++texel) input.cubeTexels[texel * 4 + 3] = 1.f;
+    return input;
+}
+
+// One texel of 1e4 on a background of 1, away from the faces' centres and edges so that no
+// prefiltered texel direction passes exactly through it.
+bake::EnvironmentInput sunCube(uint32_t size) {
+    auto input = constantCube(size, 1.f);
+    const uint32_t face = 4, row = size * 3 / 8, column = size * 5 / 8;
+    float* sun = &input.cubeTexels[((size_t(face) * size + row) * size + column) * 4];
+    std::fill(sun, sun + 3, 1e4f);
+    return input;
+}
+
+std::string quoted(const fs::path& path) {
+    std::string text = "'";
+    for (const char c : path.string()) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return text + "'";
+}
+
+void runShell(const std::string& command, const std::string& what) {
+    if (std::system(command.c_str()) != 0) throw BenchError("could not " + what + " (" + command + ")");
+}
+
+bool isBlenderWorld(const std::string& name) {
+    return std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), name) != std::end(kBlenderWorlds);
+}
+
+BenchEnvironment resolveOne(const std::string& name, uint32_t size, const fs::path& cacheDir) {
+    if (name == "sky") return {name, bake::loadEnvironment(std::nullopt, false, bake::builtInPanoramaWidth(size))};
+    if (name == "furnace") return {name, constantCube(size, 1.f)};
+    if (name == "sun") return {name, sunCube(size)};
+    if (isBlenderWorld(name)) return {name, bake::loadEnvironment(blenderWorlds(cacheDir) / (name + ".exr"), false, 0)};
+    if (!fs::exists(name))
+        throw BenchError(fmt::format("no environment '{}': not a file, nor sky, furnace, sun, blender or one of "
+                                     "blender's worlds (city, courtyard, forest, ...)", name));
+    return {fs::path(name).stem().string(), bake::loadEnvironment(fs::path(name), false, 0)};
+}
+
+} // namespace
+
+fs::path blenderWorlds(const fs::path& cacheDir) {
+    const fs::path worlds = cacheDir / "blender-data" / "world";
+    if (fs::exists(worlds / "sunset.exr")) return worlds;
+    const fs::path download = cacheDir / fmt::format("blender-data.download.{}", getpid());
+    fs::remove_all(download);
+    fs::create_directories(download);
+    fmt::print(stderr, "fetching Debian's blender-data package for its world HDRIs into {}\n", cacheDir.string());
+    runShell("cd " + quoted(download) + " && apt-get download -q blender-data >&2", "download blender-data");
+    const std::string member = "./usr/share/blender/datafiles/studiolights/world";
+    runShell("dpkg-deb --fsys-tarfile " + quoted(download) + "/blender-data_*.deb | tar -x -C " + quoted(download) +
+                 " " + member,
+             "unpack blender-data's world HDRIs");
+    fs::create_directories(worlds.parent_path());
+    fs::remove_all(worlds);
+    fs::rename(download / member, worlds); // whole or not at all
+    fs::remove_all(download);
+    return worlds;
+}
+
+std::vector<BenchEnvironment> resolveEnvironments(const std::vector<std::string>& names, uint32_t size,
+                                                  const fs::path& cacheDir) {
+    std::vector<BenchEnvironment> environments;
+    for (const auto& name : names) {
+        if (name == "blender") {
+            for (const auto* world : kBlenderWorlds) environments.push_back(resolveOne(world, size, cacheDir));
+            continue;
+        }
+        environments.push_back(resolveOne(name, size, cacheDir));
+    }
+    return environments;
+}
+
+} // namespace iblkit::bench

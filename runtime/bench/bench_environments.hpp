@@ -1,0 +1,33 @@
+#pragma once
+
+#include "environment_input.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace iblkit::bench {
+
+// An environment the bench measures on: a name for the tables and the input the bake reads.
+struct BenchEnvironment {
+    std::string name;
+    bake::EnvironmentInput input;
+};
+
+// The synthetic environments, by name: "sky" (the bake's built-in sky), "furnace" (radiance 1
+// everywhere: every method must return exactly 1), "sun" (radiance 1 with one texel of 1e4).
+// The eight world HDRIs of Debian's blender-data package (CC0) by their names ("forest", ...),
+// or all of them as "blender". Anything else is a path the bake can read.
+inline constexpr const char* kBlenderWorlds[] = {"city", "courtyard", "forest", "interior",
+                                                 "night", "studio", "sunrise", "sunset"};
+
+// Resolves names into environments for a cube of `size`. Blender's HDRIs are fetched with
+// `apt-get download blender-data` into `cacheDir` the first time they are asked for.
+// Throws BenchError (or the bake's errors for a bad file), naming the environment.
+std::vector<BenchEnvironment> resolveEnvironments(const std::vector<std::string>& names, uint32_t size,
+                                                  const std::filesystem::path& cacheDir);
+
+// The folder that holds blender-data's world HDRIs under `cacheDir`, fetched when missing.
+std::filesystem::path blenderWorlds(const std::filesystem::path& cacheDir);
+
+} // namespace iblkit::bench

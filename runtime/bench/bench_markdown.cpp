@@ -1,0 +1,144 @@
+#include "bench_report.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace iblkit::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The error targets the kit's defaults must meet on every environment.
+constexpr double kTargetRms = 0.01, kTargetMax = 0.05;
+
+std::string percent(double value) {
+    if (!std::isfinite(value)) return "inf";
+    return value >= 0.1 ? fmt::format("{:.1f} %", 100 * value) : fmt::format("{:.2g} %", 100 * value);
+}
+
+std::string seconds(double milliseconds) { return fmt::format("{:.3g}", milliseconds / 1e3); }
+
+std::vector<const BenchResult*> select(const BenchRun& run, BenchOutput output, const std::string& environment) {
+    std::vector<const BenchResult*> chosen;
+    for (const auto& result : run.results)
+        if (result.output == output && (output != BenchOutput::Specular || result.environment == environment))
+            chosen.push_back(&result);
+    return chosen;
+}
+
+std::vector<std::string> environmentsOf(const BenchRun& run) {
+    std::vector<std::string> names;
+    for (const auto& result : run.results)
+        if (result.output == BenchOutput::Specular &&
+            std::find(names.begin(), names.end(), result.environment) == names.end())
+            names.push_back(result.environment);
+    return names;
+}
+
+std::string specularTable(const std::vector<const BenchResult*>& results) {
+    if (results.empty()) return {};
+    const auto& mips = results.front()->mips;
+    std::string header = "| method | samples | device s | wall s |", rule = "|---|---:|---:|---:|";
+    for (const auto& mip : mips) {
+        header += fmt::format(" mip {} (r {:.2f}) RMS / max |", mip.mip, mip.roughness);
+        rule += "---:|";
+    }
+    std::string text = header + "\n" + rule + "\n";
+    for (const auto* result : results) {
+        text += fmt::format("| {} | {} | {} | {} |", result->method, result->samples, seconds(result->deviceMilliseconds),
+                            seconds(result->wallMilliseconds));
+        for (const auto& mip : result->mips) text += fmt::format(" {} / {} |", percent(mip.rms), percent(mip.max));
+        text += "\n";
+    }
+    return text;
+}
+
+// The fastest configuration of each method that meets both targets on the environment.
+std::string targetTable(const BenchRun& run, const std::vector<std::string>& environments) {
+    std::set<std::string> methods;
+    for (const auto& result : run.results)
+        if (result.output == BenchOutput::Specular) methods.insert(result.method);
+    std::string text = fmt::format("| environment | method | fastest within {} RMS and {} max | device s | best RMS / max "
+                                   "reached |\n|---|---|---|---:|---|\n",
+                                   percent(kTargetRms), percent(kTargetMax));
+    for (const auto& environment : environments)
+        for (const auto& method : methods) {
+            const BenchResult *fastest = nullptr, *best = nullptr;
+            for (const auto* result : select(run, BenchOutput::Specular, environment)) {
+                if (result->method != method) continue;
+                if (!best || result->errorRms < best->errorRms) best = result;
+                const bool meets = result->errorRms <= kTargetRms && result->errorMax <= kTargetMax;
+                if (meets && (!fastest || result->deviceMilliseconds < fastest->deviceMilliseconds)) fastest = result;
+            }
+            if (!best) continue;
+            text += fmt::format("| {} | {} | {} | {} | {} / {} at {} samples |\n", environment, method,
+                                fastest ? fmt::format("{} samples", fastest->samples) : "not reached",
+                                fastest ? seconds(fastest->deviceMilliseconds) : "—", percent(best->errorRms),
+                                percent(best->errorMax), best->samples);
+        }
+    return text;
+}
+
+std::string lutTable(const BenchRun& run) {
+    std::string text = "| method | samples | device s | wall s | max abs error | RMS abs error |\n|---|---:|---:|---:|---:|---:|\n";
+    for (const auto* result : select(run, BenchOutput::Lut, {}))
+        text += fmt::format("| {} | {} | {} | {} | {:.2e} | {:.2e} |\n", result->method, result->samples,
+                            seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds), result->errorMax,
+                            result->errorRms);
+    return text;
+}
+
+std::string irradianceTable(const BenchRun& run) {
+    std::string text = "| environment | method | device s | wall s | RMS | max |\n|---|---|---:|---:|---:|---:|\n";
+    for (const auto* result : select(run, BenchOutput::Irradiance, {}))
+        text += fmt::format("| {} | {} | {} | {} | {} | {} |\n", result->environment, result->method,
+                            seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds),
+                            percent(result->errorRms), percent(result->errorMax));
+    return text;
+}
+
+std::string images(const std::vector<std::string>& plots, const std::string& prefix, const fs::path& relativeFolder) {
+    std::string text;
+    for (const auto& plot : plots)
+        if (plot.starts_with(prefix)) text += fmt::format("![{}]({})\n\n", plot, (relativeFolder / plot).generic_string());
+    return text;
+}
+
+} // namespace
+
+std::string renderBenchMarkdown(const BenchRun& run, const std::string& command, const fs::path& folder,
+                                const std::vector<std::string>& plots, const fs::path& markdownFile) {
+    const auto base = markdownFile.parent_path().empty() ? fs::path(".") : markdownFile.parent_path();
+    const auto relativeFolder = fs::relative(folder, base);
+    const auto environments = environmentsOf(run);
+    std::string text = "# Benchmark: time against error\n\n";
+    text += fmt::format("Made by `{}` on {}; do not edit. The numbers are in [results.csv]({}) and [results.json]({}).\n\n",
+                        command, run.date, (relativeFolder / "results.csv").generic_string(),
+                        (relativeFolder / "results.json").generic_string());
+    text += fmt::format("- Machine: {}\n- Device: {}\n", run.machine, run.device);
+    text += "- Times: device time from Vulkan timestamps summed over a configuration's dispatches, and wall time from "
+            "the first dispatch to the last one's completion, each the median of the repeats; shader compilation is "
+            "not included.\n"
+            "- Specular: the prefiltered mips 1 and up, as the bake makes them, against the converged prefilter integral "
+            "(the exact sum over the source cube's texels with their solid angles) at seeded texels of each mip; the "
+            "error is the relative error of luminance, RMS and max per mip. A configuration's error is its worst mip's.\n"
+            "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error.\n"
+            "- Irradiance: every texel against the exact sum over the source cube; relative error of luminance.\n\n";
+    text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
+    text += "### Time to reach the targets\n\n" + targetTable(run, environments) + "\n";
+    for (const auto& environment : environments) {
+        text += fmt::format("### {}\n\n", environment);
+        text += images(plots, "specular_" + environment + ".", relativeFolder);
+        text += specularTable(select(run, BenchOutput::Specular, environment)) + "\n";
+    }
+    if (!select(run, BenchOutput::Lut, {}).empty())
+        text += "## BRDF LUT\n\n" + images(plots, "lut", relativeFolder) + lutTable(run) + "\n";
+    if (!select(run, BenchOutput::Irradiance, {}).empty())
+        text += "## Irradiance\n\n" + images(plots, "irradiance", relativeFolder) + irradianceTable(run);
+    return text;
+}
+
+} // namespace iblkit::bench

@@ -1,0 +1,65 @@
+#pragma once
+
+#include "kernels/kernel_table.hpp"
+#include "vulkan_context.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace iblkit::bench {
+
+enum class BenchOutput { Specular, Lut, Irradiance };
+std::string_view outputName(BenchOutput output);
+
+struct BenchOptions {
+    std::vector<std::string> environments{"sky"}; // see bench_environments.hpp
+    std::vector<std::string> methods;             // prefilter and LUT methods; empty: every one in the table
+    std::vector<uint32_t> samples{16, 64, 256, 1024, 4096, 16384, 65536};
+    uint32_t size = 256;          // source cube face; specular mips down to 8x8, as the bake makes them
+    uint32_t lutSize = 512;
+    uint32_t irradianceSize = 32;
+    uint32_t texelsPerMip = 192;  // reference texels per specular mip, seeded
+    uint64_t seed = 1;
+    uint32_t repeat = 3;          // timed runs per configuration; times are their medians
+    std::vector<BenchOutput> outputs{BenchOutput::Specular, BenchOutput::Lut, BenchOutput::Irradiance};
+    std::filesystem::path cacheDir; // references and downloads
+    kernels::ShaderFiles shaderFiles = kernels::embeddedShaderFiles(); // what the methods compile from
+    vulkan::ContextOptions context;
+    std::FILE* log = stderr; // progress, one line per configuration; nullptr: quiet
+};
+
+struct MipError {
+    uint32_t mip;
+    double roughness;
+    uint32_t texels;
+    double rms, max; // luminance relative error
+};
+
+// One configuration: an output of a method at a sample count, on an environment (none for
+// the LUT). Errors: specular, the worst mip's RMS and max of luminance relative error; LUT,
+// absolute error of scale and bias over the whole grid; irradiance, luminance relative error
+// over every texel.
+struct BenchResult {
+    BenchOutput output;
+    std::string environment;
+    std::string method;
+    uint32_t samples = 0;
+    uint32_t chunkSamples = 0; // samples per dispatch when split under the loop limit, else 0
+    double deviceMilliseconds = 0; // median over the repeats
+    double wallMilliseconds = 0;
+    uint32_t repeat = 0;
+    double errorRms = 0, errorMax = 0;
+    std::vector<MipError> mips; // specular only
+};
+
+struct BenchRun {
+    std::string device;
+    std::string machine;
+    std::string date;
+    std::vector<BenchResult> results;
+};
+
+} // namespace iblkit::bench

@@ -1,0 +1,126 @@
+#include "bench_runner.hpp"
+
+#include "bench_environments.hpp"
+#include "bench_error.hpp"
+#include "gpu_steps.hpp"
+#include "kernels/sampled_methods.hpp"
+#include "measurements.hpp"
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <ctime>
+#include <fstream>
+#include <thread>
+#include <unistd.h>
+
+namespace iblkit::bench {
+namespace {
+
+std::string today() {
+    const std::time_t now = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
+    return text;
+}
+
+std::string machineDescription() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line))
+        if (line.starts_with("model name")) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    return fmt::format("{}, {} hardware threads, {:.0f} GiB", model, std::thread::hardware_concurrency(),
+                       memory / double(1ull << 30));
+}
+
+void validate(const BenchOptions& options, const std::vector<std::string>& methods) {
+    for (const auto& method : methods) {
+        const auto known = kernels::methodsOf(kernels::KernelRole::Prefilter);
+        if (std::find(known.begin(), known.end(), method) == known.end())
+            throw BenchError(fmt::format("no method '{}' (the kernel table has: {})", method, fmt::join(known, ", ")));
+    }
+    for (const uint32_t samples : options.samples)
+        if (samples == 0 || samples > kernels::kMaxSamples)
+            throw BenchError(fmt::format("a sample count must be between 1 and {}, not {}", kernels::kMaxSamples, samples));
+    if (options.size < 16 || options.size > 4096 || (options.size & (options.size - 1)))
+        throw BenchError(fmt::format("the cube size must be a power of two from 16 to 4096, not {}", options.size));
+    if (options.lutSize == 0 || options.lutSize > 4096) throw BenchError("the LUT size must be from 1 to 4096");
+    if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
+    if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
+}
+
+bool wants(const BenchOptions& options, BenchOutput output) {
+    return std::find(options.outputs.begin(), options.outputs.end(), output) != options.outputs.end();
+}
+
+void logResult(const BenchOptions& options, const BenchResult& result) {
+    if (!options.log) return;
+    const bool relative = result.output != BenchOutput::Lut;
+    const auto error = [&](double value) {
+        return relative ? fmt::format("{:.3g} %", 100 * value) : fmt::format("{:.2e}", value);
+    };
+    fmt::print(options.log, "bench  {:<10} {:<11} {:<10} {:>7} samples  RMS {:>10}  max {:>10}  device {:8.1f} ms  wall {:8.1f} ms\n",
+               outputName(result.output), result.environment.empty() ? "-" : result.environment, result.method,
+               result.samples, error(result.errorRms), error(result.errorMax), result.deviceMilliseconds,
+               result.wallMilliseconds);
+    std::fflush(options.log);
+}
+
+void benchEnvironment(const vulkan::VulkanContext& context, const BenchEnvironment& environment,
+                      const std::vector<std::string>& methods, const BenchOptions& options, const ReferenceCache& cache,
+                      std::vector<BenchResult>& results) {
+    bake::BakeProgress quiet(true);
+    auto source = bake::buildSourceCube(context, environment.input, options.size, quiet);
+    const SourceCube cube{source.download(context), options.size, source.desc().mips};
+    const auto add = [&](BenchResult result) {
+        result.environment = environment.name;
+        logResult(options, result);
+        results.push_back(std::move(result));
+    };
+    if (wants(options, BenchOutput::Specular)) {
+        if (options.log) fmt::print(options.log, "bench  {}: converged prefilter references\n", environment.name);
+        SpecularBench specular(context, source, cube, options, cache);
+        for (const auto& method : methods)
+            for (const uint32_t samples : options.samples) add(specular.measure(method, samples));
+    }
+    if (wants(options, BenchOutput::Irradiance)) add(measureIrradiance(context, source, cube, options, cache));
+}
+
+} // namespace
+
+std::string_view outputName(BenchOutput output) {
+    switch (output) {
+    case BenchOutput::Specular: return "specular";
+    case BenchOutput::Lut: return "lut";
+    case BenchOutput::Irradiance: return "irradiance";
+    }
+    return "?";
+}
+
+BenchRun runBench(const BenchOptions& options) {
+    const auto methods = options.methods.empty() ? kernels::methodsOf(kernels::KernelRole::Prefilter) : options.methods;
+    validate(options, methods);
+    const auto cacheDir = options.cacheDir.empty() ? ReferenceCache::defaultFolder() : options.cacheDir;
+    const ReferenceCache cache(cacheDir);
+    const auto environments = resolveEnvironments(options.environments, options.size, cacheDir);
+    const vulkan::VulkanContext context(options.context);
+    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}};
+    if (wants(options, BenchOutput::Lut)) {
+        if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
+        LutBench lut(context, options, cache);
+        for (const auto& method : methods)
+            for (const uint32_t samples : options.samples) {
+                run.results.push_back(lut.measure(method, samples));
+                logResult(options, run.results.back());
+            }
+    }
+    for (const auto& environment : environments) benchEnvironment(context, environment, methods, options, cache, run.results);
+    return run;
+}
+
+} // namespace iblkit::bench

@@ -1,0 +1,40 @@
+#include "measurements.hpp"
+
+#include "converged_lut.hpp"
+#include "kernels/sampled_methods.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace iblkit::bench {
+
+LutBench::LutBench(const vulkan::VulkanContext& context, const BenchOptions& options, const ReferenceCache& cache)
+    : context_(context), options_(options) {
+    const reference::LutQuadrature quadrature;
+    const auto key = ReferenceCache::key(fmt::format("converged lut v1 size {} nodes {} {}", options.lutSize,
+                                                     quadrature.thetaNodes, quadrature.phiNodes),
+                                         {});
+    reference_ = cache.getOrCompute(key, [&] { return reference::convergedBrdfLut(options.lutSize, quadrature); });
+}
+
+BenchResult LutBench::measure(const std::string& method, uint32_t samples) {
+    kernels::BrdfLutMethod integrator(context_, method, samples, 0, options_.shaderFiles);
+    const uint32_t size = options_.lutSize;
+    vulkan::Image lut(context_, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
+    const auto timing = timeRepeated(options_.repeat, [&] {
+        integrator.run(lut);
+        return integrator.takeTotals().deviceMilliseconds;
+    });
+    const auto values = lut.download(context_);
+    double sumSquares = 0, worst = 0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const double error = std::abs(double(values[i]) - reference_[i]);
+        sumSquares += error * error;
+        worst = std::max(worst, std::isnan(error) ? INFINITY : error);
+    }
+    return {BenchOutput::Lut, {}, method, samples, integrator.chunkSamples(), timing.deviceMilliseconds,
+            timing.wallMilliseconds, options_.repeat, std::sqrt(sumSquares / double(values.size())), worst, {}};
+}
+
+} // namespace iblkit::bench

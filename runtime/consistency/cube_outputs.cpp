@@ -1,0 +1,119 @@
+// The kit's cube kernels: the panorama's resampling, the mip chain, the harmonics, the
+// irradiance cube and the preview.
+#include "gl_cube_bake.hpp"
+#include "gpu_cube_bake.hpp"
+#include "reference_bake.hpp"
+#include "reference_irradiance.hpp"
+#include "suite_run.hpp"
+
+#include <fmt/core.h>
+
+#include <bit>
+#include <numbers>
+
+namespace iblkit::consistency {
+namespace {
+
+// The 9 coefficients' RGB, then the solid angle the texels covered.
+std::vector<float> flattened(const std::array<glm::dvec3, 9>& radiance, double solidAngle) {
+    std::vector<float> values;
+    for (const auto& coefficient : radiance)
+        values.insert(values.end(), {float(coefficient.r), float(coefficient.g), float(coefficient.b)});
+    values.push_back(float(solidAngle));
+    return values;
+}
+
+std::vector<double> flattenedInDouble(const std::array<glm::dvec3, 9>& radiance, double solidAngle) {
+    std::vector<double> values;
+    for (const auto& coefficient : radiance) values.insert(values.end(), {coefficient.r, coefficient.g, coefficient.b});
+    values.push_back(solidAngle);
+    return values;
+}
+
+std::vector<double> rgbaWithAlphaOne(const std::vector<glm::dvec3>& texels) {
+    std::vector<double> values;
+    for (const auto& texel : texels) values.insert(values.end(), {texel.r, texel.g, texel.b, 1.0});
+    return values;
+}
+
+void addEquirectOutput(SuiteRun& run) {
+    const auto& options = run.options;
+    const auto panorama = testPanorama(options.panoramaWidth);
+    const uint32_t size = options.cubeSize, supersample = options.supersample;
+    const auto reference = [&]<typename T>(T) {
+        return reference::referenceEquirectToCube<T>(panorama.texels, panorama.width, panorama.height, size, supersample);
+    };
+    const auto output = fmt::format("panorama {}×{} → {}², {}² reads", panorama.width, panorama.height, size, supersample);
+    addOutput(run, {"EquirectToCubeCS", output, equirectBounds()},
+              {reference(0.f), reference(0.0)},
+              [&](const PathProgram& program) { return gpuEquirectToCube(run.vulkan, program, panorama, size, supersample); },
+              [&](const OpenGlForm& form) { return glEquirectToCube(run.gl, form, panorama, size, supersample); });
+}
+
+// Each mip of the double reference is reference::downsampleCube of the one above.
+void addDownsampleOutput(SuiteRun& run, const MippedCube& cube) {
+    References references;
+    std::vector<float> level(cube.mip(0).begin(), cube.mip(0).end());
+    for (uint32_t mip = 1; mip < cube.mips; ++mip) {
+        const auto inFloat = cube.mip(mip);
+        references.inFloat.insert(references.inFloat.end(), inFloat.begin(), inFloat.end());
+        level = reference::downsampleCube(level, cube.mipSize(mip - 1));
+        references.inDouble.insert(references.inDouble.end(), level.begin(), level.end());
+    }
+    addOutput(run, {"DownsampleCubeCS", fmt::format("mips 1–{} of {}²", cube.mips - 1, cube.size), downsampleBounds()},
+              references, [&](const PathProgram& program) { return gpuDownsampleChain(run.vulkan, program, cube); },
+              [&](const OpenGlForm& form) { return glDownsampleChain(run.gl, form, cube); });
+}
+
+void addShOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
+    const auto source = cube.mip(mip);
+    const std::vector<float> texels(source.begin(), source.end());
+    const auto inFloat = reference::projectOnShInFloat(texels, cube.mipSize(mip));
+    const auto output = fmt::format("SH of mip {} ({}²): 27 coefficients, solid angle", mip, cube.mipSize(mip));
+    addOutput(run, {"ShProjectCS", output, shBounds()},
+              {flattened(inFloat.radiance, inFloat.solidAngle),
+               flattenedInDouble(reference::projectOnSh(texels, cube.mipSize(mip)), 4 * std::numbers::pi)},
+              [&](const PathProgram& program) {
+                  const auto projection = gpuShProject(run.vulkan, program, cube, mip);
+                  return flattened(projection.radiance, projection.solidAngle);
+              },
+              [&](const OpenGlForm& form) {
+                  const auto projection = glShProject(run.gl, form, cube, mip);
+                  return flattened(projection.radiance, projection.solidAngle);
+              });
+}
+
+void addIrradianceOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
+    const auto source = cube.mip(mip);
+    const std::vector<float> texels(source.begin(), source.end());
+    const uint32_t size = cube.mipSize(mip), outSize = run.options.irradianceSize;
+    const auto output = fmt::format("irradiance {}² from mip {} ({}²)", outSize, mip, size);
+    addOutput(run, {"IrradianceCubeCS", output, irradianceBounds()},
+              {reference::irradianceCubeInFloat(texels, size, outSize),
+               rgbaWithAlphaOne(reference::irradianceCube(texels, size, outSize))},
+              [&](const PathProgram& program) { return gpuIrradianceCube(run.vulkan, program, cube, mip, outSize); },
+              [&](const OpenGlForm& form) { return glIrradianceCube(run.gl, form, cube, mip, outSize); });
+}
+
+} // namespace
+
+void addCubeOutputs(SuiteRun& run) {
+    addEquirectOutput(run);
+    const uint32_t size = run.options.mipChainSize;
+    const auto cube = testCube(size, uint32_t(std::bit_width(size)));
+    addDownsampleOutput(run, cube);
+    addShOutput(run, cube, 1);
+    addIrradianceOutput(run, cube, 1);
+}
+
+// No C++ reference (see boundsRationale): the paths are compared with path a.
+void addPreviewOutput(SuiteRun& run) {
+    const auto& options = run.options;
+    const auto inputs = previewInputs(options.previewColumns, options.previewRows, options.previewCellSize, options.cubeSize,
+                                      options.chunkLutSize, options.sampleCount);
+    addOutputAgainstPathA(run, {"PreviewCS", fmt::format("preview {}×{}", inputs.width, inputs.height), previewBounds()},
+                          [&](const PathProgram& program) { return gpuPreview(run.vulkan, program, inputs); },
+                          [&](const OpenGlForm& form) { return glPreview(run.gl, form, inputs); });
+}
+
+} // namespace iblkit::consistency

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "gl_bake.hpp"
+#include "kernels/kernel_steps.hpp"
+#include "suite_inputs.hpp"
+
+#include <vector>
+
+namespace iblkit::consistency {
+
+// The same runs as gpu_cube_bake's, as OpenGL 4.5 compute shaders: a cube is a
+// GL_TEXTURE_2D_ARRAY of 6 layers (what the GLSL form's sampler2DArray and image2DArray take),
+// a TextureCube a GL_TEXTURE_CUBE_MAP.
+std::vector<float> glEquirectToCube(const opengl::EglContext& context, const OpenGlForm& form, const Panorama& panorama,
+                                    uint32_t size, uint32_t supersample);
+std::vector<float> glDownsampleChain(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube);
+kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                  uint32_t mip);
+std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                    uint32_t mip, uint32_t outSize);
+std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
+
+} // namespace iblkit::consistency

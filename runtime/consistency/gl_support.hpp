@@ -1,0 +1,44 @@
+#pragma once
+
+#include "gl_bake.hpp"
+#include "gl_object.hpp"
+#include "kernels/kernel_parameters.hpp"
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+// What every OpenGL run of path d does: bind by the form's binding table, set its cbuffer,
+// dispatch, read back. Textures are RGBA32F unless a format is named.
+namespace iblkit::consistency::glpath {
+
+// The slot the GLSL form gives an HLSL resource ("EnvMap+EnvMapSampler" for a combined one).
+GLuint slotOf(const OpenGlForm& form, const std::string& resource);
+
+opengl::GlObject program(const opengl::EglContext& context, const OpenGlForm& form);
+
+// The form's one cbuffer from named values, in a uniform buffer bound at its slot; the buffer
+// must outlive the dispatch.
+opengl::GlObject bindParameters(const opengl::EglContext& context, const OpenGlForm& form, const kernels::NamedValues& values);
+
+// Dispatches enough workgroups to cover `threads` and waits for them.
+void dispatch(const opengl::EglContext& context, const opengl::GlObject& program, const OpenGlForm& form,
+              std::array<uint32_t, 3> threads);
+
+// A GL_TEXTURE_CUBE_MAP or GL_TEXTURE_2D_ARRAY of 6 layers with `mips` levels, filled with
+// `texels` (every level: face, row, column, RGBA) or left empty when there are none.
+opengl::GlObject cubeTexture(const opengl::EglContext& context, GLenum target, uint32_t size, uint32_t mips,
+                             std::span<const float> texels = {});
+// A GL_TEXTURE_2D, filled with `texels` in `format` unless there are none.
+opengl::GlObject texture2D(const opengl::EglContext& context, GLenum internalFormat, GLenum format, uint32_t width,
+                           uint32_t height, std::span<const float> texels = {});
+// Linear in and between mips, clamped to the edge: vulkan::Sampler's defaults.
+opengl::GlObject linearClampSampler(const opengl::EglContext& context);
+opengl::GlObject storageBuffer(const opengl::EglContext& context, size_t bytes);
+
+std::vector<float> readTexture(const opengl::EglContext& context, const opengl::GlObject& texture, uint32_t level,
+                               GLenum format, size_t count);
+std::vector<float> readBuffer(const opengl::EglContext& context, const opengl::GlObject& buffer, size_t count);
+
+} // namespace iblkit::consistency::glpath

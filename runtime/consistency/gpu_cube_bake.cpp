@@ -1,0 +1,69 @@
+#include "gpu_cube_bake.hpp"
+
+namespace iblkit::consistency {
+namespace {
+
+const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
+
+vulkan::Image uploadCube(const vulkan::VulkanContext& context, const std::string& name, const MippedCube& cube) {
+    vulkan::Image image(context, {name, &rgba32(), cube.size, cube.size, 6, cube.mips, true, false});
+    image.upload(context, cube.texels);
+    return image;
+}
+
+} // namespace
+
+std::vector<float> gpuEquirectToCube(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const Panorama& panorama, uint32_t size, uint32_t supersample) {
+    kernels::Kernel kernel(context, program);
+    vulkan::Image equirect(context, {"Equirect", &rgba32(), panorama.width, panorama.height, 1, 1, false, false});
+    equirect.upload(context, panorama.texels);
+    vulkan::Image cube(context, {"Cube", &rgba32(), size, size, 6, 1, true, true});
+    kernels::runEquirectToCube(kernel, equirect, cube, {supersample});
+    return cube.download(context);
+}
+
+std::vector<float> gpuDownsampleChain(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const MippedCube& cube) {
+    kernels::Kernel kernel(context, program);
+    vulkan::Image image(context, {"Source", &rgba32(), cube.size, cube.size, 6, cube.mips, true, true});
+    std::vector<float> values(image.valueCount(), 0.f);
+    const auto mip0 = cube.mip(0);
+    std::copy(mip0.begin(), mip0.end(), values.begin());
+    image.upload(context, values);
+    kernels::runDownsampleChain(kernel, image);
+    const auto chain = image.download(context);
+    return {chain.begin() + std::ptrdiff_t(image.valueOffset(1, 0)), chain.end()};
+}
+
+kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const PathProgram& program,
+                                   const MippedCube& cube, uint32_t mip) {
+    kernels::Kernel kernel(context, program);
+    auto source = uploadCube(context, "Source", cube);
+    return kernels::runShProject(context, kernel, source, mip);
+}
+
+std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const MippedCube& cube, uint32_t mip, uint32_t outSize) {
+    kernels::Kernel kernel(context, program);
+    auto source = uploadCube(context, "Source", cube);
+    vulkan::Image irradiance(context, {"Irradiance", &rgba32(), outSize, outSize, 6, 1, true, true});
+    kernels::runIrradianceCube(kernel, source, irradiance, mip);
+    return irradiance.download(context);
+}
+
+std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
+                              const PreviewInputs& inputs) {
+    kernels::Kernel kernel(context, program);
+    auto specular = uploadCube(context, "Specular", inputs.specular);
+    auto irradiance = uploadCube(context, "IrradianceMap", inputs.irradiance);
+    const auto& rg32 = vulkan::texelFormatNamed("R32G32_SFLOAT");
+    vulkan::Image lut(context, {"BrdfLut", &rg32, inputs.lutSize, inputs.lutSize, 1, 1, false, false});
+    lut.upload(context, inputs.lut);
+    const vulkan::Sampler linear(context, {});
+    vulkan::Image preview(context, {"Preview", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
+    kernels::runPreview(kernel, specular, irradiance, lut, linear, preview, inputs.parameters);
+    return preview.download(context);
+}
+
+} // namespace iblkit::consistency

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "kernels/kernel_steps.hpp"
+#include "shader_paths.hpp"
+#include "suite_inputs.hpp"
+#include "vulkan_context.hpp"
+
+#include <vector>
+
+namespace iblkit::consistency {
+
+// The kit's cube kernels on Vulkan, each through its kernels::run* step; cube results are RGBA
+// per texel, ordered face, row, column (mip by mip for the chain).
+
+// EquirectToCube: the panorama onto mip 0 of a size x size cube.
+std::vector<float> gpuEquirectToCube(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const Panorama& panorama, uint32_t size, uint32_t supersample);
+
+// DownsampleCube: mips 1 to 1x1 of a cube whose mip 0 is `cube`'s, one after the other.
+std::vector<float> gpuDownsampleChain(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const MippedCube& cube);
+
+// ShProject: one mip of `cube` (uploaded with all its mips) on the 9 harmonics.
+kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const PathProgram& program,
+                                   const MippedCube& cube, uint32_t mip);
+
+// IrradianceCube: an outSize cube from one mip of `cube`.
+std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const MippedCube& cube, uint32_t mip, uint32_t outSize);
+
+// Preview: the RGBA image, row by row.
+std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
+                              const PreviewInputs& inputs);
+
+} // namespace iblkit::consistency

@@ -1,0 +1,71 @@
+#include "consistency_suite.hpp"
+
+namespace iblkit::consistency {
+
+// Each bound is twice the largest error measured on lavapipe (docs/consistency.md), rounded
+// up; boundsRationale() says why the errors are what they are.
+Bounds lutBounds(uint32_t size) {
+    if (size <= 32) return {5e-5, 1.5e-6, 5e-5, 1.5e-6};
+    return {1.2e-2, 4e-5, 2e-3, 6e-6};
+}
+
+Bounds prefilterBounds() { return {1.5e-3, 2e-5, 1.5e-3, 6e-5}; }
+
+Bounds lutChunkBounds() { return {5e-5, 2e-6, 4e-5, 1e-6}; }
+Bounds prefilterChunkBounds() { return {4e-4, 1.2e-5, 4e-4, 1.2e-5}; }
+Bounds equirectBounds() { return {3.2e-2, 2.3e-3, 3.2e-2, 2.3e-3}; }
+Bounds downsampleBounds() { return {8e-6, 4e-7, 8e-6, 4e-7}; }
+Bounds shBounds() { return {1.6e-4, 1.1e-4, 1.6e-4, 1e-4}; }
+Bounds irradianceBounds() { return {1.4e-4, 4.5e-5, 1.4e-4, 4.5e-5}; }
+Bounds previewBounds() { return {1e-6, 1e-7, 1e-6, 1e-7}; }
+
+std::string boundsRationale() {
+    return "Every bound is twice the largest error measured on lavapipe, rounded up; a row must keep both its largest "
+           "absolute error and its RMS error within them, against both references.\n\n"
+           "- **LUT 32²** (max 5e-5, RMS 1.5e-6): values lie in [0, 1]. The GPU and the float reference do the same float "
+           "operations, but llvmpipe's sqrt, sin, cos, pow and normalize differ from glibc's in their last bits; over "
+           "1024 samples the GPU ends at most 2.2e-5 from either reference — the float reference itself is 2.6e-5 "
+           "from the double one.\n"
+           "- **LUT 512²** (max 1.2e-2 against float, 2e-3 against double; RMS 4e-5 and 6e-6): the 512² LUT has a "
+           "column at N·V = 1/1024, where IntegrateBRDF is ill-conditioned: whether a sample's N·L is above 0 after "
+           "the cancellation in 2(V·H)H − V depends on the last bits, and such a sample weighs G·V·H / (N·H·N·V), of "
+           "order 1/N·V. The float reference, with glibc's rounding, is further from the double truth (6.9e-3) than "
+           "the GPU is (9.6e-4), hence the wider bound against it. The RMS bounds stay tight: a porting bug moves "
+           "every texel (k = (r+1)²/8 changes LUT values by 1e-2 and more at most roughnesses).\n"
+           "- **Prefilter** (max 1.5e-3, RMS 2e-5 against float and 6e-5 against double): radiance reaches ~40 at the "
+           "test sun; errors of 1e-5 relative come from float rounding of the 1024-sample sums (at roughness 0 all "
+           "1024 samples are the same direction, so the float sum's rounding shows most against double) and from the "
+           "texture unit's bilinear weights against the reference's exact ones. A swapped face or a transposed tangent "
+           "frame moves texels by 1e-1 to 10.\n"
+           "- **LUT in chunks** (max 5e-5 against float, 4e-5 against double; RMS 2e-6 and 1e-6): the same math as the "
+           "LUT over the same 1024 samples, its float sums regrouped into chunks of 300 added through an RG32F image; "
+           "measured 2.2e-5 and 1.8e-5, RMS 8.9e-7 and 4.7e-7 — the whole-loop LUT's errors, the regrouping adding "
+           "less than the transcendental functions' last bits.\n"
+           "- **Prefilter in chunks** (max 4e-4, RMS 1.2e-5, against both): measured 1.9e-4 and RMS 5.8e-6 at "
+           "roughness 0.5, against 1.8e-4 for the whole-loop shader at the same roughness: the regrouped sums add "
+           "rounding of the same order.\n"
+           "- **EquirectToCube** (max 3.2e-2, RMS 2.3e-3, against both): llvmpipe's acos is off glibc's by up to 1.6e-4 "
+           "rad (measured over [-1, 1]), which moves a read by up to 3e-3 of a panorama texel in latitude; beside the "
+           "test sun (radiance 40 over a few texels) that is 1.6e-2 (RMS 1.2e-3). The float reference is 1.2e-5 from "
+           "the double one; with Cube.fxh's latitude written as atan2(length(d.xz), d.y) instead, the GPU lands "
+           "2.2e-4 from both, so the bound covers acos alone. A swapped face moves texels by 1e-1 to 40.\n"
+           "- **DownsampleCube** (max 8e-6, RMS 4e-7, against both): the GPU is the float reference bit for bit (the "
+           "same four additions and one multiplication); against the double means it is 3.8e-6 off at most (2 ULPs "
+           "at radiance ~40), RMS 1.8e-7. The bound against float is the double one, so that a path that added in "
+           "another order would still pass. Reading a wrong texel moves the means by up to 10 (RMS 0.36).\n"
+           "- **ShProject** (max 1.6e-4, RMS 1.1e-4 against float and 1e-4 against double): llvmpipe's atan2 is off "
+           "glibc's by up to 2.9e-6 rad, and CubeTexelSolidAngle subtracts four of them, so a texel's solid angle is "
+           "off by up to 2.6e-4 relative (measured on a 16² face); over the 1536 texels the values (up to 4π, the solid "
+           "angle) end 7.7e-5 from either reference, RMS 5e-5 — every coefficient carries it, hence an RMS near the max. The "
+           "float reference, with the shader's tree reduction, is 1.3e-6 from the double one.\n"
+           "- **IrradianceCube** (max 1.4e-4, RMS 4.5e-5, against both): the same solid angles weigh every source "
+           "texel; measured 6.7e-5, RMS 2.1e-5, on values up to 2.9. The float reference is 3.2e-6 from the double.\n"
+           "- **Preview** (max 1e-6, RMS 1e-7): no C++ reference — sampling a cube with trilinear, seamless filtering "
+           "(and llvmpipe's choice at cube corners, which every texel of the 1x1 and 2x2 mips touches) is the texture "
+           "unit's business, and a reference of it would measure the reference — so paths b, c, e and d are compared "
+           "with path a. All four are bit-identical to it on lavapipe; the bound, a few float32 ULPs of a value in "
+           "[0, 1] and far below the 8-bit step the preview is stored at (3.9e-3), leaves room for a compiler that "
+           "reorders. It proves that the forms agree, not that PreviewCS is right.\n";
+}
+
+} // namespace iblkit::consistency

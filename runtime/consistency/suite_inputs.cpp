@@ -1,0 +1,67 @@
+#include "suite_inputs.hpp"
+
+#include "cube_environment.hpp"
+#include "reference_bake.hpp"
+
+#include <bit>
+#include <cmath>
+#include <numbers>
+
+namespace iblkit::consistency {
+namespace {
+
+size_t mipOffset(const MippedCube& cube, uint32_t mip) {
+    size_t offset = 0;
+    for (uint32_t level = 0; level < mip; ++level) offset += size_t(6) * cube.mipSize(level) * cube.mipSize(level) * 4;
+    return offset;
+}
+
+} // namespace
+
+std::span<const float> MippedCube::mip(uint32_t level) const {
+    const size_t count = size_t(6) * mipSize(level) * mipSize(level) * 4;
+    return std::span(texels).subspan(mipOffset(*this, level), count);
+}
+
+MippedCube testCube(uint32_t size, uint32_t mips) {
+    MippedCube cube{size, mips, reference::CubeEnvironment::testEnvironment(size).texels()};
+    std::vector<float> level = cube.texels;
+    for (uint32_t mip = 1; mip < mips; ++mip) {
+        level = reference::downsampleCubeInFloat(level, cube.mipSize(mip - 1));
+        cube.texels.insert(cube.texels.end(), level.begin(), level.end());
+    }
+    return cube;
+}
+
+Panorama testPanorama(uint32_t width) {
+    Panorama panorama{width, width / 2, {}};
+    panorama.texels.reserve(size_t(width) * panorama.height * 4);
+    for (uint32_t y = 0; y < panorama.height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            const double longitude = ((x + 0.5) / width - 0.5) * 2 * std::numbers::pi;
+            const double latitude = (y + 0.5) / panorama.height * std::numbers::pi;
+            const glm::dvec3 direction(std::sin(latitude) * std::sin(longitude), std::cos(latitude),
+                                       -std::sin(latitude) * std::cos(longitude));
+            const glm::dvec3 radiance = reference::CubeEnvironment::testRadiance(direction);
+            panorama.texels.insert(panorama.texels.end(), {float(radiance.r), float(radiance.g), float(radiance.b), 1.f});
+        }
+    return panorama;
+}
+
+PreviewInputs previewInputs(uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
+                            uint32_t sampleCount) {
+    PreviewInputs inputs;
+    inputs.specular = testCube(specularSize, uint32_t(std::bit_width(specularSize)));
+    const auto irradianceSource = testCube(specularSize, 3);
+    const auto mip2 = irradianceSource.mip(2);
+    inputs.irradiance = {irradianceSource.mipSize(2), 1, std::vector<float>(mip2.begin(), mip2.end())};
+    inputs.lutSize = lutSize;
+    inputs.lut = reference::referenceBrdfLut<float>(lutSize, sampleCount);
+    inputs.width = columns * cellSize;
+    const uint32_t panelWidth = inputs.width / inputs.specular.mips;
+    inputs.height = rows * cellSize + panelWidth / 2;
+    inputs.parameters = {columns, rows, cellSize, inputs.specular.mips, panelWidth, 1.f};
+    return inputs;
+}
+
+} // namespace iblkit::consistency

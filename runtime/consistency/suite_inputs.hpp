@@ -1,0 +1,63 @@
+#pragma once
+
+#include "kernels/kernel_parameters.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace iblkit::consistency {
+
+// The inputs the cube kernels read, made on the host so that the GPU paths and the C++
+// references see the same floats.
+
+// A cube with its mips, texels as vulkan::Image uploads them: mip, face, row, column, RGBA.
+struct MippedCube {
+    uint32_t size = 0;
+    uint32_t mips = 0;
+    std::vector<float> texels;
+
+    uint32_t mipSize(uint32_t mip) const { return std::max(1u, size >> mip); }
+    std::span<const float> mip(uint32_t mip) const;
+};
+
+// The test environment (reference::CubeEnvironment::testEnvironment) at `size` with `mips`
+// mips, each made from the one above by DownsampleCubeCS's float arithmetic.
+MippedCube testCube(uint32_t size, uint32_t mips);
+
+// An RGBA panorama, row 0 at the zenith.
+struct Panorama {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> texels;
+};
+// The test radiance as a width x width/2 panorama, each texel at the direction Cube.fxh's
+// EquirectToDirection gives its centre.
+Panorama testPanorama(uint32_t width);
+
+// What PreviewCS reads and the size it writes.
+struct PreviewInputs {
+    MippedCube specular;
+    MippedCube irradiance;
+    uint32_t lutSize = 0;
+    std::vector<float> lut; // (scale, bias) per texel
+    kernels::PreviewParameters parameters;
+    uint32_t width = 0;
+    uint32_t height = 0;
+};
+// A grid of columns x rows spheres of cellSize pixels over the test cube at specularSize with all
+// its mips, its mip 2 as the irradiance cube and the float reference LUT.
+PreviewInputs previewInputs(uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
+                            uint32_t sampleCount);
+
+// Calls run(first, count, last) for each chunk of `samples`, the last one shorter.
+template <typename Run>
+void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
+    for (uint32_t first = 0; first < samples; first += chunk) {
+        const uint32_t count = std::min(chunk, samples - first);
+        run(first, count, first + count == samples);
+    }
+}
+
+} // namespace iblkit::consistency

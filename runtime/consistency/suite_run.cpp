@@ -1,0 +1,62 @@
+#include "suite_run.hpp"
+
+#include <stdexcept>
+
+namespace iblkit::consistency {
+namespace {
+
+bool withinBounds(const ErrorStats& vsFloat, const ErrorStats& vsDouble, const Bounds& bounds) {
+    return vsFloat.nonFinite == 0 && vsFloat.maxAbsolute <= bounds.maxVsFloat && vsFloat.rms <= bounds.rmsVsFloat &&
+           vsDouble.maxAbsolute <= bounds.maxVsDouble && vsDouble.rms <= bounds.rmsVsDouble;
+}
+
+void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
+                 const OpenGlRun& openGlRun, bool skipPathA) {
+    const auto add = [&](std::string path, const std::vector<float>& gpu) {
+        const auto vsFloat = measureError(gpu, references.inFloat);
+        const auto vsDouble = measureError(gpu, references.inDouble);
+        run.rows.push_back({spec.kernel, std::move(path), spec.output, vsFloat, vsDouble, spec.bounds, false,
+                            withinBounds(vsFloat, vsDouble, spec.bounds)});
+    };
+    for (const auto path : kVulkanPaths)
+        if (!skipPathA || path != ShaderPath::Glslang)
+            add(std::string(pathName(path)), vulkanRun(run.program(spec.kernel, path)));
+    add(std::string(openGlPathName()), openGlRun(run.openGl(spec.kernel)));
+}
+
+} // namespace
+
+const compiler::CompileOptions& SuiteRun::shader(const std::string& kernel) const {
+    const auto found = options.shaders.find(kernel);
+    if (found == options.shaders.end()) throw std::out_of_range("the suite's options have no shader " + kernel);
+    return found->second;
+}
+
+const PathProgram& SuiteRun::program(const std::string& kernel, ShaderPath path) {
+    const auto key = std::pair(kernel, path);
+    if (!programs_.contains(key)) programs_.emplace(key, compileForPath(path, shader(kernel)));
+    return programs_.at(key);
+}
+
+const OpenGlForm& SuiteRun::openGl(const std::string& kernel) {
+    if (!openGlForms_.contains(kernel)) openGlForms_.emplace(kernel, openGlForm(shader(kernel)));
+    return openGlForms_.at(kernel);
+}
+
+void addOutput(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
+               const OpenGlRun& openGlRun) {
+    run.rows.push_back({spec.kernel, "f. C++ reference, float", spec.output, {},
+                        measureError(references.inFloat, references.inDouble), spec.bounds, true, true});
+    addPathRows(run, spec, references, vulkanRun, openGlRun, false);
+}
+
+void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun) {
+    References pathA;
+    pathA.inFloat = vulkanRun(run.program(spec.kernel, ShaderPath::Glslang));
+    pathA.inDouble.assign(pathA.inFloat.begin(), pathA.inFloat.end());
+    run.rows.push_back({spec.kernel, std::string(pathName(ShaderPath::Glslang)) + ", the reference (no C++ reference)",
+                        spec.output, {}, {}, spec.bounds, true, true});
+    addPathRows(run, spec, pathA, vulkanRun, openGlRun, true);
+}
+
+} // namespace iblkit::consistency

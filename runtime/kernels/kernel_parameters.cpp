@@ -1,0 +1,30 @@
+#include "kernels/kernel_parameters.hpp"
+
+namespace iblkit::kernels {
+
+NamedValues PrefilterParameters::members() const { return {{"Roughness", {roughness}}}; }
+
+NamedValues PrefilterChunkParameters::members() const {
+    return {{"Roughness", {roughness}},
+            {"FirstSample", {double(firstSample)}},
+            {"ChunkSamples", {double(chunkSamples)}},
+            {"Resolve", {resolve ? 1.0 : 0.0}}};
+}
+
+NamedValues BrdfChunkParameters::members() const {
+    return {{"FirstSample", {double(firstSample)}},
+            {"ChunkSamples", {double(chunkSamples)}},
+            {"Resolve", {resolve ? 1.0 : 0.0}}};
+}
+
+NamedValues EquirectToCubeParameters::members() const { return {{"Supersample", {double(supersample)}}}; }
+
+NamedValues SourceMipParameters::members() const { return {{"SourceMip", {double(sourceMip)}}}; }
+
+NamedValues PreviewParameters::members() const {
+    return {{"Columns", {double(columns)}},           {"Rows", {double(rows)}},
+            {"CellSize", {double(cellSize)}},         {"SpecularMips", {double(specularMips)}},
+            {"StripPanelWidth", {double(stripPanelWidth)}}, {"Exposure", {exposure}}};
+}
+
+} // namespace iblkit::kernels

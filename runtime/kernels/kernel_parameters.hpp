@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace iblkit::kernels {
+
+// A cbuffer's members by their HLSL name, as packBlock takes them.
+using NamedValues = std::map<std::string, std::vector<double>>;
+
+// One typed struct per kernel role; members() names each field as the role's HLSL declares it.
+struct PrefilterParameters {
+    float roughness = 0;
+    NamedValues members() const;
+};
+
+struct PrefilterChunkParameters {
+    float roughness = 0;
+    uint32_t firstSample = 0;
+    uint32_t chunkSamples = 0;
+    bool resolve = false; // the last chunk: also write the ratio of the sums
+    NamedValues members() const;
+};
+
+struct BrdfChunkParameters {
+    uint32_t firstSample = 0;
+    uint32_t chunkSamples = 0;
+    bool resolve = false;
+    NamedValues members() const;
+};
+
+struct EquirectToCubeParameters {
+    uint32_t supersample = 1; // reads per cube texel along each axis
+    NamedValues members() const;
+};
+
+// DownsampleCube, ShProject and IrradianceCube read one mip of their source.
+struct SourceMipParameters {
+    uint32_t sourceMip = 0;
+    NamedValues members() const;
+};
+
+struct PreviewParameters {
+    uint32_t columns = 0, rows = 0, cellSize = 0, specularMips = 0, stripPanelWidth = 0;
+    float exposure = 1;
+    NamedValues members() const;
+};
+
+} // namespace iblkit::kernels

@@ -1,0 +1,92 @@
+#include "kernels/kernel_steps.hpp"
+
+#include "buffer.hpp"
+
+namespace iblkit::kernels {
+
+void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const EquirectToCubeParameters& parameters) {
+    kernel.program().bind("Equirect", equirect);
+    kernel.program().bind("Cube", cube, 0);
+    kernel.setParameters(parameters.members());
+    kernel.run({cube.desc().width, cube.desc().width, 6});
+}
+
+void runDownsampleChain(Kernel& kernel, vulkan::Image& cube) {
+    kernel.program().bind("Source", cube);
+    for (uint32_t mip = 1; mip < cube.desc().mips; ++mip) {
+        kernel.program().bind("Destination", cube, mip);
+        kernel.setParameters(SourceMipParameters{mip - 1}.members());
+        kernel.run({cube.mipWidth(mip), cube.mipWidth(mip), 6});
+    }
+}
+
+void runPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                  uint32_t mip, const PrefilterParameters& parameters) {
+    kernel.program().bind("EnvMap", source);
+    kernel.program().bind("EnvMapSampler", sampler);
+    kernel.program().bind("Prefiltered", target, mip);
+    kernel.setParameters(parameters.members());
+    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
+void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& accumulator,
+                       vulkan::Image& target, uint32_t mip, const PrefilterChunkParameters& parameters) {
+    kernel.program().bind("EnvMap", source);
+    kernel.program().bind("EnvMapSampler", sampler);
+    kernel.program().bind("Accumulated", accumulator);
+    kernel.program().bind("Prefiltered", target, mip);
+    kernel.setParameters(parameters.members());
+    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
+void runBrdfLut(Kernel& kernel, vulkan::Image& lut) {
+    kernel.program().bind("Precomputed", lut);
+    kernel.run({lut.desc().width, lut.desc().height, 1});
+}
+
+void runBrdfLutChunk(Kernel& kernel, vulkan::Image& accumulator, vulkan::Image& lut, const BrdfChunkParameters& parameters) {
+    kernel.program().bind("Accumulated", accumulator);
+    kernel.program().bind("Precomputed", lut);
+    kernel.setParameters(parameters.members());
+    kernel.run({lut.desc().width, lut.desc().height, 1});
+}
+
+ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip) {
+    const uint32_t size = source.mipWidth(mip), groupsPerSide = (size + 7) / 8;
+    const uint32_t groups = groupsPerSide * groupsPerSide * 6;
+    vulkan::Buffer partials(context, vk::DeviceSize(groups) * 9 * 16, vk::BufferUsageFlagBits::eStorageBuffer, "Partials");
+    kernel.program().bind("Source", source);
+    kernel.program().bind("Partials", partials);
+    kernel.setParameters(SourceMipParameters{mip}.members());
+    kernel.runGroups({groupsPerSide, groupsPerSide, 6});
+    const auto bytes = partials.read();
+    const auto* values = reinterpret_cast<const float*>(bytes.data());
+    ShProjection projection{};
+    for (uint32_t group = 0; group < groups; ++group)
+        for (uint32_t k = 0; k < 9; ++k) {
+            const float* at = values + (size_t(group) * 9 + k) * 4;
+            projection.radiance[k] += glm::dvec3(at[0], at[1], at[2]);
+            if (k == 0) projection.solidAngle += at[3];
+        }
+    return projection;
+}
+
+void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& target, uint32_t sourceMip) {
+    kernel.program().bind("Source", source);
+    kernel.program().bind("Irradiance", target, 0);
+    kernel.setParameters(SourceMipParameters{sourceMip}.members());
+    kernel.run({target.desc().width, target.desc().width, 6});
+}
+
+void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
+                const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters) {
+    kernel.program().bind("Specular", specular);
+    kernel.program().bind("IrradianceMap", irradiance);
+    kernel.program().bind("BrdfLut", brdfLut);
+    kernel.program().bind("LinearClamp", sampler);
+    kernel.program().bind("Preview", image);
+    kernel.setParameters(parameters.members());
+    kernel.run({image.desc().width, image.desc().height, 1});
+}
+
+} // namespace iblkit::kernels

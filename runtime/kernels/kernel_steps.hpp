@@ -1,0 +1,53 @@
+#pragma once
+
+#include "kernels/kernel.hpp"
+
+#include "image.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace iblkit::kernels {
+
+// The dispatch of each kernel role, written once: what it binds, with which parameters, over
+// which threads. The kernel may come from any form of its shader (the bake's, or a
+// consistency path's); every command runs its GPU steps through these.
+
+// EquirectToCube: a 2D panorama into mip 0 of a cube.
+void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const EquirectToCubeParameters& parameters);
+
+// DownsampleCube: mips 1.. of a cube, each the 2x2 means of the one above.
+void runDownsampleChain(Kernel& kernel, vulkan::Image& cube);
+
+// Prefilter: one mip of `target` from `source` (sampled through `sampler`).
+void runPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                  uint32_t mip, const PrefilterParameters& parameters);
+
+// PrefilterChunk: one chunk of samples into `accumulator` (RGBA32F, the size of target's mip,
+// 6 layers, storage); the chunk with resolve set writes the mip of `target`.
+void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& accumulator,
+                       vulkan::Image& target, uint32_t mip, const PrefilterChunkParameters& parameters);
+
+// BrdfLut: the whole LUT image.
+void runBrdfLut(Kernel& kernel, vulkan::Image& lut);
+
+// BrdfLutChunk: one chunk into `accumulator` (RG32F, the LUT's size); resolve writes `lut`.
+void runBrdfLutChunk(Kernel& kernel, vulkan::Image& accumulator, vulkan::Image& lut, const BrdfChunkParameters& parameters);
+
+struct ShProjection {
+    std::array<glm::dvec3, 9> radiance; // projections of radiance on Y_lm, summed in double
+    double solidAngle;                  // 4 pi as the texels summed it
+};
+// ShProject: one mip of a cube projected on bands 0-2.
+ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip);
+
+// IrradianceCube: E(n) / pi into mip 0 of `target` from one mip of `source`.
+void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& target, uint32_t sourceMip);
+
+// Preview: shaded spheres and the mip strip into `image`.
+void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
+                const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters);
+
+} // namespace iblkit::kernels

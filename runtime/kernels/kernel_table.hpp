@@ -1,0 +1,64 @@
+#pragma once
+
+#include "compile_options.hpp"
+#include "reflection.hpp"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace iblkit::kernels {
+
+// What a kernel does in a bake: the resources it binds and the parameter struct it takes
+// (kernel_parameters.hpp), whichever HLSL implements it.
+enum class KernelRole {
+    BrdfLut,        // RWTexture2D Precomputed; SAMPLE_COUNT
+    BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
+    Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
+    PrefilterChunk, // + Accumulated; PrefilterChunkParameters
+    EquirectToCube,
+    DownsampleCube,
+    ShProject,
+    IrradianceCube,
+    Preview,
+};
+
+std::string_view roleName(KernelRole role);
+
+struct KernelEntry {
+    std::string name; // the shader's name in hlsl/shaders.json
+    KernelRole role;
+    std::string method;   // for the LUT and prefilter roles ("document")
+    bool document;        // the documents' faithful transcription (hlsl/document/), frozen
+    compiler::CompileOptions options; // as the manifest gives them, reading the built-in hlsl/
+};
+
+// hlsl/ and hlsl/shaders.json as they were when the program was built, by path
+// ("hlsl/document/Common/PBR.fxh").
+const std::map<std::string, std::string>& embeddedShaderFiles();
+
+// Every kernel of the built-in hlsl/shaders.json, in its order.
+const std::vector<KernelEntry>& kernelTable();
+// Throws std::out_of_range naming what is missing.
+const KernelEntry& kernelNamed(std::string_view name);
+const KernelEntry& kernelFor(KernelRole role, std::string_view method = {});
+// The methods that have a kernel of `role`, in table order.
+std::vector<std::string> methodsOf(KernelRole role);
+
+struct KernelProgram {
+    std::vector<uint32_t> spirv;
+    compiler::ShaderReflection reflection;
+};
+
+// Shader files to compile from: the built-in hlsl/, with some files replaced (by path).
+using ShaderFiles = std::map<std::string, std::string>;
+
+// Compiles a kernel from `files` with the kit's compiler, adding defines and storage image
+// formats to the manifest's. Throws compiler::CompileError.
+KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::string, std::string>& defines = {},
+                            const std::map<std::string, std::string>& imageFormats = {},
+                            const ShaderFiles& files = embeddedShaderFiles());
+
+} // namespace iblkit::kernels

@@ -1,0 +1,81 @@
+#include "kernels/sampled_methods.hpp"
+
+#include "kernels/kernel_steps.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace iblkit::kernels {
+namespace {
+
+std::map<std::string, std::string> sampleCountDefine(uint32_t samples) {
+    if (samples == 0 || samples > kMaxSamples)
+        throw std::invalid_argument("a sample count must be between 1 and " + std::to_string(kMaxSamples) + ", not " +
+                                    std::to_string(samples));
+    return {{"SAMPLE_COUNT", std::to_string(samples)}};
+}
+
+const vulkan::TexelFormat& format(const char* name) { return vulkan::texelFormatNamed(name); }
+
+// The LUT is written as 32-bit floats; the bake rounds it to its file's format on the host.
+std::map<std::string, std::string> imageFormats(KernelRole role) {
+    if (role == KernelRole::BrdfLut) return {{"Precomputed", "rg32f"}};
+    if (role == KernelRole::BrdfLutChunk) return {{"Precomputed", "rg32f"}, {"Accumulated", "rg32f"}};
+    return {};
+}
+
+KernelProgram compileSampled(KernelRole role, const std::string& method, uint32_t samples, const ShaderFiles& files) {
+    return compileKernel(kernelFor(role, method), sampleCountDefine(samples), imageFormats(role), files);
+}
+
+} // namespace
+
+uint32_t chunkSamplesFor(uint32_t samples, uint32_t requestedChunk) {
+    if (requestedChunk > kLoopLimit)
+        throw std::invalid_argument("a chunk of " + std::to_string(requestedChunk) + " samples passes the loop limit of " +
+                                    std::to_string(kLoopLimit));
+    if (requestedChunk) return requestedChunk;
+    return samples > kLoopLimit ? kChunkSamples : 0;
+}
+
+SampledMethod::SampledMethod(const vulkan::VulkanContext& context, KernelRole whole, KernelRole chunked,
+                             const std::string& method, uint32_t samples, uint32_t requestedChunk, const ShaderFiles& files)
+    : context_(context), samples_(samples), chunk_(chunkSamplesFor(samples, requestedChunk)),
+      kernel_(context, compileSampled(chunk_ ? chunked : whole, method, samples, files)) {}
+
+template <typename Chunk>
+void SampledMethod::forEachChunk(const Chunk& run) const {
+    for (uint32_t first = 0; first < samples_; first += chunk_) {
+        const uint32_t count = std::min(chunk_, samples_ - first);
+        run(first, count, first + count == samples_);
+    }
+}
+
+PrefilterMethod::PrefilterMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
+                                 uint32_t requestedChunk, const ShaderFiles& files)
+    : SampledMethod(context, KernelRole::Prefilter, KernelRole::PrefilterChunk, method, samples, requestedChunk, files) {}
+
+void PrefilterMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
+                          float roughness) {
+    if (!chunk_) return runPrefilter(kernel_, source, sampler, target, mip, {roughness});
+    const uint32_t size = target.mipWidth(mip);
+    vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32B32A32_SFLOAT"), size, size, 6, 1, false, true});
+    forEachChunk([&](uint32_t first, uint32_t count, bool last) {
+        runPrefilterChunk(kernel_, source, sampler, accumulator, target, mip, {roughness, first, count, last});
+    });
+}
+
+BrdfLutMethod::BrdfLutMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
+                             uint32_t requestedChunk, const ShaderFiles& files)
+    : SampledMethod(context, KernelRole::BrdfLut, KernelRole::BrdfLutChunk, method, samples, requestedChunk, files) {}
+
+void BrdfLutMethod::run(vulkan::Image& lut) {
+    if (!chunk_) return runBrdfLut(kernel_, lut);
+    const auto& desc = lut.desc();
+    vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32_SFLOAT"), desc.width, desc.height, 1, 1, false, true});
+    forEachChunk([&](uint32_t first, uint32_t count, bool last) {
+        runBrdfLutChunk(kernel_, accumulator, lut, {first, count, last});
+    });
+}
+
+} // namespace iblkit::kernels

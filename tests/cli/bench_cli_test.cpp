@@ -1,0 +1,68 @@
+// `iblkit bench` as a user runs it: the CSV, JSON, plots and Markdown report of a tiny run, and
+// one line with a non-zero exit for bad arguments.
+#include "read_file.hpp"
+#include "run_process.hpp"
+#include "temp_folder.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace iblkit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BenchCli : public ::testing::Test {
+protected:
+    ProcessResult iblkit(std::vector<std::string> arguments) const {
+        arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
+        for (const char* flag : {"--size", "32", "--lut-size", "16", "--texels", "16", "--repeat", "1",
+                                 "--irradiance-size", "4", "--cache"})
+            arguments.push_back(flag);
+        arguments.push_back((scratch.path() / "cache").string());
+        return runProcess(arguments);
+    }
+    std::string at(const std::string& name) const { return (scratch.path() / name).string(); }
+    TempFolder scratch;
+};
+
+TEST_F(BenchCli, WritesResultsPlotsAndReport) {
+    const auto result = iblkit({"bench", "sky", "sun", "--samples", "16,256", "--out", at("bench"), "--markdown",
+                                at("bench.md")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.err.find("bench  specular"), std::string::npos) << "progress goes to stderr";
+    const auto json = nlohmann::json::parse(readFile(scratch.path() / "bench" / "results.json"));
+    EXPECT_EQ(json.at("results").size(), 2u + 2u * 2u + 2u) << "LUT x2, specular x2 per environment, irradiance x2";
+    EXPECT_EQ(json.at("device").get<std::string>().find("llvmpipe"), 0u);
+    const auto csv = readFile(scratch.path() / "bench" / "results.csv");
+    EXPECT_EQ(csv.rfind("output,environment,method,samples", 0), 0u);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 8 + 2 * 2 * 2) << "a row per result and per specular mip";
+    for (const char* plot : {"specular_sky.png", "specular_sun.png", "specular_summary.png", "lut.png", "irradiance.png"}) {
+        const auto png = readFile(scratch.path() / "bench" / plot);
+        EXPECT_EQ(png.substr(1, 3), "PNG") << plot;
+    }
+    const auto report = readFile(scratch.path() / "bench.md");
+    EXPECT_NE(report.find("llvmpipe"), std::string::npos);
+    EXPECT_NE(report.find("](bench/specular_sky.png)"), std::string::npos) << "plots linked relative to the report";
+    EXPECT_NE(report.find("Time to reach the targets"), std::string::npos);
+}
+
+TEST_F(BenchCli, BadArgumentsGetOneLineAndNothingIsWritten) {
+    for (const auto& arguments : std::vector<std::vector<std::string>>{
+             {"bench", "nowhere.exr", "--out", at("out")},
+             {"bench", "--samples", "0", "--out", at("out")},
+             {"bench", "--method", "guess", "--out", at("out")},
+             {"bench", "--size", "100", "--out", at("out")},
+             {"bench", "--outputs", "everything", "--out", at("out")}}) {
+        const auto result = iblkit(arguments);
+        EXPECT_NE(result.exitCode, 0) << arguments[1];
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_FALSE(fs::exists(at("out"))) << arguments[1];
+    }
+}
+
+} // namespace
+} // namespace iblkit::testing

@@ -1,0 +1,85 @@
+#include "bench_command.hpp"
+
+#include "atomic_output.hpp"
+#include "bench_report.hpp"
+#include "bench_runner.hpp"
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <memory>
+
+namespace iblkit::cli {
+namespace {
+
+std::vector<bench::BenchOutput> parseOutputs(const std::vector<std::string>& names) {
+    std::vector<bench::BenchOutput> outputs;
+    for (const auto& name : names)
+        for (const auto output : {bench::BenchOutput::Specular, bench::BenchOutput::Lut, bench::BenchOutput::Irradiance})
+            if (bench::outputName(output) == name) outputs.push_back(output);
+    return outputs;
+}
+
+// The command as a user would type it again, for the report.
+std::string invocation(const bench::BenchOptions& options, const std::vector<std::string>& outputs,
+                       const std::string& out, const std::string& markdown) {
+    std::string text = "iblkit bench " + fmt::format("{}", fmt::join(options.environments, " "));
+    if (!options.methods.empty()) text += fmt::format(" --method {}", fmt::join(options.methods, ","));
+    text += fmt::format(" --samples {} --size {} --lut-size {} --texels {} --repeat {} --outputs {} --out {}",
+                        fmt::join(options.samples, ","), options.size, options.lutSize, options.texelsPerMip,
+                        options.repeat, fmt::join(outputs, ","), out);
+    if (!markdown.empty()) text += " --markdown " + markdown;
+    return text;
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app) {
+    struct Arguments {
+        bench::BenchOptions options;
+        std::vector<std::string> outputs{"specular", "lut", "irradiance"};
+        std::string out, markdown, cache;
+        bool quiet = false;
+    };
+    auto arguments = std::make_shared<Arguments>();
+    auto& o = arguments->options;
+    auto* command = app.add_subcommand("bench", "Measure run time against error for every method and sample count, "
+                                                "against converged references");
+    command->add_option("ENV", o.environments,
+                        "sky (default), furnace, sun, blender (its eight world HDRIs), one of them by name (forest, ...), "
+                        "or an .hdr/.exr/.ktx2/.dds file or a folder of faces");
+    command->add_option("--method", o.methods, "Methods from hlsl/shaders.json (default: every one)")->delimiter(',');
+    command->add_option("--samples", o.samples, "Sample counts (default 16,64,256,1024,4096,16384,65536)")
+        ->delimiter(',');
+    command->add_option("--size", o.size, "Source cube face size, a power of two (default 256)");
+    command->add_option("--lut-size", o.lutSize, "BRDF LUT size (default 512)");
+    command->add_option("--irradiance-size", o.irradianceSize, "Irradiance cube face size (default 32)");
+    command->add_option("--texels", o.texelsPerMip, "Reference texels per specular mip (default 192)");
+    command->add_option("--seed", o.seed, "Seed of the reference texels (default 1)");
+    command->add_option("--repeat", o.repeat, "Timed runs per configuration; times are medians (default 3)");
+    command->add_option("--outputs", arguments->outputs, "What to measure (default specular,lut,irradiance)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"specular", "lut", "irradiance"}));
+    command->add_option("--cache", arguments->cache, "Folder for converged references and downloads "
+                                                     "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
+    command->add_option("--out", arguments->out, "Folder for results.csv, results.json and the plots")->required();
+    command->add_option("--markdown", arguments->markdown, "Also write the report (e.g. docs/bench.md)");
+    command->add_option("--device", o.context.device, "Device index or part of its name (default: lavapipe)");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
+    command->callback([arguments] {
+        auto options = arguments->options;
+        options.outputs = parseOutputs(arguments->outputs);
+        options.cacheDir = arguments->cache;
+        if (arguments->quiet) options.log = nullptr;
+        const auto run = bench::runBench(options);
+        const auto command = invocation(options, arguments->outputs, arguments->out, arguments->markdown);
+        const auto plots = bench::writeBenchResults(run, command, arguments->out);
+        if (!arguments->markdown.empty())
+            files::writeFileAtomically(arguments->markdown,
+                                       bench::renderBenchMarkdown(run, command, arguments->out, plots, arguments->markdown));
+        if (!arguments->quiet)
+            fmt::print(stderr, "wrote {} results, {} plots to {}\n", run.results.size(), plots.size(), arguments->out);
+    });
+}
+
+} // namespace iblkit::cli
