@@ -28,11 +28,6 @@ import statistics
 import sys
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")
-from matplotlib.figure import Figure  # noqa: E402
-
 DPI, SIZE = 110, (10, 4.5)
 TINY = 1e-9  # stand-in for 0 on a log axis with no positive value at all
 OUTPUTS = ("specular", "lut", "irradiance")
@@ -41,6 +36,14 @@ REL_RMS, REL_MAX = "RMS relative error (fraction)", "max relative error (fractio
 
 class BenchError(Exception):
     pass
+
+
+def new_figure():
+    # Imported here so that a missing matplotlib is a one-line error like any other.
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    return Figure(figsize=SIZE, dpi=DPI)
 
 
 def load(path):
@@ -121,7 +124,7 @@ def panel(ax, series, colors, ylabel, title, connect=True):
 
 
 def figure(doc, title, panels):
-    fig = Figure(figsize=SIZE, dpi=DPI)
+    fig = new_figure()
     for ax, args in zip(fig.subplots(1, len(panels), squeeze=False)[0], panels):
         panel(ax, *args)
     fig.suptitle(title, fontsize=12)

@@ -104,22 +104,29 @@ vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t si
     return lut;
 }
 
+IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
+    : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
+
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t size,
                              BakeProgress& progress) {
+    IrradianceKernels steps(context);
+    return computeIrradiance(context, steps, source, size, progress);
+}
+
+Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
+                             uint32_t size, BakeProgress& progress) {
     progress.begin("irradiance");
     Irradiance result{makeCube(context, "Irradiance", size, 1), {}, 0, 0, 0};
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
-    auto project = makeKernel(context, KernelRole::ShProject);
-    const auto projection = kernels::runShProject(context, project, source, shMip);
-    report(project, progress);
+    const auto projection = kernels::runShProject(context, steps.project, source, shMip);
+    report(steps.project, progress);
     result.shRadiance = projection.radiance;
     result.solidAngle = projection.solidAngle;
     result.shSourceSize = source.mipWidth(shMip);
     progress.advance(0.1, "cube");
     const uint32_t mip = firstMipAtMost(source.desc().width, kIrradianceSourceLimit);
-    auto irradiance = makeKernel(context, KernelRole::IrradianceCube);
-    kernels::runIrradianceCube(irradiance, source, result.cube, mip);
-    report(irradiance, progress);
+    kernels::runIrradianceCube(steps.cube, source, result.cube, mip);
+    report(steps.cube, progress);
     result.cubeSourceSize = source.mipWidth(mip);
     progress.end();
     return result;

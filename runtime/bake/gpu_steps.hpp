@@ -3,6 +3,7 @@
 #include "bake_progress.hpp"
 #include "environment_input.hpp"
 #include "image.hpp"
+#include "kernels/kernel.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -37,8 +38,16 @@ struct Irradiance {
 inline constexpr uint32_t kShSourceLimit = 64;
 inline constexpr uint32_t kIrradianceSourceLimit = 32;
 
+// The two kernels of the irradiance step, compiled once for repeated runs.
+struct IrradianceKernels {
+    explicit IrradianceKernels(const vulkan::VulkanContext& context);
+    kernels::Kernel project, cube;
+};
+
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t size,
                              BakeProgress& progress);
+Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
+                             uint32_t size, BakeProgress& progress);
 
 struct Preview {
     uint32_t width, height;

@@ -2,10 +2,13 @@
 
 #include "bake.hpp"
 #include "bench_error.hpp"
+#include "shell_command.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
+#include <memory>
 #include <cstdlib>
 #include <unistd.h>
 
@@ -33,18 +36,18 @@ bake::EnvironmentInput sunCube(uint32_t size) {
     return input;
 }
 
-std::string quoted(const fs::path& path) {
-    std::string text = "'";
-    for (const char c : path.string()) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return text + "'";
-}
-
-void runShell(const std::string& command, const std::string& what) {
-    if (std::system(command.c_str()) != 0) throw BenchError("could not " + what + " (" + command + ")");
-}
-
 bool isBlenderWorld(const std::string& name) {
     return std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), name) != std::end(kBlenderWorlds);
+}
+
+// A file's name in tables and plot names: its stem in letters, digits, - and _ ("summary" is
+// the summary plot's).
+std::string tableName(const fs::path& path) {
+    std::string name = path.stem().string();
+    if (name.empty()) name = path.parent_path().filename().string(); // a folder given as "faces/"
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    return name.empty() || name == "summary" ? "file_" + name : name;
 }
 
 BenchEnvironment resolveOne(const std::string& name, uint32_t size, const fs::path& cacheDir) {
@@ -55,7 +58,7 @@ BenchEnvironment resolveOne(const std::string& name, uint32_t size, const fs::pa
     if (!fs::exists(name))
         throw BenchError(fmt::format("no environment '{}': not a file, nor sky, furnace, sun, blender or one of "
                                      "blender's worlds (city, courtyard, forest, ...)", name));
-    return {fs::path(name).stem().string(), bake::loadEnvironment(fs::path(name), false, 0)};
+    return {tableName(name), bake::loadEnvironment(fs::path(name), false, 0)};
 }
 
 } // namespace
@@ -66,16 +69,20 @@ fs::path blenderWorlds(const fs::path& cacheDir) {
     const fs::path download = cacheDir / fmt::format("blender-data.download.{}", getpid());
     fs::remove_all(download);
     fs::create_directories(download);
+    // The download folder goes, whether the fetch succeeds or not.
+    const std::unique_ptr<const fs::path, void (*)(const fs::path*)> cleanup(&download, [](const fs::path* folder) {
+        std::error_code ignored;
+        fs::remove_all(*folder, ignored);
+    });
     fmt::print(stderr, "fetching Debian's blender-data package for its world HDRIs into {}\n", cacheDir.string());
-    runShell("cd " + quoted(download) + " && apt-get download -q blender-data >&2", "download blender-data");
+    runShell("cd " + shellQuoted(download) + " && apt-get download -q blender-data >&2", "download blender-data");
     const std::string member = "./usr/share/blender/datafiles/studiolights/world";
-    runShell("dpkg-deb --fsys-tarfile " + quoted(download) + "/blender-data_*.deb | tar -x -C " + quoted(download) +
+    runShell("dpkg-deb --fsys-tarfile " + shellQuoted(download) + "/blender-data_*.deb | tar -x -C " + shellQuoted(download) +
                  " " + member,
              "unpack blender-data's world HDRIs");
     fs::create_directories(worlds.parent_path());
     fs::remove_all(worlds);
     fs::rename(download / member, worlds); // whole or not at all
-    fs::remove_all(download);
     return worlds;
 }
 

@@ -8,11 +8,17 @@
 
 namespace iblkit::bench {
 
-// Writes results.csv and results.json into `folder`, then the plots (PNG, drawn by
-// tools/bench_plot.py with matplotlib, from the copy inside the program). Returns the plot
-// files' names, relative to `folder`. Throws BenchError when the plots cannot be drawn.
+// What writeBenchResults needs, checked before a long run: Debian's python3 with matplotlib, an
+// output folder that is one (or can be made), and the Markdown file's folder. Throws BenchError.
+void checkResultsWritable(const std::filesystem::path& folder, const std::filesystem::path& markdownFile);
+
+// Writes results.json, results.csv, the plots (PNG, drawn by tools/bench_plot.py with
+// matplotlib from the copy inside the program) into `folder`, and the report to `markdownFile`
+// unless it is empty — all or nothing: a failure leaves every earlier file as it was. Returns
+// the plots' names, relative to `folder`. Throws BenchError or files::FileError.
 std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command,
-                                           const std::filesystem::path& folder);
+                                           const std::filesystem::path& folder,
+                                           const std::filesystem::path& markdownFile);
 
 // The Markdown report: the machine, device, date and command; per environment the error of
 // every method and sample count per mip with its times; the LUT and irradiance tables; the

@@ -2,6 +2,7 @@
 
 #include "atomic_output.hpp"
 #include "bench_error.hpp"
+#include "shell_command.hpp"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 
 namespace iblkit::bench {
 
@@ -61,33 +63,80 @@ std::string resultsCsv(const BenchRun& run) {
     return text;
 }
 
-std::vector<std::string> drawPlots(const fs::path& resultsJson, const fs::path& folder) {
-    const auto& script = embeddedBenchTools().at("tools/bench_plot.py");
-    const auto listing = folder / ".plots.txt";
-    // Debian's python3, which has python3-matplotlib; the script comes on stdin.
-    const std::string command = fmt::format("/usr/bin/python3 - '{}' '{}' > '{}'", resultsJson.string(), folder.string(),
-                                            listing.string());
-    std::FILE* python = popen(command.c_str(), "w");
-    if (!python) throw BenchError("could not start /usr/bin/python3 to draw the plots");
-    std::fwrite(script.data(), 1, script.size(), python);
-    const int status = pclose(python);
+// A scratch folder of this process's, removed with everything in it.
+class ScratchFolder {
+public:
+    ScratchFolder() : path_(fs::temp_directory_path() / fmt::format("iblkit-bench-{}", getpid())) {
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~ScratchFolder() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+std::string readWhole(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) throw BenchError("could not read " + path.string());
+    return text.str();
+}
+
+// Debian's python3, which has python3-matplotlib; the script comes on stdin.
+constexpr const char* kPython = "/usr/bin/python3";
+
+// The plots of results.json as drawn into `scratch`: (file name, PNG bytes).
+std::vector<std::pair<std::string, std::string>> drawPlots(const fs::path& resultsJson, const fs::path& scratch) {
+    const auto listing = scratch / "plots.txt";
+    const auto plots = scratch / "plots";
+    const std::string command = fmt::format("{} - {} {} > {}", kPython, shellQuoted(resultsJson), shellQuoted(plots),
+                                            shellQuoted(listing));
+    if (runWithInput(command, embeddedBenchTools().at("tools/bench_plot.py")) != 0)
+        throw BenchError("tools/bench_plot.py could not draw the plots (see its message above)");
     std::ifstream in(listing);
-    std::vector<std::string> plots;
+    std::vector<std::pair<std::string, std::string>> drawn;
     for (std::string line; std::getline(in, line);)
-        if (!line.empty()) plots.push_back(line);
-    fs::remove(listing);
-    if (status != 0)
-        throw BenchError("tools/bench_plot.py could not draw the plots (it needs Debian's python3-matplotlib)");
-    return plots;
+        if (!line.empty()) drawn.emplace_back(line, readWhole(plots / line));
+    return drawn;
 }
 
 } // namespace
 
-std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command, const fs::path& folder) {
+void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile) {
+    if (std::system(fmt::format("{} -c 'import matplotlib' 2>/dev/null", kPython).c_str()) != 0)
+        throw BenchError(fmt::format("the plots need {} with matplotlib (Debian's python3-matplotlib)", kPython));
+    if (fs::exists(folder) && !fs::is_directory(folder))
+        throw BenchError("--out " + folder.string() + " is not a folder");
+    const auto markdownFolder = markdownFile.parent_path();
+    if (!markdownFile.empty() && !markdownFolder.empty() && !fs::is_directory(markdownFolder))
+        throw BenchError("the folder of --markdown " + markdownFile.string() + " does not exist");
+}
+
+std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command, const fs::path& folder,
+                                           const fs::path& markdownFile) {
+    const ScratchFolder scratch;
+    const auto json = resultsJson(run, command).dump(2) + "\n";
+    files::writeFileAtomically(scratch.path() / "results.json", json);
+    const auto plots = drawPlots(scratch.path() / "results.json", scratch.path());
+    std::vector<std::string> names;
     fs::create_directories(folder);
-    files::writeFileAtomically(folder / "results.json", resultsJson(run, command).dump(2) + "\n");
-    files::writeFileAtomically(folder / "results.csv", resultsCsv(run));
-    return drawPlots(folder / "results.json", folder);
+    files::AtomicOutput output;
+    output.add(folder / "results.json", json);
+    output.add(folder / "results.csv", resultsCsv(run));
+    for (const auto& [name, bytes] : plots) {
+        output.add(folder / name, bytes);
+        names.push_back(name);
+    }
+    if (!markdownFile.empty())
+        output.add(markdownFile, renderBenchMarkdown(run, command, folder, names, markdownFile));
+    output.commit();
+    return names;
 }
 
 } // namespace iblkit::bench

@@ -38,12 +38,29 @@ std::string machineDescription() {
                        memory / double(1ull << 30));
 }
 
-void validate(const BenchOptions& options, const std::vector<std::string>& methods) {
-    for (const auto& method : methods) {
-        const auto known = kernels::methodsOf(kernels::KernelRole::Prefilter);
+bool wants(const BenchOptions& options, BenchOutput output) {
+    return std::find(options.outputs.begin(), options.outputs.end(), output) != options.outputs.end();
+}
+
+// Every kernel a method needs for what the bench will ask of it, before any work.
+void requireKernels(const BenchOptions& options, const std::string& method) {
+    using kernels::KernelRole;
+    const bool chunked = std::any_of(options.samples.begin(), options.samples.end(),
+                                     [](uint32_t samples) { return kernels::chunkSamplesFor(samples) != 0; });
+    std::vector<KernelRole> roles;
+    if (wants(options, BenchOutput::Specular)) roles.push_back(KernelRole::Prefilter);
+    if (wants(options, BenchOutput::Specular) && chunked) roles.push_back(KernelRole::PrefilterChunk);
+    if (wants(options, BenchOutput::Lut)) roles.push_back(KernelRole::BrdfLut);
+    if (wants(options, BenchOutput::Lut) && chunked) roles.push_back(KernelRole::BrdfLutChunk);
+    for (const auto role : roles) {
+        const auto known = kernels::methodsOf(role);
         if (std::find(known.begin(), known.end(), method) == known.end())
-            throw BenchError(fmt::format("no method '{}' (the kernel table has: {})", method, fmt::join(known, ", ")));
+            throw BenchError(fmt::format("no {} kernel of method '{}' in hlsl/shaders.json (methods: {})",
+                                         kernels::roleName(role), method, fmt::join(known, ", ")));
     }
+}
+
+void validate(const BenchOptions& options, const std::vector<std::string>& methods) {
     for (const uint32_t samples : options.samples)
         if (samples == 0 || samples > kernels::kMaxSamples)
             throw BenchError(fmt::format("a sample count must be between 1 and {}, not {}", kernels::kMaxSamples, samples));
@@ -52,10 +69,9 @@ void validate(const BenchOptions& options, const std::vector<std::string>& metho
     if (options.lutSize == 0 || options.lutSize > 4096) throw BenchError("the LUT size must be from 1 to 4096");
     if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
     if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
-}
-
-bool wants(const BenchOptions& options, BenchOutput output) {
-    return std::find(options.outputs.begin(), options.outputs.end(), output) != options.outputs.end();
+    if (options.irradianceSize == 0 || options.irradianceSize > 1024)
+        throw BenchError("the irradiance size must be from 1 to 1024");
+    for (const auto& method : methods) requireKernels(options, method);
 }
 
 void logResult(const BenchOptions& options, const BenchResult& result) {

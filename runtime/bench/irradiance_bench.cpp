@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
 
 namespace iblkit::bench {
 namespace {
@@ -25,19 +26,20 @@ BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
     const auto texels = cube.mip(mip);
     const auto key = ReferenceCache::key(fmt::format("exact irradiance v1 source {} output {}", sourceSize, size),
                                          std::as_bytes(texels));
-    const auto reference = cache.getOrCompute(key, [&] {
+    const auto reference = cache.getOrCompute(key, size_t(6) * size * size * 3, [&] {
         const auto rgb = reference::irradianceCube(std::vector<float>(texels.begin(), texels.end()), sourceSize, size);
         std::vector<double> flat;
         for (const auto& value : rgb) flat.insert(flat.end(), {value.r, value.g, value.b});
         return flat;
     });
-    std::vector<float> values;
+    bake::IrradianceKernels steps(context);
+    std::optional<bake::Irradiance> irradiance;
     const auto timing = timeRepeated(options.repeat, [&] {
         bake::BakeProgress progress(true);
-        auto irradiance = bake::computeIrradiance(context, source, size, progress);
-        values = irradiance.cube.download(context);
+        irradiance.emplace(bake::computeIrradiance(context, steps, source, size, progress));
         return progress.steps().back().deviceMilliseconds;
     });
+    const auto values = irradiance->cube.download(context);
     double sumSquares = 0, worst = 0;
     const size_t count = reference.size() / 3;
     for (size_t i = 0; i < count; ++i) {

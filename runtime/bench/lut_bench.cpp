@@ -15,7 +15,7 @@ LutBench::LutBench(const vulkan::VulkanContext& context, const BenchOptions& opt
     const auto key = ReferenceCache::key(fmt::format("converged lut v1 size {} nodes {} {}", options.lutSize,
                                                      quadrature.thetaNodes, quadrature.phiNodes),
                                          {});
-    reference_ = cache.getOrCompute(key, [&] { return reference::convergedBrdfLut(options.lutSize, quadrature); });
+    reference_ = cache.getOrCompute(key, size_t(options.lutSize) * options.lutSize * 2, [&] { return reference::convergedBrdfLut(options.lutSize, quadrature); });
 }
 
 BenchResult LutBench::measure(const std::string& method, uint32_t samples) {

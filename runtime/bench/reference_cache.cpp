@@ -4,6 +4,7 @@
 #include "sha256.hpp"
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <unistd.h>
 
@@ -15,12 +16,14 @@ namespace fs = std::filesystem;
 // "IBLKREF1", the value count, then the doubles in the machine's byte order.
 constexpr char kMagic[8] = {'I', 'B', 'L', 'K', 'R', 'E', 'F', '1'};
 
-bool readEntry(const fs::path& path, std::vector<double>& values) {
+bool readEntry(const fs::path& path, size_t expected, std::vector<double>& values) {
+    std::error_code error;
+    if (fs::file_size(path, error) != 16 + expected * sizeof(double) || error) return false;
     std::ifstream in(path, std::ios::binary);
     char magic[8];
     uint64_t count = 0;
     if (!in.read(magic, 8) || std::string_view(magic, 8) != std::string_view(kMagic, 8)) return false;
-    if (!in.read(reinterpret_cast<char*>(&count), sizeof count) || count > (uint64_t(1) << 32)) return false;
+    if (!in.read(reinterpret_cast<char*>(&count), sizeof count) || count != expected) return false;
     values.resize(count);
     return bool(in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(double))));
 }
@@ -49,14 +52,17 @@ std::string ReferenceCache::key(const std::string& what, std::span<const std::by
     return bake::sha256Hex(bytes);
 }
 
-std::vector<double> ReferenceCache::getOrCompute(const std::string& key, const std::function<std::vector<double>()>& compute,
-                                                 bool* hit) const {
+std::vector<double> ReferenceCache::getOrCompute(const std::string& key, size_t count,
+                                                 const std::function<std::vector<double>()>& compute, bool* hit) const {
     const auto path = folder_ / "references" / (key + ".bin");
     std::vector<double> values;
-    const bool cached = fs::exists(path) && readEntry(path, values);
+    const bool cached = fs::exists(path) && readEntry(path, count, values);
     if (hit) *hit = cached;
     if (cached) return values;
     values = compute();
+    if (values.size() != count)
+        throw BenchError("internal error: a reference has " + std::to_string(values.size()) + " values, not " +
+                         std::to_string(count));
     writeEntry(path, values);
     return values;
 }

@@ -17,9 +17,10 @@ public:
     // The key: what the reference is ("prefilter v1"), its parameters and its input's bytes.
     static std::string key(const std::string& what, std::span<const std::byte> input);
 
-    // The cached values of `key`, or compute() stored under it. `hit` tells which it was.
-    std::vector<double> getOrCompute(const std::string& key, const std::function<std::vector<double>()>& compute,
-                                     bool* hit = nullptr) const;
+    // The cached values of `key`, or compute() stored under it; an entry that does not hold
+    // exactly `count` values is computed again. `hit` tells which it was.
+    std::vector<double> getOrCompute(const std::string& key, size_t count,
+                                     const std::function<std::vector<double>()>& compute, bool* hit = nullptr) const;
 
     // The default folder: $XDG_CACHE_HOME/iblkit, else ~/.cache/iblkit, else build/cache.
     static std::filesystem::path defaultFolder();

@@ -58,7 +58,7 @@ SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image
         const uint32_t mipSize = cube.size >> mip;
         const float roughness = bake::roughnessOfMip(mip, mips_);
         auto texels = reference::seededPrefilterTexels(mipSize, options.texelsPerMip, options.seed + mip);
-        const auto values = cache.getOrCompute(prefilterKey(cube, mipSize, roughness, options), [&] {
+        const auto values = cache.getOrCompute(prefilterKey(cube, mipSize, roughness, options), texels.size() * 3, [&] {
             const auto rgb = reference::convergedPrefilter(cube.mip(0), cube.size, double(roughness), mipSize, texels);
             std::vector<double> flat;
             for (const auto& value : rgb) flat.insert(flat.end(), {value.r, value.g, value.b});

@@ -1,5 +1,7 @@
 #include "gl_bake.hpp"
 
+#include "kernels/sampled_methods.hpp"
+
 #include "compiler.hpp"
 #include "gl_support.hpp"
 #include "kernels/kernel_parameters.hpp"
@@ -67,7 +69,7 @@ std::vector<float> glBrdfLutChunks(const opengl::EglContext& context, const Open
     const auto program = glpath::program(context, form);
     const auto accumulator = bindImage(context, form, "Accumulated", size, false);
     const auto lut = bindImage(context, form, "Precomputed", size, false);
-    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
         const auto parameters = glpath::bindParameters(context, form, kernels::BrdfChunkParameters{first, count, last}.members());
         glpath::dispatch(context, program, form, {size, size, 1});
     });
@@ -81,7 +83,7 @@ std::vector<float> glPrefilterChunks(const opengl::EglContext& context, const Op
     const auto envMap = bindEnvironment(context, form, environment);
     const auto accumulator = bindImage(context, form, "Accumulated", size, true);
     const auto prefiltered = bindImage(context, form, "Prefiltered", size, true);
-    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
         const kernels::PrefilterChunkParameters chunkParameters{roughness, first, count, last};
         const auto parameters = glpath::bindParameters(context, form, chunkParameters.members());
         glpath::dispatch(context, program, form, {size, size, 6});

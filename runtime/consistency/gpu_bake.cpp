@@ -1,5 +1,7 @@
 #include "gpu_bake.hpp"
 
+#include "kernels/sampled_methods.hpp"
+
 #include "kernels/kernel_steps.hpp"
 #include "suite_inputs.hpp"
 
@@ -39,7 +41,7 @@ std::vector<float> gpuBrdfLutChunks(const vulkan::VulkanContext& context, const 
     kernels::Kernel kernel(context, program);
     vulkan::Image accumulator(context, {"Accumulated", &rg32(), size, size, 1, 1, false, true});
     vulkan::Image lut(context, {"Precomputed", &rg32(), size, size, 1, 1, false, true});
-    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
         kernels::runBrdfLutChunk(kernel, accumulator, lut, {first, count, last});
     });
     return lut.download(context);
@@ -53,7 +55,7 @@ std::vector<float> gpuPrefilterChunks(const vulkan::VulkanContext& context, cons
     const vulkan::Sampler linear(context, {});
     vulkan::Image accumulator(context, {"Accumulated", &rgba32(), size, size, 6, 1, false, true});
     vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
-    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
         kernels::runPrefilterChunk(kernel, envMap, linear, accumulator, prefiltered, 0, {roughness, first, count, last});
     });
     return prefiltered.download(context);

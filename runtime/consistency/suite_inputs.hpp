@@ -51,13 +51,4 @@ struct PreviewInputs {
 PreviewInputs previewInputs(uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
                             uint32_t sampleCount);
 
-// Calls run(first, count, last) for each chunk of `samples`, the last one shorter.
-template <typename Run>
-void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
-    for (uint32_t first = 0; first < samples; first += chunk) {
-        const uint32_t count = std::min(chunk, samples - first);
-        run(first, count, first + count == samples);
-    }
-}
-
 } // namespace iblkit::consistency

@@ -3,7 +3,9 @@
 #include "block_writer.hpp"
 #include "vulkan_error.hpp"
 
+#include <algorithm>
 #include <regex>
+#include <utility>
 
 namespace iblkit::kernels {
 namespace {
@@ -39,13 +41,16 @@ Kernel::Kernel(const vulkan::VulkanContext& context, const KernelProgram& progra
 void Kernel::setParameters(const NamedValues& values) {
     const auto* block = constantBuffer(program_.reflection());
     if (!block) throw vulkan::VulkanError("this kernel has no cbuffer to take parameters");
+    // Every member gets a value and every value a member: a renamed field must not stay 0.
     NamedValues byReflectedName;
     for (const auto& member : block->members) {
-        const auto value = values.find(member.name);
-        const auto original = values.find(originalMemberName(member.name));
-        if (value != values.end()) byReflectedName[member.name] = value->second;
-        else if (original != values.end()) byReflectedName[member.name] = original->second;
+        const auto value = values.find(originalMemberName(member.name));
+        if (value == values.end())
+            throw vulkan::VulkanError(block->name + "." + member.name + " is not a parameter of this kernel's role");
+        byReflectedName[member.name] = value->second;
     }
+    if (byReflectedName.size() != values.size())
+        throw vulkan::VulkanError(block->name + " lacks a member for some of its role's parameters");
     parameters_->write(vulkan::packBlock(block->name, block->members, block->blockSize, byReflectedName));
 }
 

@@ -43,14 +43,6 @@ SampledMethod::SampledMethod(const vulkan::VulkanContext& context, KernelRole wh
     : context_(context), samples_(samples), chunk_(chunkSamplesFor(samples, requestedChunk)),
       kernel_(context, compileSampled(chunk_ ? chunked : whole, method, samples, files)) {}
 
-template <typename Chunk>
-void SampledMethod::forEachChunk(const Chunk& run) const {
-    for (uint32_t first = 0; first < samples_; first += chunk_) {
-        const uint32_t count = std::min(chunk_, samples_ - first);
-        run(first, count, first + count == samples_);
-    }
-}
-
 PrefilterMethod::PrefilterMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
                                  uint32_t requestedChunk, const ShaderFiles& files)
     : SampledMethod(context, KernelRole::Prefilter, KernelRole::PrefilterChunk, method, samples, requestedChunk, files) {}
@@ -60,7 +52,7 @@ void PrefilterMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler,
     if (!chunk_) return runPrefilter(kernel_, source, sampler, target, mip, {roughness});
     const uint32_t size = target.mipWidth(mip);
     vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32B32A32_SFLOAT"), size, size, 6, 1, false, true});
-    forEachChunk([&](uint32_t first, uint32_t count, bool last) {
+    forEachChunk(samples_, chunk_, [&](uint32_t first, uint32_t count, bool last) {
         runPrefilterChunk(kernel_, source, sampler, accumulator, target, mip, {roughness, first, count, last});
     });
 }
@@ -73,7 +65,7 @@ void BrdfLutMethod::run(vulkan::Image& lut) {
     if (!chunk_) return runBrdfLut(kernel_, lut);
     const auto& desc = lut.desc();
     vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32_SFLOAT"), desc.width, desc.height, 1, 1, false, true});
-    forEachChunk([&](uint32_t first, uint32_t count, bool last) {
+    forEachChunk(samples_, chunk_, [&](uint32_t first, uint32_t count, bool last) {
         runBrdfLutChunk(kernel_, accumulator, lut, {first, count, last});
     });
 }

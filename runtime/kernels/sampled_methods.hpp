@@ -4,7 +4,9 @@
 
 #include "image.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <optional>
 #include <string>
 
@@ -14,12 +16,24 @@ namespace iblkit::kernels {
 // this runs as chunks of kChunkSamples, each a dispatch that adds to an accumulator.
 inline constexpr uint32_t kLoopLimit = 65535;
 inline constexpr uint32_t kChunkSamples = 32768;
-// The largest sample count a method takes (float(i) / float(n) stays exact up to 2^24).
+// The largest sample count a method takes: i and n, and so Hammersley's i / n, stay exact in
+// float up to 2^24.
 inline constexpr uint32_t kMaxSamples = 1u << 20;
 
 // How a sampled method splits its loop: chunks of `chunkSamples`, or one dispatch when 0 and
 // the count is within the loop limit.
 uint32_t chunkSamplesFor(uint32_t samples, uint32_t requestedChunk = 0);
+
+// Calls run(first, count, last) for each chunk of `samples`, the last one shorter. Throws
+// std::invalid_argument for a chunk of 0.
+template <typename Run>
+void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
+    if (chunk == 0) throw std::invalid_argument("a chunk of 0 samples");
+    for (uint32_t first = 0; first < samples; first += chunk) {
+        const uint32_t count = std::min(chunk, samples - first);
+        run(first, count, first + count == samples);
+    }
+}
 
 // A method at a sample count: its kernel of the whole-loop role, or, when the samples are
 // split, its chunked kernel, dispatched chunk by chunk with the same per-sample math.
@@ -31,10 +45,6 @@ public:
 protected:
     SampledMethod(const vulkan::VulkanContext& context, KernelRole whole, KernelRole chunked, const std::string& method,
                   uint32_t samples, uint32_t requestedChunk, const ShaderFiles& files);
-    // Calls run(first, count, last) for each chunk of the samples.
-    template <typename Chunk>
-    void forEachChunk(const Chunk& run) const;
-
     const vulkan::VulkanContext& context_;
     uint32_t samples_, chunk_;
     Kernel kernel_;

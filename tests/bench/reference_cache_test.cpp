@@ -21,9 +21,9 @@ TEST(ReferenceCache, ComputesOnceThenReads) {
         return std::vector<double>{1.5, -2.25, 1e300};
     };
     bool hit = true;
-    EXPECT_EQ(cache.getOrCompute(key, compute, &hit), (std::vector<double>{1.5, -2.25, 1e300}));
+    EXPECT_EQ(cache.getOrCompute(key, 3, compute, &hit), (std::vector<double>{1.5, -2.25, 1e300}));
     EXPECT_FALSE(hit);
-    EXPECT_EQ(cache.getOrCompute(key, compute, &hit), (std::vector<double>{1.5, -2.25, 1e300}));
+    EXPECT_EQ(cache.getOrCompute(key, 3, compute, &hit), (std::vector<double>{1.5, -2.25, 1e300}));
     EXPECT_TRUE(hit);
     EXPECT_EQ(computed, 1);
 }
@@ -39,10 +39,13 @@ TEST(ReferenceCache, ADamagedEntryIsComputedAgain) {
     testing::TempFolder scratch;
     const ReferenceCache cache(scratch.path());
     const auto key = ReferenceCache::key("test v1", {});
-    cache.getOrCompute(key, [] { return std::vector<double>{1, 2, 3}; });
+    cache.getOrCompute(key, 3, [] { return std::vector<double>{1, 2, 3}; });
     std::ofstream(scratch.path() / "references" / (key + ".bin"), std::ios::trunc) << "IBLKREF1 truncated";
     bool hit = true;
-    EXPECT_EQ(cache.getOrCompute(key, [] { return std::vector<double>{4}; }, &hit), std::vector<double>{4});
+    EXPECT_EQ(cache.getOrCompute(key, 1, [] { return std::vector<double>{4}; }, &hit), std::vector<double>{4});
+    EXPECT_FALSE(hit);
+    // An entry of another length, under a key that a bug made collide: computed again.
+    EXPECT_EQ(cache.getOrCompute(key, 2, [] { return std::vector<double>{5, 6}; }, &hit), (std::vector<double>{5, 6}));
     EXPECT_FALSE(hit);
 }
 

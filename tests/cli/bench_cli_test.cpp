@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace iblkit::testing {
 namespace {
@@ -50,13 +52,24 @@ TEST_F(BenchCli, WritesResultsPlotsAndReport) {
     EXPECT_NE(report.find("Time to reach the targets"), std::string::npos);
 }
 
+TEST_F(BenchCli, AFailedRunLeavesEarlierResultsAsTheyWere) {
+    fs::create_directories(scratch.path() / "out");
+    std::ofstream(scratch.path() / "out" / "results.json") << "GOOD";
+    const auto result = iblkit({"bench", "furnace", "--samples", "2000000", "--out", at("out")});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_EQ(readFile(scratch.path() / "out" / "results.json"), "GOOD");
+    EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path() / "out"), fs::directory_iterator()), 1);
+}
+
 TEST_F(BenchCli, BadArgumentsGetOneLineAndNothingIsWritten) {
     for (const auto& arguments : std::vector<std::vector<std::string>>{
              {"bench", "nowhere.exr", "--out", at("out")},
              {"bench", "--samples", "0", "--out", at("out")},
              {"bench", "--method", "guess", "--out", at("out")},
              {"bench", "--size", "100", "--out", at("out")},
-             {"bench", "--outputs", "everything", "--out", at("out")}}) {
+             {"bench", "--outputs", "everything", "--out", at("out")},
+             {"bench", "--irradiance-size", "0", "--out", at("out")},
+             {"bench", "furnace", "--out", at("out"), "--markdown", at("no-such-folder/bench.md")}}) {
         const auto result = iblkit(arguments);
         EXPECT_NE(result.exitCode, 0) << arguments[1];
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;

@@ -1,8 +1,8 @@
 #include "bench_command.hpp"
 
-#include "atomic_output.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "shell_command.hpp"
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
@@ -20,15 +20,26 @@ std::vector<bench::BenchOutput> parseOutputs(const std::vector<std::string>& nam
     return outputs;
 }
 
+// A word of the command as a shell reads it back.
+std::string word(const std::string& text) {
+    const bool plain = !text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                               "0123456789-_./,=+:") == std::string::npos;
+    return plain ? text : bench::shellQuoted(text);
+}
+
 // The command as a user would type it again, for the report.
 std::string invocation(const bench::BenchOptions& options, const std::vector<std::string>& outputs,
                        const std::string& out, const std::string& markdown) {
-    std::string text = "iblkit bench " + fmt::format("{}", fmt::join(options.environments, " "));
-    if (!options.methods.empty()) text += fmt::format(" --method {}", fmt::join(options.methods, ","));
-    text += fmt::format(" --samples {} --size {} --lut-size {} --texels {} --repeat {} --outputs {} --out {}",
-                        fmt::join(options.samples, ","), options.size, options.lutSize, options.texelsPerMip,
-                        options.repeat, fmt::join(outputs, ","), out);
-    if (!markdown.empty()) text += " --markdown " + markdown;
+    std::string text = "iblkit bench";
+    for (const auto& environment : options.environments) text += " " + word(environment);
+    if (!options.methods.empty()) text += fmt::format(" --method {}", word(fmt::format("{}", fmt::join(options.methods, ","))));
+    text += fmt::format(" --samples {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} --repeat {} "
+                        "--outputs {}",
+                        fmt::join(options.samples, ","), options.size, options.lutSize, options.irradianceSize,
+                        options.texelsPerMip, options.seed, options.repeat, fmt::join(outputs, ","));
+    if (!options.context.device.empty()) text += " --device " + word(options.context.device);
+    text += " --out " + word(out);
+    if (!markdown.empty()) text += " --markdown " + word(markdown);
     return text;
 }
 
@@ -71,12 +82,10 @@ void addBenchCommand(CLI::App& app) {
         options.outputs = parseOutputs(arguments->outputs);
         options.cacheDir = arguments->cache;
         if (arguments->quiet) options.log = nullptr;
+        bench::checkResultsWritable(arguments->out, arguments->markdown);
         const auto run = bench::runBench(options);
         const auto command = invocation(options, arguments->outputs, arguments->out, arguments->markdown);
-        const auto plots = bench::writeBenchResults(run, command, arguments->out);
-        if (!arguments->markdown.empty())
-            files::writeFileAtomically(arguments->markdown,
-                                       bench::renderBenchMarkdown(run, command, arguments->out, plots, arguments->markdown));
+        const auto plots = bench::writeBenchResults(run, command, arguments->out, arguments->markdown);
         if (!arguments->quiet)
             fmt::print(stderr, "wrote {} results, {} plots to {}\n", run.results.size(), plots.size(), arguments->out);
     });
