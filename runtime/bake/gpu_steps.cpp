@@ -29,12 +29,6 @@ Kernel makeKernel(const vulkan::VulkanContext& context, KernelRole role) {
 // The kernel's device time so far goes to the progress step.
 void report(Kernel& kernel, BakeProgress& progress) { progress.addDeviceTime(kernel.takeTotals().deviceMilliseconds); }
 
-uint32_t firstMipAtMost(uint32_t size, uint32_t limit) {
-    uint32_t mip = 0;
-    while ((size >> mip) > limit) ++mip;
-    return mip;
-}
-
 // Cube texels spanning more than one panorama texel average several reads (see EquirectToCubeCS).
 uint32_t supersampleFor(uint32_t panoramaWidth, uint32_t size) {
     return std::clamp<uint32_t>((panoramaWidth + 4 * size - 1) / (4 * size), 1, 16);
@@ -56,6 +50,12 @@ void uploadFaces(const vulkan::VulkanContext& context, const std::vector<float>&
 }
 
 } // namespace
+
+uint32_t firstMipAtMost(uint32_t size, uint32_t limit) {
+    uint32_t mip = 0;
+    while ((size >> mip) > limit) ++mip;
+    return mip;
+}
 
 vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
                               BakeProgress& progress) {

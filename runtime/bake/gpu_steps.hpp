@@ -34,6 +34,9 @@ struct Irradiance {
     uint32_t cubeSourceSize;
 };
 
+// The first mip of a `size` chain whose faces are at most `limit` across.
+uint32_t firstMipAtMost(uint32_t size, uint32_t limit);
+
 // The source mip at most this size that the irradiance steps read.
 inline constexpr uint32_t kShSourceLimit = 64;
 inline constexpr uint32_t kIrradianceSourceLimit = 32;

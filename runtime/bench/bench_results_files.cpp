@@ -2,16 +2,15 @@
 
 #include "atomic_output.hpp"
 #include "bench_error.hpp"
+#include "files.hpp"
 #include "shell_command.hpp"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <unistd.h>
 
 namespace iblkit::bench {
@@ -81,11 +80,8 @@ private:
 };
 
 std::string readWhole(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) throw BenchError("could not read " + path.string());
-    return text.str();
+    const auto bytes = image_io::readFileBytes(path);
+    return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 // Debian's python3, which has python3-matplotlib; the script comes on stdin.

@@ -92,7 +92,7 @@ void benchEnvironment(const vulkan::VulkanContext& context, const BenchEnvironme
                       std::vector<BenchResult>& results) {
     bake::BakeProgress quiet(true);
     auto source = bake::buildSourceCube(context, environment.input, options.size, quiet);
-    const SourceCube cube{source.download(context), options.size, source.desc().mips};
+    const reference::MippedCube cube{options.size, source.desc().mips, source.download(context)};
     const auto add = [&](BenchResult result) {
         result.environment = environment.name;
         logResult(options, result);

@@ -18,19 +18,15 @@ constexpr uint32_t kReferenceSourceLimit = 128;
 
 } // namespace
 
-BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, const SourceCube& cube,
+BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, const reference::MippedCube& cube,
                               const BenchOptions& options, const ReferenceCache& cache) {
-    uint32_t mip = 0;
-    while ((cube.size >> mip) > kReferenceSourceLimit) ++mip;
+    const uint32_t mip = bake::firstMipAtMost(cube.size, kReferenceSourceLimit);
     const uint32_t sourceSize = cube.size >> mip, size = options.irradianceSize;
     const auto texels = cube.mip(mip);
     const auto key = ReferenceCache::key(fmt::format("exact irradiance v1 source {} output {}", sourceSize, size),
                                          std::as_bytes(texels));
     const auto reference = cache.getOrCompute(key, size_t(6) * size * size * 3, [&] {
-        const auto rgb = reference::irradianceCube(std::vector<float>(texels.begin(), texels.end()), sourceSize, size);
-        std::vector<double> flat;
-        for (const auto& value : rgb) flat.insert(flat.end(), {value.r, value.g, value.b});
-        return flat;
+        return flatten(reference::irradianceCube(std::vector<float>(texels.begin(), texels.end()), sourceSize, size));
     });
     bake::IrradianceKernels steps(context);
     std::optional<bake::Irradiance> irradiance;
@@ -40,16 +36,12 @@ BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
         return progress.steps().back().deviceMilliseconds;
     });
     const auto values = irradiance->cube.download(context);
-    double sumSquares = 0, worst = 0;
-    const size_t count = reference.size() / 3;
-    for (size_t i = 0; i < count; ++i) {
-        const double error = relativeLuminanceError({values[4 * i], values[4 * i + 1], values[4 * i + 2]},
-                                                    {reference[3 * i], reference[3 * i + 1], reference[3 * i + 2]});
-        sumSquares += error * error;
-        worst = std::max(worst, std::isnan(error) ? INFINITY : error);
-    }
+    ErrorSummary errors;
+    const auto exact = unflatten(reference);
+    for (size_t i = 0; i < exact.size(); ++i)
+        errors.add(relativeLuminanceError({values[4 * i], values[4 * i + 1], values[4 * i + 2]}, exact[i]));
     return {BenchOutput::Irradiance, {}, "exact-sum", 0, 0, timing.deviceMilliseconds, timing.wallMilliseconds,
-            options.repeat, std::sqrt(sumSquares / double(count)), worst, {}};
+            options.repeat, errors.rms(), errors.max(), {}};
 }
 
 } // namespace iblkit::bench

@@ -27,14 +27,10 @@ BenchResult LutBench::measure(const std::string& method, uint32_t samples) {
         return integrator.takeTotals().deviceMilliseconds;
     });
     const auto values = lut.download(context_);
-    double sumSquares = 0, worst = 0;
-    for (size_t i = 0; i < values.size(); ++i) {
-        const double error = std::abs(double(values[i]) - reference_[i]);
-        sumSquares += error * error;
-        worst = std::max(worst, std::isnan(error) ? INFINITY : error);
-    }
+    ErrorSummary errors;
+    for (size_t i = 0; i < values.size(); ++i) errors.add(std::abs(double(values[i]) - reference_[i]));
     return {BenchOutput::Lut, {}, method, samples, integrator.chunkSamples(), timing.deviceMilliseconds,
-            timing.wallMilliseconds, options_.repeat, std::sqrt(sumSquares / double(values.size())), worst, {}};
+            timing.wallMilliseconds, options_.repeat, errors.rms(), errors.max(), {}};
 }
 
 } // namespace iblkit::bench

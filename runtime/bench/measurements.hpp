@@ -4,6 +4,7 @@
 #include "reference_cache.hpp"
 
 #include "image.hpp"
+#include "mipped_cube.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -21,22 +22,33 @@ template <typename Run>
 Timing timeRepeated(uint32_t repeat, const Run& run);
 
 double median(std::vector<double> values);
+
+// The RMS and the largest of a run of errors; a NaN counts as an infinite error.
+class ErrorSummary {
+public:
+    void add(double error);
+    double rms() const;
+    double max() const { return max_; }
+
+private:
+    double sumSquares_ = 0, max_ = 0;
+    size_t count_ = 0;
+};
+
+// RGB values as the reference cache stores them, and back.
+std::vector<double> flatten(const std::vector<glm::dvec3>& rgb);
+std::vector<glm::dvec3> unflatten(const std::vector<double>& values);
+
 double luminance(glm::dvec3 rgb);
 // |actual - reference| / reference in luminance; 0 when both are 0.
 double relativeLuminanceError(glm::dvec3 actual, glm::dvec3 reference);
 
-// The source cube as the references read it: mip 0's texels, and its size.
-struct SourceCube {
-    std::vector<float> allMips; // as vulkan::Image::download lays them out
-    uint32_t size, mips;
-    std::span<const float> mip(uint32_t level) const;
-};
 
 // Prefilter methods over every specular mip >= 1 of a source cube, against the converged
 // prefilter at the seeded texels of each mip.
 class SpecularBench {
 public:
-    SpecularBench(const vulkan::VulkanContext& context, vulkan::Image& source, const SourceCube& cube,
+    SpecularBench(const vulkan::VulkanContext& context, vulkan::Image& source, const reference::MippedCube& cube,
                   const BenchOptions& options, const ReferenceCache& cache);
     ~SpecularBench();
     BenchResult measure(const std::string& method, uint32_t samples);
@@ -63,7 +75,7 @@ private:
 };
 
 // The bake's irradiance steps against the exact sum over the source cube.
-BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, const SourceCube& cube,
+BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, const reference::MippedCube& cube,
                               const BenchOptions& options, const ReferenceCache& cache);
 
 template <typename Run>

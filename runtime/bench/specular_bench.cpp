@@ -20,36 +20,28 @@ struct SpecularBench::MipReference {
 namespace {
 
 // The key names everything the converged values depend on; "v1" changes with their math.
-std::string prefilterKey(const SourceCube& cube, uint32_t mipSize, float roughness, const BenchOptions& options) {
+std::string prefilterKey(const reference::MippedCube& cube, uint32_t mipSize, float roughness, const BenchOptions& options) {
     const auto source = cube.mip(0);
     return ReferenceCache::key(fmt::format("converged prefilter v1 size {} roughness {:a} output {} texels {} seed {}",
                                            cube.size, roughness, mipSize, options.texelsPerMip, options.seed),
                                std::as_bytes(source));
 }
 
-std::vector<glm::dvec3> unflatten(const std::vector<double>& values) {
-    std::vector<glm::dvec3> rgb(values.size() / 3);
-    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
-    return rgb;
-}
-
 MipError mipError(const std::vector<float>& specular, const vulkan::Image& image, uint32_t mip, float roughness,
                   const std::vector<reference::PrefilterTexel>& texels, const std::vector<glm::dvec3>& reference) {
     const uint32_t width = image.mipWidth(mip);
-    double sumSquares = 0, worst = 0;
+    ErrorSummary errors;
     for (size_t i = 0; i < texels.size(); ++i) {
         const auto& texel = texels[i];
         const float* at = &specular[image.valueOffset(mip, texel.face) + (size_t(texel.y) * width + texel.x) * 4];
-        const double error = relativeLuminanceError({at[0], at[1], at[2]}, reference[i]);
-        sumSquares += error * error;
-        worst = std::max(worst, std::isnan(error) ? INFINITY : error);
+        errors.add(relativeLuminanceError({at[0], at[1], at[2]}, reference[i]));
     }
-    return {mip, roughness, uint32_t(texels.size()), std::sqrt(sumSquares / double(texels.size())), worst};
+    return {mip, roughness, uint32_t(texels.size()), errors.rms(), errors.max()};
 }
 
 } // namespace
 
-SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image& source, const SourceCube& cube,
+SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image& source, const reference::MippedCube& cube,
                              const BenchOptions& options, const ReferenceCache& cache)
     : context_(context), source_(source), options_(options) {
     bake::BakeSettings defaults;
@@ -59,10 +51,7 @@ SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image
         const float roughness = bake::roughnessOfMip(mip, mips_);
         auto texels = reference::seededPrefilterTexels(mipSize, options.texelsPerMip, options.seed + mip);
         const auto values = cache.getOrCompute(prefilterKey(cube, mipSize, roughness, options), texels.size() * 3, [&] {
-            const auto rgb = reference::convergedPrefilter(cube.mip(0), cube.size, double(roughness), mipSize, texels);
-            std::vector<double> flat;
-            for (const auto& value : rgb) flat.insert(flat.end(), {value.r, value.g, value.b});
-            return flat;
+            return flatten(reference::convergedPrefilter(cube.mip(0), cube.size, double(roughness), mipSize, texels));
         });
         references_.push_back({mip, roughness, std::move(texels), unflatten(values)});
     }

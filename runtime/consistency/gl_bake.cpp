@@ -1,6 +1,6 @@
 #include "gl_bake.hpp"
 
-#include "kernels/sampled_methods.hpp"
+#include "kernels/kernel_steps.hpp"
 
 #include "compiler.hpp"
 #include "gl_support.hpp"

@@ -53,7 +53,7 @@ std::vector<float> glDownsampleChain(const opengl::EglContext& context, const Op
     return chain;
 }
 
-// The partial sums of every 8x8 group added in double, as kernels::runShProject adds them.
+// The partial sums of every 8x8 group added in double by kernels::sumShPartials, as on Vulkan.
 kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                   uint32_t mip) {
     const auto program = glpath::program(context, form);
@@ -64,15 +64,7 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
     context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "Partials"), partials.name());
     const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip}.members());
     glpath::dispatch(context, program, form, {groupsPerSide * 8, groupsPerSide * 8, 6});
-    const auto values = glpath::readBuffer(context, partials, size_t(groups) * 9 * 4);
-    kernels::ShProjection projection{};
-    for (size_t group = 0; group < groups; ++group)
-        for (size_t k = 0; k < 9; ++k) {
-            const float* at = values.data() + (group * 9 + k) * 4;
-            projection.radiance[k] += glm::dvec3(at[0], at[1], at[2]);
-            if (k == 0) projection.solidAngle += at[3];
-        }
-    return projection;
+    return kernels::sumShPartials(glpath::readBuffer(context, partials, size_t(groups) * 9 * 4), groups);
 }
 
 std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,

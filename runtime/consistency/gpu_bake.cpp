@@ -1,7 +1,5 @@
 #include "gpu_bake.hpp"
 
-#include "kernels/sampled_methods.hpp"
-
 #include "kernels/kernel_steps.hpp"
 #include "suite_inputs.hpp"
 
@@ -39,11 +37,8 @@ std::vector<float> gpuPrefilter(const vulkan::VulkanContext& context, const Path
 std::vector<float> gpuBrdfLutChunks(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size,
                                     uint32_t samples, uint32_t chunk) {
     kernels::Kernel kernel(context, program);
-    vulkan::Image accumulator(context, {"Accumulated", &rg32(), size, size, 1, 1, false, true});
     vulkan::Image lut(context, {"Precomputed", &rg32(), size, size, 1, 1, false, true});
-    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
-        kernels::runBrdfLutChunk(kernel, accumulator, lut, {first, count, last});
-    });
+    kernels::runBrdfLutChunked(kernel, lut, samples, chunk);
     return lut.download(context);
 }
 
@@ -53,11 +48,8 @@ std::vector<float> gpuPrefilterChunks(const vulkan::VulkanContext& context, cons
     kernels::Kernel kernel(context, program);
     auto envMap = uploadEnvironment(context, environment);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image accumulator(context, {"Accumulated", &rgba32(), size, size, 6, 1, false, true});
     vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
-    kernels::forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
-        kernels::runPrefilterChunk(kernel, envMap, linear, accumulator, prefiltered, 0, {roughness, first, count, last});
-    });
+    kernels::runPrefilterChunked(kernel, envMap, linear, prefiltered, 0, roughness, samples, chunk);
     return prefiltered.download(context);
 }
 

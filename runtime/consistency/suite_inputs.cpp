@@ -8,21 +8,6 @@
 #include <numbers>
 
 namespace iblkit::consistency {
-namespace {
-
-size_t mipOffset(const MippedCube& cube, uint32_t mip) {
-    size_t offset = 0;
-    for (uint32_t level = 0; level < mip; ++level) offset += size_t(6) * cube.mipSize(level) * cube.mipSize(level) * 4;
-    return offset;
-}
-
-} // namespace
-
-std::span<const float> MippedCube::mip(uint32_t level) const {
-    const size_t count = size_t(6) * mipSize(level) * mipSize(level) * 4;
-    return std::span(texels).subspan(mipOffset(*this, level), count);
-}
-
 MippedCube testCube(uint32_t size, uint32_t mips) {
     MippedCube cube{size, mips, reference::CubeEnvironment::testEnvironment(size).texels()};
     std::vector<float> level = cube.texels;

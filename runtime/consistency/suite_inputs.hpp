@@ -1,6 +1,7 @@
 #pragma once
 
 #include "kernels/kernel_parameters.hpp"
+#include "mipped_cube.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -12,15 +13,7 @@ namespace iblkit::consistency {
 // The inputs the cube kernels read, made on the host so that the GPU paths and the C++
 // references see the same floats.
 
-// A cube with its mips, texels as vulkan::Image uploads them: mip, face, row, column, RGBA.
-struct MippedCube {
-    uint32_t size = 0;
-    uint32_t mips = 0;
-    std::vector<float> texels;
-
-    uint32_t mipSize(uint32_t mip) const { return std::max(1u, size >> mip); }
-    std::span<const float> mip(uint32_t mip) const;
-};
+using MippedCube = reference::MippedCube;
 
 // The test environment (reference::CubeEnvironment::testEnvironment) at `size` with `mips`
 // mips, each made from the one above by DownsampleCubeCS's float arithmetic.

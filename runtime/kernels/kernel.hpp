@@ -25,6 +25,7 @@ public:
     Kernel(const vulkan::VulkanContext& context, const KernelProgram& program);
 
     vulkan::ComputeProgram& program() { return program_; }
+    const vulkan::VulkanContext& context() const { return context_; }
     // Sets the cbuffer's members by name. A member SPIRV-Cross renamed in a round trip
     // ("_21_Roughness") takes the value of its original name.
     void setParameters(const NamedValues& values);

@@ -39,6 +39,16 @@ void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
     kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
 }
 
+void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                         uint32_t mip, float roughness, uint32_t samples, uint32_t chunk) {
+    const uint32_t size = target.mipWidth(mip);
+    vulkan::Image accumulator(kernel.context(),
+                              {"Accumulated", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 6, 1, false, true});
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        runPrefilterChunk(kernel, source, sampler, accumulator, target, mip, {roughness, first, count, last});
+    });
+}
+
 void runBrdfLut(Kernel& kernel, vulkan::Image& lut) {
     kernel.program().bind("Precomputed", lut);
     kernel.run({lut.desc().width, lut.desc().height, 1});
@@ -51,6 +61,15 @@ void runBrdfLutChunk(Kernel& kernel, vulkan::Image& accumulator, vulkan::Image& 
     kernel.run({lut.desc().width, lut.desc().height, 1});
 }
 
+void runBrdfLutChunked(Kernel& kernel, vulkan::Image& lut, uint32_t samples, uint32_t chunk) {
+    const auto& desc = lut.desc();
+    vulkan::Image accumulator(kernel.context(), {"Accumulated", &vulkan::texelFormatNamed("R32G32_SFLOAT"), desc.width,
+                                                 desc.height, 1, 1, false, true});
+    forEachChunk(samples, chunk, [&](uint32_t first, uint32_t count, bool last) {
+        runBrdfLutChunk(kernel, accumulator, lut, {first, count, last});
+    });
+}
+
 ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip) {
     const uint32_t size = source.mipWidth(mip), groupsPerSide = (size + 7) / 8;
     const uint32_t groups = groupsPerSide * groupsPerSide * 6;
@@ -60,11 +79,14 @@ ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, 
     kernel.setParameters(SourceMipParameters{mip}.members());
     kernel.runGroups({groupsPerSide, groupsPerSide, 6});
     const auto bytes = partials.read();
-    const auto* values = reinterpret_cast<const float*>(bytes.data());
+    return sumShPartials({reinterpret_cast<const float*>(bytes.data()), bytes.size() / sizeof(float)}, groups);
+}
+
+ShProjection sumShPartials(std::span<const float> partials, uint32_t groups) {
     ShProjection projection{};
     for (uint32_t group = 0; group < groups; ++group)
         for (uint32_t k = 0; k < 9; ++k) {
-            const float* at = values + (size_t(group) * 9 + k) * 4;
+            const float* at = &partials[(size_t(group) * 9 + k) * 4];
             projection.radiance[k] += glm::dvec3(at[0], at[1], at[2]);
             if (k == 0) projection.solidAngle += at[3];
         }

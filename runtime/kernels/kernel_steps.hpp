@@ -6,10 +6,25 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
+#include <stdexcept>
 
 namespace iblkit::kernels {
+
+// Calls run(first, count, last) for each chunk of `samples`, the last one shorter. Throws
+// std::invalid_argument for a chunk of 0.
+template <typename Run>
+void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
+    if (chunk == 0) throw std::invalid_argument("a chunk of 0 samples");
+    for (uint32_t first = 0; first < samples; first += chunk) {
+        const uint32_t count = std::min(chunk, samples - first);
+        run(first, count, first + count == samples);
+    }
+}
+
 
 // The dispatch of each kernel role, written once: what it binds, with which parameters, over
 // which threads. The kernel may come from any form of its shader (the bake's, or a
@@ -30,16 +45,27 @@ void runPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& 
 void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& accumulator,
                        vulkan::Image& target, uint32_t mip, const PrefilterChunkParameters& parameters);
 
+// PrefilterChunk over all `samples`, `chunk` per dispatch, through an accumulator it makes.
+void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                         uint32_t mip, float roughness, uint32_t samples, uint32_t chunk);
+
 // BrdfLut: the whole LUT image.
 void runBrdfLut(Kernel& kernel, vulkan::Image& lut);
 
 // BrdfLutChunk: one chunk into `accumulator` (RG32F, the LUT's size); resolve writes `lut`.
 void runBrdfLutChunk(Kernel& kernel, vulkan::Image& accumulator, vulkan::Image& lut, const BrdfChunkParameters& parameters);
 
+// BrdfLutChunk over all `samples`, `chunk` per dispatch, through an accumulator it makes.
+void runBrdfLutChunked(Kernel& kernel, vulkan::Image& lut, uint32_t samples, uint32_t chunk);
+
 struct ShProjection {
     std::array<glm::dvec3, 9> radiance; // projections of radiance on Y_lm, summed in double
     double solidAngle;                  // 4 pi as the texels summed it
 };
+// ShProject writes 9 float4 partial sums per 8x8 group (rgb, and the solid angle in w of the
+// first); their total in double.
+ShProjection sumShPartials(std::span<const float> partials, uint32_t groups);
+
 // ShProject: one mip of a cube projected on bands 0-2.
 ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip);
 

@@ -2,7 +2,6 @@
 
 #include "kernels/kernel_steps.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace iblkit::kernels {
@@ -14,8 +13,6 @@ std::map<std::string, std::string> sampleCountDefine(uint32_t samples) {
                                     std::to_string(samples));
     return {{"SAMPLE_COUNT", std::to_string(samples)}};
 }
-
-const vulkan::TexelFormat& format(const char* name) { return vulkan::texelFormatNamed(name); }
 
 // The LUT is written as 32-bit floats; the bake rounds it to its file's format on the host.
 std::map<std::string, std::string> imageFormats(KernelRole role) {
@@ -40,7 +37,7 @@ uint32_t chunkSamplesFor(uint32_t samples, uint32_t requestedChunk) {
 
 SampledMethod::SampledMethod(const vulkan::VulkanContext& context, KernelRole whole, KernelRole chunked,
                              const std::string& method, uint32_t samples, uint32_t requestedChunk, const ShaderFiles& files)
-    : context_(context), samples_(samples), chunk_(chunkSamplesFor(samples, requestedChunk)),
+    : samples_(samples), chunk_(chunkSamplesFor(samples, requestedChunk)),
       kernel_(context, compileSampled(chunk_ ? chunked : whole, method, samples, files)) {}
 
 PrefilterMethod::PrefilterMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
@@ -49,12 +46,8 @@ PrefilterMethod::PrefilterMethod(const vulkan::VulkanContext& context, const std
 
 void PrefilterMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                           float roughness) {
-    if (!chunk_) return runPrefilter(kernel_, source, sampler, target, mip, {roughness});
-    const uint32_t size = target.mipWidth(mip);
-    vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32B32A32_SFLOAT"), size, size, 6, 1, false, true});
-    forEachChunk(samples_, chunk_, [&](uint32_t first, uint32_t count, bool last) {
-        runPrefilterChunk(kernel_, source, sampler, accumulator, target, mip, {roughness, first, count, last});
-    });
+    if (chunk_) return runPrefilterChunked(kernel_, source, sampler, target, mip, roughness, samples_, chunk_);
+    runPrefilter(kernel_, source, sampler, target, mip, {roughness});
 }
 
 BrdfLutMethod::BrdfLutMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
@@ -62,12 +55,8 @@ BrdfLutMethod::BrdfLutMethod(const vulkan::VulkanContext& context, const std::st
     : SampledMethod(context, KernelRole::BrdfLut, KernelRole::BrdfLutChunk, method, samples, requestedChunk, files) {}
 
 void BrdfLutMethod::run(vulkan::Image& lut) {
-    if (!chunk_) return runBrdfLut(kernel_, lut);
-    const auto& desc = lut.desc();
-    vulkan::Image accumulator(context_, {"Accumulated", &format("R32G32_SFLOAT"), desc.width, desc.height, 1, 1, false, true});
-    forEachChunk(samples_, chunk_, [&](uint32_t first, uint32_t count, bool last) {
-        runBrdfLutChunk(kernel_, accumulator, lut, {first, count, last});
-    });
+    if (chunk_) return runBrdfLutChunked(kernel_, lut, samples_, chunk_);
+    runBrdfLut(kernel_, lut);
 }
 
 } // namespace iblkit::kernels

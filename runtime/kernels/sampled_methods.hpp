@@ -4,9 +4,7 @@
 
 #include "image.hpp"
 
-#include <algorithm>
 #include <cstdint>
-#include <stdexcept>
 #include <optional>
 #include <string>
 
@@ -24,17 +22,6 @@ inline constexpr uint32_t kMaxSamples = 1u << 20;
 // the count is within the loop limit.
 uint32_t chunkSamplesFor(uint32_t samples, uint32_t requestedChunk = 0);
 
-// Calls run(first, count, last) for each chunk of `samples`, the last one shorter. Throws
-// std::invalid_argument for a chunk of 0.
-template <typename Run>
-void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
-    if (chunk == 0) throw std::invalid_argument("a chunk of 0 samples");
-    for (uint32_t first = 0; first < samples; first += chunk) {
-        const uint32_t count = std::min(chunk, samples - first);
-        run(first, count, first + count == samples);
-    }
-}
-
 // A method at a sample count: its kernel of the whole-loop role, or, when the samples are
 // split, its chunked kernel, dispatched chunk by chunk with the same per-sample math.
 class SampledMethod {
@@ -45,7 +32,6 @@ public:
 protected:
     SampledMethod(const vulkan::VulkanContext& context, KernelRole whole, KernelRole chunked, const std::string& method,
                   uint32_t samples, uint32_t requestedChunk, const ShaderFiles& files);
-    const vulkan::VulkanContext& context_;
     uint32_t samples_, chunk_;
     Kernel kernel_;
 };
