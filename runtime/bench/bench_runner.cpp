@@ -3,7 +3,7 @@
 #include "bench_environments.hpp"
 #include "bench_error.hpp"
 #include "gpu_steps.hpp"
-#include "kernels/sampled_methods.hpp"
+#include "kernels/specular_method.hpp"
 #include "measurements.hpp"
 
 #include <fmt/core.h>
@@ -42,25 +42,52 @@ bool wants(const BenchOptions& options, BenchOutput output) {
     return std::find(options.outputs.begin(), options.outputs.end(), output) != options.outputs.end();
 }
 
-// Every kernel a method needs for what the bench will ask of it, before any work.
-void requireKernels(const BenchOptions& options, const std::string& method) {
+struct OutputMethods {
+    std::vector<std::string> lut, specular;
+};
+
+// The methods that have kernels for `role` (and its chunked twin where a sample count needs it).
+std::vector<std::string> methodsWith(kernels::KernelRole whole, kernels::KernelRole chunked, bool needsChunks) {
+    auto methods = kernels::methodsOf(whole);
+    if (!needsChunks) return methods;
+    const auto twins = kernels::methodsOf(chunked);
+    std::erase_if(methods, [&](const std::string& m) { return std::find(twins.begin(), twins.end(), m) == twins.end(); });
+    return methods;
+}
+
+// Each output's methods: every one the table has for it, or those asked for; a method asked for
+// that has no kernel for any output the bench measures is refused before any work.
+OutputMethods outputMethods(const BenchOptions& options) {
     using kernels::KernelRole;
     const bool chunked = std::any_of(options.samples.begin(), options.samples.end(),
                                      [](uint32_t samples) { return kernels::chunkSamplesFor(samples) != 0; });
-    std::vector<KernelRole> roles;
-    if (wants(options, BenchOutput::Specular)) roles.push_back(KernelRole::Prefilter);
-    if (wants(options, BenchOutput::Specular) && chunked) roles.push_back(KernelRole::PrefilterChunk);
-    if (wants(options, BenchOutput::Lut)) roles.push_back(KernelRole::BrdfLut);
-    if (wants(options, BenchOutput::Lut) && chunked) roles.push_back(KernelRole::BrdfLutChunk);
-    for (const auto role : roles) {
-        const auto known = kernels::methodsOf(role);
-        if (std::find(known.begin(), known.end(), method) == known.end())
-            throw BenchError(fmt::format("no {} kernel of method '{}' in hlsl/shaders.json (methods: {})",
-                                         kernels::roleName(role), method, fmt::join(known, ", ")));
+    auto lut = methodsWith(KernelRole::BrdfLut, KernelRole::BrdfLutChunk, chunked);
+    auto specular = methodsWith(KernelRole::Prefilter, KernelRole::PrefilterChunk, chunked);
+    for (const auto& method : kernels::methodsOf(KernelRole::PrefilterConvolution)) specular.push_back(method);
+    OutputMethods chosen;
+    if (wants(options, BenchOutput::Lut)) chosen.lut = lut;
+    if (wants(options, BenchOutput::Specular)) chosen.specular = specular;
+    if (options.methods.empty()) return chosen;
+    const auto keep = [&](std::vector<std::string>& methods) {
+        std::erase_if(methods, [&](const std::string& m) {
+            return std::find(options.methods.begin(), options.methods.end(), m) == options.methods.end();
+        });
+    };
+    keep(chosen.lut);
+    keep(chosen.specular);
+    for (const auto& method : options.methods) {
+        const auto has = [&](const std::vector<std::string>& methods) {
+            return std::find(methods.begin(), methods.end(), method) != methods.end();
+        };
+        if (!has(chosen.lut) && !has(chosen.specular))
+            throw BenchError(fmt::format("method '{}' has no kernel in hlsl/shaders.json for the outputs measured at "
+                                         "these sample counts (LUT: {}; specular: {})",
+                                         method, fmt::join(lut, ", "), fmt::join(specular, ", ")));
     }
+    return chosen;
 }
 
-void validate(const BenchOptions& options, const std::vector<std::string>& methods) {
+OutputMethods validate(const BenchOptions& options) {
     for (const uint32_t samples : options.samples)
         if (samples == 0 || samples > kernels::kMaxSamples)
             throw BenchError(fmt::format("a sample count must be between 1 and {}, not {}", kernels::kMaxSamples, samples));
@@ -71,7 +98,7 @@ void validate(const BenchOptions& options, const std::vector<std::string>& metho
     if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
     if (options.irradianceSize == 0 || options.irradianceSize > 1024)
         throw BenchError("the irradiance size must be from 1 to 1024");
-    for (const auto& method : methods) requireKernels(options, method);
+    return outputMethods(options);
 }
 
 void logResult(const BenchOptions& options, const BenchResult& result) {
@@ -119,8 +146,7 @@ std::string_view outputName(BenchOutput output) {
 }
 
 BenchRun runBench(const BenchOptions& options) {
-    const auto methods = options.methods.empty() ? kernels::methodsOf(kernels::KernelRole::Prefilter) : options.methods;
-    validate(options, methods);
+    const auto methods = validate(options);
     const auto cacheDir = options.cacheDir.empty() ? ReferenceCache::defaultFolder() : options.cacheDir;
     const ReferenceCache cache(cacheDir);
     const auto environments = resolveEnvironments(options.environments, options.size, cacheDir);
@@ -129,13 +155,14 @@ BenchRun runBench(const BenchOptions& options) {
     if (wants(options, BenchOutput::Lut)) {
         if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
         LutBench lut(context, options, cache);
-        for (const auto& method : methods)
+        for (const auto& method : methods.lut)
             for (const uint32_t samples : options.samples) {
                 run.results.push_back(lut.measure(method, samples));
                 logResult(options, run.results.back());
             }
     }
-    for (const auto& environment : environments) benchEnvironment(context, environment, methods, options, cache, run.results);
+    for (const auto& environment : environments)
+        benchEnvironment(context, environment, methods.specular, options, cache, run.results);
     return run;
 }
 

@@ -2,7 +2,7 @@
 
 #include "bake_settings.hpp"
 #include "converged_prefilter.hpp"
-#include "kernels/sampled_methods.hpp"
+#include "kernels/specular_method.hpp"
 
 #include <fmt/core.h>
 
@@ -60,7 +60,7 @@ SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image
 SpecularBench::~SpecularBench() = default;
 
 BenchResult SpecularBench::measure(const std::string& method, uint32_t samples) {
-    kernels::PrefilterMethod prefilter(context_, method, samples, 0, options_.shaderFiles);
+    kernels::SpecularMethod prefilter(context_, method, samples, options_.shaderFiles);
     const uint32_t size = source_.desc().width;
     const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
     vulkan::Image specular(context_, {"Specular", &rgba32, size, size, 6, mips_, true, true});

@@ -38,6 +38,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     addSampledOutputs(run);
     addChunkedOutputs(run);
     addCubeOutputs(run);
+    addConvolutionOutputs(run);
     addPreviewOutput(run);
     return {std::move(run.rows), gl.renderer()};
 }

@@ -7,28 +7,15 @@ namespace {
 
 size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
 
-void bindTexture(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
-                 const opengl::GlObject& texture) {
-    context.gl().BindTextureUnit(glpath::slotOf(form, resource), texture.name());
-    context.check("binding a texture");
-}
-
-void bindLayeredImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
-                      const opengl::GlObject& texture, uint32_t level) {
-    context.gl().BindImageTexture(glpath::slotOf(form, resource), texture.name(), GLint(level), GL_TRUE, 0, GL_WRITE_ONLY,
-                                  GL_RGBA32F);
-    context.check("binding an image");
-}
-
 } // namespace
 
 std::vector<float> glEquirectToCube(const opengl::EglContext& context, const OpenGlForm& form, const Panorama& panorama,
                                     uint32_t size, uint32_t supersample) {
     const auto program = glpath::program(context, form);
     const auto equirect = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, panorama.width, panorama.height, panorama.texels);
-    bindTexture(context, form, "Equirect", equirect);
+    glpath::bindTexture(context, form, "Equirect", equirect);
     const auto cube = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
-    bindLayeredImage(context, form, "Cube", cube, 0);
+    glpath::bindLayeredImage(context, form, "Cube", cube, 0);
     const auto parameters = glpath::bindParameters(context, form, kernels::EquirectToCubeParameters{supersample}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
     return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
@@ -41,10 +28,10 @@ std::vector<float> glDownsampleChain(const opengl::EglContext& context, const Op
     const auto mip0 = cube.mip(0);
     context.gl().TextureSubImage3D(texture.name(), 0, 0, 0, 0, GLsizei(cube.size), GLsizei(cube.size), 6, GL_RGBA, GL_FLOAT,
                                    mip0.data());
-    bindTexture(context, form, "Source", texture);
+    glpath::bindTexture(context, form, "Source", texture);
     std::vector<float> chain;
     for (uint32_t mip = 1; mip < cube.mips; ++mip) {
-        bindLayeredImage(context, form, "Destination", texture, mip);
+        glpath::bindLayeredImage(context, form, "Destination", texture, mip);
         const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip - 1}.members());
         glpath::dispatch(context, program, form, {cube.mipSize(mip), cube.mipSize(mip), 6});
         const auto level = glpath::readTexture(context, texture, mip, GL_RGBA, cubeValues(cube.mipSize(mip)));
@@ -58,7 +45,7 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
                                   uint32_t mip) {
     const auto program = glpath::program(context, form);
     const auto source = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
-    bindTexture(context, form, "Source", source);
+    glpath::bindTexture(context, form, "Source", source);
     const uint32_t groupsPerSide = (cube.mipSize(mip) + 7) / 8, groups = groupsPerSide * groupsPerSide * 6;
     const auto partials = glpath::storageBuffer(context, size_t(groups) * 9 * 16);
     context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "Partials"), partials.name());
@@ -71,9 +58,9 @@ std::vector<float> glIrradianceCube(const opengl::EglContext& context, const Ope
                                     uint32_t mip, uint32_t outSize) {
     const auto program = glpath::program(context, form);
     const auto source = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
-    bindTexture(context, form, "Source", source);
+    glpath::bindTexture(context, form, "Source", source);
     const auto irradiance = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, outSize, 1);
-    bindLayeredImage(context, form, "Irradiance", irradiance, 0);
+    glpath::bindLayeredImage(context, form, "Irradiance", irradiance, 0);
     const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip}.members());
     glpath::dispatch(context, program, form, {outSize, outSize, 6});
     return glpath::readTexture(context, irradiance, 0, GL_RGBA, cubeValues(outSize));
@@ -90,7 +77,7 @@ std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm
     for (const auto& [resource, texture] : {std::pair{"Specular+LinearClamp", &specular},
                                             std::pair{"IrradianceMap+LinearClamp", &irradiance},
                                             std::pair{"BrdfLut+LinearClamp", &lut}}) {
-        bindTexture(context, form, resource, *texture);
+        glpath::bindTexture(context, form, resource, *texture);
         context.gl().BindSampler(glpath::slotOf(form, resource), sampler.name());
     }
     const auto image = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, inputs.width, inputs.height);

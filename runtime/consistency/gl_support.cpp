@@ -22,6 +22,19 @@ GLuint slotOf(const OpenGlForm& form, const std::string& resource) {
     throw opengl::GlError("the GLSL form of " + form.name + " records no binding for '" + resource + "'");
 }
 
+void bindTexture(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                 const opengl::GlObject& texture) {
+    context.gl().BindTextureUnit(slotOf(form, resource), texture.name());
+    context.check("binding a texture");
+}
+
+void bindLayeredImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                      const opengl::GlObject& texture, uint32_t level) {
+    context.gl().BindImageTexture(slotOf(form, resource), texture.name(), GLint(level), GL_TRUE, 0, GL_WRITE_ONLY,
+                                  GL_RGBA32F);
+    context.check("binding an image");
+}
+
 opengl::GlObject program(const opengl::EglContext& context, const OpenGlForm& form) {
     return opengl::createComputeProgram(context, form.glsl.source, form.name + " (GLSL)");
 }

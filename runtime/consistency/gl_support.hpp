@@ -26,6 +26,13 @@ opengl::GlObject bindParameters(const opengl::EglContext& context, const OpenGlF
 void dispatch(const opengl::EglContext& context, const opengl::GlObject& program, const OpenGlForm& form,
               std::array<uint32_t, 3> threads);
 
+// Binds `texture` to the texture unit of `resource`.
+void bindTexture(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                 const opengl::GlObject& texture);
+// Binds all six layers of `level` of an RGBA32F 2D array to the image unit of `resource`, for writing.
+void bindLayeredImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                      const opengl::GlObject& texture, uint32_t level);
+
 // A GL_TEXTURE_CUBE_MAP or GL_TEXTURE_2D_ARRAY of 6 layers with `mips` levels, filled with
 // `texels` (every level: face, row, column, RGBA) or left empty when there are none.
 opengl::GlObject cubeTexture(const opengl::EglContext& context, GLenum target, uint32_t size, uint32_t mips,

@@ -15,8 +15,9 @@ void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& refere
     const auto add = [&](std::string path, const std::vector<float>& gpu) {
         const auto vsFloat = measureError(gpu, references.inFloat);
         const auto vsDouble = measureError(gpu, references.inDouble);
+        auto knownIssue = knownDivergence(spec.kernel, path);
         run.rows.push_back({spec.kernel, std::move(path), spec.output, vsFloat, vsDouble, spec.bounds, false,
-                            withinBounds(vsFloat, vsDouble, spec.bounds)});
+                            withinBounds(vsFloat, vsDouble, spec.bounds), std::move(knownIssue)});
     };
     for (const auto path : kVulkanPaths)
         if (!skipPathA || path != ShaderPath::Glslang)

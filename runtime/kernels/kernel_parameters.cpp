@@ -11,6 +11,16 @@ NamedValues PrefilterChunkParameters::members() const {
             {"Resolve", {resolve ? 1.0 : 0.0}}};
 }
 
+NamedValues ClusterParameters::members() const { return {{"Level", {double(level)}}}; }
+
+NamedValues PrefilterConvolutionParameters::members() const {
+    return {{"Roughness", {roughness}},
+            {"TopLevel", {double(topLevel)}},
+            {"FineLevel", {double(fineLevel)}},
+            {"Refine", {refine}},
+            {"HorizonLevel", {double(horizonLevel)}}};
+}
+
 NamedValues BrdfChunkParameters::members() const {
     return {{"FirstSample", {double(firstSample)}},
             {"ChunkSamples", {double(chunkSamples)}},

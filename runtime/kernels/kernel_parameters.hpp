@@ -24,6 +24,19 @@ struct PrefilterChunkParameters {
     NamedValues members() const;
 };
 
+struct ClusterParameters {
+    uint32_t level = 0;
+    NamedValues members() const;
+};
+
+struct PrefilterConvolutionParameters {
+    float roughness = 0;
+    uint32_t topLevel = 0, fineLevel = 0;
+    float refine = 0;
+    uint32_t horizonLevel = 0;
+    NamedValues members() const;
+};
+
 struct BrdfChunkParameters {
     uint32_t firstSample = 0;
     uint32_t chunkSamples = 0;

@@ -49,6 +49,31 @@ void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sa
     });
 }
 
+void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid) {
+    kernel.program().bind("Source", source);
+    kernel.program().bind("EnergyIn", pyramid.energy);
+    kernel.program().bind("CentroidIn", pyramid.centroid);
+    kernel.program().bind("GeometryIn", pyramid.geometry);
+    for (uint32_t level = 0; level < pyramid.energy.desc().mips; ++level) {
+        kernel.program().bind("Energy", pyramid.energy, level);
+        kernel.program().bind("Centroid", pyramid.centroid, level);
+        kernel.program().bind("Geometry", pyramid.geometry, level);
+        kernel.setParameters(ClusterParameters{level}.members());
+        const uint32_t size = pyramid.energy.mipWidth(level);
+        kernel.run({size, size, 6});
+    }
+}
+
+void runPrefilterConvolution(Kernel& kernel, const EnergyPyramid& pyramid, vulkan::Image& target, uint32_t mip,
+                             const PrefilterConvolutionParameters& parameters) {
+    kernel.program().bind("Energy", pyramid.energy);
+    kernel.program().bind("Centroid", pyramid.centroid);
+    kernel.program().bind("Geometry", pyramid.geometry);
+    kernel.program().bind("Prefiltered", target, mip);
+    kernel.setParameters(parameters.members());
+    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
 void runBrdfLut(Kernel& kernel, vulkan::Image& lut) {
     kernel.program().bind("Precomputed", lut);
     kernel.run({lut.desc().width, lut.desc().height, 1});

@@ -49,6 +49,21 @@ void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
 void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                          uint32_t mip, float roughness, uint32_t samples, uint32_t chunk);
 
+// ClusterCubeCS's three pyramids: RGBA32F cubes the size of the source, with a full mip chain,
+// sampled and storage.
+struct EnergyPyramid {
+    vulkan::Image& energy;
+    vulkan::Image& centroid;
+    vulkan::Image& geometry;
+};
+
+// ClusterCube: every level of `pyramid` from mip 0 of `source`, each level from the one below.
+void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid);
+
+// PrefilterConvolution: one mip of `target` from the pyramid runClusterPyramid made.
+void runPrefilterConvolution(Kernel& kernel, const EnergyPyramid& pyramid, vulkan::Image& target, uint32_t mip,
+                             const PrefilterConvolutionParameters& parameters);
+
 // BrdfLut: the whole LUT image.
 void runBrdfLut(Kernel& kernel, vulkan::Image& lut);
 

@@ -13,6 +13,8 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"brdf-lut-chunk", KernelRole::BrdfLutChunk},
     {"prefilter", KernelRole::Prefilter},
     {"prefilter-chunk", KernelRole::PrefilterChunk},
+    {"cluster-cube", KernelRole::ClusterCube},
+    {"prefilter-convolution", KernelRole::PrefilterConvolution},
     {"equirect-to-cube", KernelRole::EquirectToCube},
     {"downsample-cube", KernelRole::DownsampleCube},
     {"sh-project", KernelRole::ShProject},

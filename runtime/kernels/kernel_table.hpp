@@ -18,6 +18,8 @@ enum class KernelRole {
     BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
     Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
+    ClusterCube,    // Source -> Energy + Centroid (one pyramid level); ClusterParameters
+    PrefilterConvolution, // Energy + Centroid -> Prefiltered (one mip); PrefilterConvolutionParameters
     EquirectToCube,
     DownsampleCube,
     ShProject,

@@ -1,6 +1,7 @@
 #include "reference_bake.hpp"
 
 #include "parallel_rows.hpp"
+#include "cube_geometry.hpp"
 #include "pbr.hpp"
 #include "reference_irradiance.hpp"
 
@@ -9,29 +10,6 @@
 
 namespace iblkit::reference {
 namespace {
-
-// hlsl/Common/Cube.fxh, function by function.
-template <typename T>
-vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
-    uv = (uv - T(0.5)) * vec2<T>(T(2), T(-2));
-    switch (face) {
-    case 0: return glm::normalize(vec3<T>(T(1), uv.y, -uv.x));
-    case 1: return glm::normalize(vec3<T>(T(-1), uv.y, uv.x));
-    case 2: return glm::normalize(vec3<T>(uv.x, T(1), -uv.y));
-    case 3: return glm::normalize(vec3<T>(uv.x, T(-1), uv.y));
-    case 4: return glm::normalize(vec3<T>(uv.x, uv.y, T(1)));
-    default: return glm::normalize(vec3<T>(-uv.x, uv.y, T(-1)));
-    }
-}
-
-float CubeAreaElement(float x, float y) { return std::atan2(x * y, std::sqrt(x * x + y * y + 1.f)); }
-
-float CubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size) {
-    const float inverseSize = 1.f / float(size);
-    const float x0 = 2.f * float(column) * inverseSize - 1.f, y0 = 2.f * float(row) * inverseSize - 1.f;
-    const float x1 = x0 + 2.f * inverseSize, y1 = y0 + 2.f * inverseSize;
-    return CubeAreaElement(x0, y0) - CubeAreaElement(x0, y1) - CubeAreaElement(x1, y0) + CubeAreaElement(x1, y1);
-}
 
 template <typename T>
 vec2<T> DirectionToEquirect(vec3<T> direction) {
@@ -156,7 +134,7 @@ ShSums projectOnShInFloat(const std::vector<float>& texels, uint32_t size) {
                 float solidAngle = 0.f;
                 if (x < size && y < size) {
                     basis = shBasis(CubeFaceDirection<float>(face, (glm::vec2(float(x), float(y)) + 0.5f) / float(size)));
-                    solidAngle = CubeTexelSolidAngle(x, y, size);
+                    solidAngle = CubeTexelSolidAngle<float>(x, y, size);
                     radiance = texelRgb(texels, texelIndex(face, y, x, size));
                 }
                 for (uint32_t k = 0; k < 9; ++k) shared[thread][k] = glm::vec4(radiance * basis[k] * solidAngle, solidAngle);
@@ -184,7 +162,7 @@ std::vector<float> irradianceCubeInFloat(const std::vector<float>& texels, uint3
                         const float cosine = glm::dot(normal, CubeFaceDirection<float>(sourceFace, uv));
                         if (cosine > 0.f)
                             sum += texelRgb(texels, texelIndex(sourceFace, row, column, size)) *
-                                   (cosine * CubeTexelSolidAngle(column, row, size));
+                                   (cosine * CubeTexelSolidAngle<float>(column, row, size));
                     }
             const glm::vec3 irradiance = sum / PI<float>;
             const size_t at = texelIndex(face, y, x, outSize);

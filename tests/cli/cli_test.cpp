@@ -142,7 +142,8 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
     ASSERT_EQ(result.exitCode, 0) << result.err;
     const char* shaders[] = {"PrecomputedBrdfCS",      "PrefilterSpecularCS", "PrecomputedBrdfChunkCS",
                              "PrefilterSpecularChunkCS", "EquirectToCubeCS",  "DownsampleCubeCS",
-                             "ShProjectCS",            "IrradianceCubeCS",    "PreviewCS"};
+                             "ShProjectCS",            "IrradianceCubeCS",    "PreviewCS",
+                             "ClusterCubeCS",          "PrefilterConvolutionCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;

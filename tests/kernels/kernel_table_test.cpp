@@ -20,7 +20,7 @@ TEST(KernelTable, EveryManifestShaderIsAKernelAndCompiles) {
         roles.insert(kernel.role);
         EXPECT_NO_THROW(compileKernel(kernel)) << kernel.name;
     }
-    EXPECT_EQ(roles.size(), 9u) << "every role has a kernel";
+    EXPECT_EQ(roles.size(), 11u) << "every role has a kernel";
 }
 
 TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
@@ -31,6 +31,7 @@ TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
     EXPECT_EQ(kernelFor(KernelRole::Prefilter, "document").name, "PrefilterSpecularCS");
     EXPECT_EQ(kernelFor(KernelRole::PrefilterChunk, "document").name, "PrefilterSpecularChunkCS");
     EXPECT_EQ(methodsOf(KernelRole::Prefilter), std::vector<std::string>{"document"});
+    EXPECT_EQ(methodsOf(KernelRole::PrefilterConvolution), std::vector<std::string>{"convolution"});
 }
 
 TEST(KernelTable, UnknownNamesAreRefusedByName) {

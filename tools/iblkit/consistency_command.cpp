@@ -33,11 +33,11 @@ void addConsistencyCommand(CLI::App& app) {
         if (arguments->out.empty()) fmt::print("{}", report);
         else files::writeFileAtomically(arguments->out, report);
         size_t failed = 0;
-        for (const auto& row : rows) failed += !row.passed;
+        for (const auto& row : rows) failed += !row.asExpected();
         // Debug builds, and IBLKIT_VALIDATION=1, run with the validation layer: what it says fails the run.
         const auto messages = log->messages();
         for (const auto& message : messages) fmt::print(stderr, "validation: {}\n", message);
-        fmt::print(stderr, "{} of {} results within their bounds\n", rows.size() - failed, rows.size());
+        fmt::print(stderr, "{} of {} results as expected (within their bounds, or a known divergence)\n", rows.size() - failed, rows.size());
         if (failed || !messages.empty()) throw ExpectationsFailed{};
     });
 }

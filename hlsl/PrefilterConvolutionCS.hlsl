@@ -1,0 +1,169 @@
+// The prefilter integral of PrefilterSpecular (N = V = R), summed over the source's texels
+// instead of estimated from samples:
+//   P(N) = sum_t L_t W_t / sum_t W_t,  W_t = D(N.H) N.L over texel t,  N.H = sqrt((1 + N.L) / 2).
+// Texels are visited as a tree over ClusterCubeCS's energy pyramid (Barnes & Hut's): a block
+// far from N (its centre more than Refine of its own widths away) is one term, its light taken
+// by its mean direction and spread (the luminance-weighted first moment of its directions), so
+// a sun keeps its exact position at every level; the lobe is averaged over that spread to
+// second order. Blocks near N open into their four children down to FineLevel, and blocks
+// across N's horizon, where N.L > 0 clips the lobe, down to HorizonLevel. The denominator sums
+// the same blocks by their solid angles, so a constant environment is returned exactly. No
+// sampling noise; the error falls with Refine, as the number of terms per texel grows.
+#include "Common/PBR.fxh"
+#include "Common/Cube.fxh"
+
+cbuffer PrefilterConvolutionParameter : register( b0 )
+{
+    float Roughness; // > 0
+    uint TopLevel;   // the pyramid level the tree starts from: every block of it is visited
+    uint FineLevel;  // the finest level it opens blocks into
+    float Refine;    // a block opens when its centre is within Refine of its widths of N
+    uint HorizonLevel; // the finest level a block across N's horizon opens into
+};
+
+Texture2DArray<float4> Energy;
+Texture2DArray<float4> Centroid;
+Texture2DArray<float4> Geometry;
+RWTexture2DArray<float4> Prefiltered;
+
+// The integrand of PrefilterSpecular's ratio at N = V, per unit solid angle of L, is the pdf
+// of L (D N.H / (4 V.H), with N.H = V.H) times the N.L weight: D(sqrt((1 + N.L) / 2)) N.L,
+// without the constant 1/4, which cancels.
+
+// Phi(z), the standard normal distribution, by Abramowitz & Stegun 7.1.26 (|error| < 1.5e-7 in erf).
+float NormalCdf( float z )
+{
+    float x = abs( z ) * 0.70710678f;
+    float t = 1.f / ( 1.f + 0.3275911f * x );
+    float polynomial = 0.254829592f + t * ( -0.284496736f + t * ( 1.421413741f + t * ( -1.453152027f + t * 1.061405429f ) ) );
+    float tail = 0.5f * t * polynomial * exp( -x * x );
+    return z >= 0.f ? 1.f - tail : tail;
+}
+
+// E[max(x, 0)] for x ~ Normal(mean, spread^2).
+float ClippedMean( float mean, float spread )
+{
+    float clipped = max( mean, 0.f );
+    if ( spread > 0.f && abs( mean ) <= 5.f * spread )
+    {
+        float z = mean / spread;
+        float density = exp( -0.5f * z * z ) * 0.39894228f;
+        clipped = spread * density + mean * NormalCdf( z );
+    }
+    return clipped;
+}
+
+// The lobe's expected weight over light whose N.L has mean `ndotl` and variance `variance`.
+// As a function of N.L = u the lobe is g(u) = D(u) u, D(u) = a2 / (PI (A + B u)^2) with
+// A = (1 + a2) / 2, B = (a2 - 1) / 2: away from the horizon E[g] = g + g'' variance / 2
+// (g'' = D (-B) (4A - 2B u) / (A + B u)^2); across it, the clip max(u, 0) is taken in expectation
+// over a normal spread and D at the mean.
+float ExpectedLobeWeight( float ndotl, float variance, float roughness )
+{
+    float spread = sqrt( max( variance, 0.f ) );
+    float D = DistributionGGX( sqrt( 0.5f + 0.5f * max( ndotl, 0.f ) ), roughness );
+    float expected;
+    if ( ndotl > 3.f * spread )
+    {
+        float a2 = roughness * roughness * roughness * roughness;
+        float A = 0.5f + 0.5f * a2, B = 0.5f * a2 - 0.5f;
+        float s = A + B * ndotl;
+        expected = ndotl + 0.5f * variance * ( -B ) * ( 4.f * A - 2.f * B * ndotl ) / ( s * s );
+    }
+    else
+        expected = max( ClippedMean( ndotl, spread ), 0.f );
+    return D * expected;
+}
+
+// ExpectedLobeWeight over directions whose first moment is `mean`: N.L has the mean N.mean and,
+// the spread 1 - |mean|^2 taken as the same along every tangent axis, the variance of its part
+// across N's direction.
+float BlockLobeWeight( float3 normal, float3 mean, float roughness )
+{
+    float length2 = dot( mean, mean );
+    float meanCosine = dot( normal, mean );
+    float variance = 0.5f * max( 1.f - length2, 0.f ) * max( 1.f - meanCosine * meanCosine / length2, 0.f );
+    return ExpectedLobeWeight( meanCosine, variance, roughness );
+}
+
+// A block of size texels per face spans at most 2 / size radians from its centre to a corner
+// along a great circle (the face's centre has the widest texels, 2 / size across).
+static const float HORIZON_OPEN = 2.f;
+
+// The blocks of the tree in depth-first order, without a stack: a block's four children are
+// (2x, 2y), (2x + 1, 2y), (2x, 2y + 1), (2x + 1, 2y + 1), so where the walk goes next follows
+// from the block's own coordinates. (An indexed local array would be lowered to a chain of
+// selects by the compilers of CPU drivers, which costs more than the whole sum.)
+// The block after (face, xy, level) and its subtree, or (6, 0, TopLevel) when the walk is over.
+void NextBlock( inout uint face, inout uint2 xy, inout uint level, uint topSize )
+{
+    while ( level < TopLevel && ( xy.x & xy.y & 1u ) != 0u )
+    {
+        xy >>= 1;
+        level += 1;
+    }
+    if ( level == TopLevel )
+    {
+        uint top = ( face * topSize + xy.y ) * topSize + xy.x + 1;
+        face = top / ( topSize * topSize );
+        xy = uint2( top % topSize, ( top / topSize ) % topSize );
+    }
+    else if ( ( xy.x & 1u ) == 0u )
+        xy.x += 1;
+    else
+        xy += uint2( 0xFFFFFFFFu, 1u );
+}
+
+// Whether the block (face, xy) of `level`, size x size per face, opens for N = normal: when N
+// is within Refine of its widths (2 / size each) of its centre, as a chord (|N - centre|^2 =
+// 2 - 2 cos), or, down to HorizonLevel, when it lies across N's horizon, where N.L > 0 clips
+// the lobe.
+bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level )
+{
+    float3 centre = CubeFaceDirection( face, ( float2( xy ) + 0.5f ) / float( size ) );
+    float cosine = dot( normal, centre );
+    float reach = Refine * 2.f / float( size );
+    bool nearN = 2.f - 2.f * cosine < reach * reach;
+    bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN / float( size );
+    return nearN || acrossHorizon;
+}
+
+[numthreads(8, 8, 1)]
+void main( uint3 DTid : SV_DispatchThreadId )
+{
+    uint3 dims = (uint3)0;
+    Prefiltered.GetDimensions( dims.x, dims.y, dims.z );
+    if ( any( DTid >= dims ) )
+        return;
+
+    float3 normal = CubeFaceDirection( DTid.z, ( float2( DTid.xy ) + 0.5f ) / float( dims.x ) );
+
+    uint baseSize = 0, baseHeight = 0, layers = 0, levels = 0;
+    Energy.GetDimensions( 0, baseSize, baseHeight, layers, levels );
+
+    float3 radiance = 0.f;
+    float weight = 0.f;
+    uint topSize = max( baseSize >> TopLevel, 1u );
+    uint face = 0, level = TopLevel;
+    uint2 xy = 0;
+    while ( face < 6 )
+    {
+        while ( level > FineLevel && Opens( normal, face, xy, max( baseSize >> level, 1u ), level ) )
+        {
+            xy *= 2;
+            level -= 1;
+        }
+        int4 at = int4( xy, face, level );
+        float4 energy = Energy.Load( at );
+        float4 weighted = Centroid.Load( at );
+        float4 geometry = Geometry.Load( at );
+        // The first moments of the block's directions, by solid angle and by light: their
+        // length falls short of 1 by their spread.
+        float3 extent = geometry.xyz / geometry.w;
+        float3 light = weighted.w > 0.f ? weighted.xyz / weighted.w : extent;
+        radiance += energy.rgb * BlockLobeWeight( normal, light, Roughness );
+        weight += energy.a * BlockLobeWeight( normal, extent, Roughness );
+        NextBlock( face, xy, level, topSize );
+    }
+    Prefiltered[DTid] = float4( radiance / weight, 0.f );
+}

@@ -1,0 +1,77 @@
+// The convolution method's kernels: the energy pyramid of the test environment, and one
+// prefiltered cube convolved from it.
+#include "cluster_convolution.hpp"
+#include "convolution_bake.hpp"
+#include "kernels/convolution_method.hpp"
+#include "suite_run.hpp"
+
+#include <fmt/core.h>
+
+namespace iblkit::consistency {
+namespace {
+
+template <typename T>
+std::vector<T> levelTexels(const std::vector<std::vector<glm::vec<4, T>>>& levels) {
+    std::vector<T> values;
+    for (const auto& level : levels)
+        for (const auto& texel : level) values.insert(values.end(), {texel.x, texel.y, texel.z, texel.w});
+    return values;
+}
+
+template <typename T>
+std::vector<T> flattened(const reference::ClusterPyramid<T>& pyramid) {
+    std::vector<T> values;
+    for (const auto* levels : {&pyramid.energy, &pyramid.centroid, &pyramid.geometry}) {
+        const auto texels = levelTexels(*levels);
+        values.insert(values.end(), texels.begin(), texels.end());
+    }
+    return values;
+}
+
+PyramidTexels pyramidTexels(const reference::ClusterPyramid<float>& pyramid) {
+    const auto cube = [&](const auto& levels) {
+        return MippedCube{pyramid.size, uint32_t(levels.size()), levelTexels(levels)};
+    };
+    return {cube(pyramid.energy), cube(pyramid.centroid), cube(pyramid.geometry)};
+}
+
+void addClusterOutput(SuiteRun& run, const MippedCube& cube, const reference::ClusterPyramid<float>& inFloat,
+                      const reference::ClusterPyramid<double>& inDouble) {
+    addOutput(run, {"ClusterCubeCS", fmt::format("energy, centroid, geometry pyramids of {}²", cube.size), clusterBounds()},
+              {flattened(inFloat), flattened(inDouble)},
+              [&](const PathProgram& program) { return gpuClusterPyramid(run.vulkan, program, cube); },
+              [&](const OpenGlForm& form) { return glClusterPyramid(run.gl, form, cube); });
+}
+
+void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>& inFloat,
+                          const reference::ClusterPyramid<double>& inDouble) {
+    const auto& options = run.options;
+    const float roughness = options.convolutionRoughness;
+    const auto plan = kernels::planConvolution(inFloat.size, roughness, options.convolutionBudget);
+    const reference::ConvolutionTree tree{plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel};
+    const kernels::PrefilterConvolutionParameters parameters{roughness, plan.topLevel, plan.fineLevel, plan.refine,
+                                                             plan.horizonLevel};
+    const uint32_t outSize = options.convolutionOutSize;
+    const auto pyramid = pyramidTexels(inFloat);
+    const auto output = fmt::format("{}² at roughness {} from the {}² pyramid, {} terms per texel", outSize, roughness,
+                                    inFloat.size, options.convolutionBudget);
+    addOutput(run, {"PrefilterConvolutionCS", output, convolutionBounds()},
+              {reference::convolvePrefilter(inFloat, roughness, outSize, tree),
+               reference::convolvePrefilter(inDouble, double(roughness), outSize, tree)},
+              [&](const PathProgram& program) {
+                  return gpuPrefilterConvolution(run.vulkan, program, pyramid, outSize, parameters);
+              },
+              [&](const OpenGlForm& form) { return glPrefilterConvolution(run.gl, form, pyramid, outSize, parameters); });
+}
+
+} // namespace
+
+void addConvolutionOutputs(SuiteRun& run) {
+    const auto cube = testCube(run.options.convolutionSize, 1);
+    const auto inFloat = reference::clusterPyramid<float>(cube.texels, cube.size);
+    const auto inDouble = reference::clusterPyramid<double>(cube.texels, cube.size);
+    addClusterOutput(run, cube, inFloat, inDouble);
+    addConvolutionOutput(run, inFloat, inDouble);
+}
+
+} // namespace iblkit::consistency

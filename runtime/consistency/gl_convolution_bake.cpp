@@ -1,0 +1,64 @@
+#include "convolution_bake.hpp"
+
+#include "gl_support.hpp"
+
+#include <bit>
+
+namespace iblkit::consistency {
+namespace {
+
+size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
+
+void appendLevels(const opengl::EglContext& context, const opengl::GlObject& texture, uint32_t size,
+                  std::vector<float>& values) {
+    for (uint32_t level = 0; (size >> level) > 0; ++level) {
+        const auto texels = glpath::readTexture(context, texture, level, GL_RGBA, cubeValues(size >> level));
+        values.insert(values.end(), texels.begin(), texels.end());
+    }
+}
+
+} // namespace
+
+// Each level reads the one below from the texture units and writes its own as images.
+std::vector<float> glClusterPyramid(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube) {
+    const auto program = glpath::program(context, form);
+    const auto source = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
+    glpath::bindTexture(context, form, "Source", source);
+    const uint32_t levels = uint32_t(std::bit_width(cube.size));
+    const auto energy = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, levels);
+    const auto centroid = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, levels);
+    const auto geometry = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, levels);
+    glpath::bindTexture(context, form, "EnergyIn", energy);
+    glpath::bindTexture(context, form, "CentroidIn", centroid);
+    glpath::bindTexture(context, form, "GeometryIn", geometry);
+    for (uint32_t level = 0; level < levels; ++level) {
+        glpath::bindLayeredImage(context, form, "Energy", energy, level);
+        glpath::bindLayeredImage(context, form, "Centroid", centroid, level);
+        glpath::bindLayeredImage(context, form, "Geometry", geometry, level);
+        const auto parameters = glpath::bindParameters(context, form, kernels::ClusterParameters{level}.members());
+        glpath::dispatch(context, program, form, {cube.size >> level, cube.size >> level, 6});
+    }
+    std::vector<float> values;
+    for (const auto* texture : {&energy, &centroid, &geometry}) appendLevels(context, *texture, cube.size, values);
+    return values;
+}
+
+std::vector<float> glPrefilterConvolution(const opengl::EglContext& context, const OpenGlForm& form,
+                                          const PyramidTexels& pyramid, uint32_t outSize,
+                                          const kernels::PrefilterConvolutionParameters& parameters) {
+    const auto program = glpath::program(context, form);
+    const auto upload = [&](const MippedCube& cube) {
+        return glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
+    };
+    const auto energy = upload(pyramid.energy), centroid = upload(pyramid.centroid), geometry = upload(pyramid.geometry);
+    glpath::bindTexture(context, form, "Energy", energy);
+    glpath::bindTexture(context, form, "Centroid", centroid);
+    glpath::bindTexture(context, form, "Geometry", geometry);
+    const auto target = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, outSize, 1);
+    glpath::bindLayeredImage(context, form, "Prefiltered", target, 0);
+    const auto bound = glpath::bindParameters(context, form, parameters.members());
+    glpath::dispatch(context, program, form, {outSize, outSize, 6});
+    return glpath::readTexture(context, target, 0, GL_RGBA, cubeValues(outSize));
+}
+
+} // namespace iblkit::consistency

@@ -1,0 +1,82 @@
+#include "kernels/convolution_method.hpp"
+
+#include "kernels/kernel_steps.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace iblkit::kernels {
+namespace {
+
+constexpr uint32_t kMaxTreeDepth = 7; // PrefilterConvolutionCS's MAX_DEPTH
+
+uint32_t levelOf(uint32_t sourceSize, uint32_t size) { return uint32_t(std::bit_width(sourceSize / size)) - 1; }
+
+DispatchTotals& operator+=(DispatchTotals& sum, const DispatchTotals& more) {
+    sum.deviceMilliseconds += more.deviceMilliseconds;
+    sum.wallMilliseconds += more.wallMilliseconds;
+    sum.dispatches += more.dispatches;
+    return sum;
+}
+
+} // namespace
+
+ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget) {
+    if (!(roughness > 0 && roughness <= 1))
+        throw std::invalid_argument("the convolution method takes a roughness in (0, 1], not " + std::to_string(roughness));
+    if (budget == 0) throw std::invalid_argument("the convolution method needs a budget of at least 1 term per texel");
+    const double alpha = double(roughness) * roughness;
+    const double lobeWidth = std::min(2.58 * alpha, std::numbers::pi / 2);
+    // A face of w texels is 2 / w radians wide at its centre.
+    const double wanted = 2 * kFineTexelsPerLobe / lobeWidth;
+    uint32_t fineSize = std::min(sourceSize, std::bit_ceil(uint32_t(std::ceil(std::min(wanted, double(sourceSize))))));
+    const uint32_t fineLevel = levelOf(sourceSize, fineSize);
+    const uint32_t lastLevel = levelOf(sourceSize, 1);
+    const uint32_t topLevel = std::min(lastLevel, fineLevel + kMaxTreeDepth);
+    const double topBlocks = 6.0 * std::pow(double(sourceSize >> topLevel), 2);
+    const double depth = topLevel - fineLevel;
+    const double refine = std::sqrt(std::max(double(budget) - topBlocks, 0.0) / (std::numbers::pi * (3 * depth + 4)));
+    // The lobe's weight at N's horizon against its peak, D(sqrt(1/2)) / D(1).
+    const double horizonWeight = 4 * std::pow(alpha, 4) / std::pow(1 + alpha * alpha, 2);
+    const double horizonTexels = kHorizonTexels * std::cbrt(horizonWeight);
+    const uint32_t horizonSize = std::min(fineSize, std::bit_ceil(uint32_t(std::ceil(horizonTexels))));
+    const uint32_t horizonLevel = std::clamp(levelOf(sourceSize, horizonSize), fineLevel, topLevel);
+    return {topLevel, fineLevel, float(std::clamp(refine, 1.0, 1e4)), horizonLevel};
+}
+
+ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method,
+                                           uint32_t budget, const ShaderFiles& files)
+    : context_(context), budget_(budget),
+      cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)),
+      convolve_(context, compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), {}, {}, files)) {
+    if (budget == 0) throw std::invalid_argument("the convolution method needs a budget of at least 1 term per texel");
+}
+
+void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
+    const uint32_t size = source.desc().width;
+    const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
+    const uint32_t mips = vulkan::fullMipCount(size, size);
+    energy_.emplace(context_, vulkan::ImageDesc{"Energy", &rgba32, size, size, 6, mips, true, true});
+    centroid_.emplace(context_, vulkan::ImageDesc{"Centroid", &rgba32, size, size, 6, mips, true, true});
+    geometry_.emplace(context_, vulkan::ImageDesc{"Geometry", &rgba32, size, size, 6, mips, true, true});
+    runClusterPyramid(cluster_, source, {*energy_, *centroid_, *geometry_});
+    pyramidSource_ = &source;
+}
+
+void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness) {
+    const auto plan = planConvolution(source.desc().width, roughness, budget_);
+    if (pyramidSource_ != &source) buildPyramid(source);
+    runPrefilterConvolution(convolve_, {*energy_, *centroid_, *geometry_}, target, mip,
+                            {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel});
+}
+
+DispatchTotals ConvolutionPrefilter::takeTotals() {
+    auto totals = cluster_.takeTotals();
+    totals += convolve_.takeTotals();
+    return totals;
+}
+
+} // namespace iblkit::kernels

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "kernels/kernel.hpp"
+
+#include "image.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace iblkit::kernels {
+
+// The tree one PrefilterConvolutionCS dispatch walks (see the shader): pyramid levels counted
+// from the source's mip 0.
+struct ConvolutionPlan {
+    uint32_t topLevel = 0, fineLevel = 0;
+    float refine = 0;
+    uint32_t horizonLevel = 0;
+};
+
+// The fine level resolves the lobe (its half-maximum width, about 2.58 α for GGX at N = V) with
+// at least kFineTexelsPerLobe texels; the top level keeps every tree within 7 levels (the
+// shader's stack, and its loop under llvmpipe's limit); `refine` spends about `budget` block
+// terms per output texel: about 6 top² + π refine² (3 levels + 4). Throws
+// std::invalid_argument for a roughness <= 0 or > 1, or a budget of 0.
+inline constexpr double kFineTexelsPerLobe = 12;
+inline constexpr double kHorizonTexels = 16;
+ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget);
+
+// The convolution method: the energy pyramid of a source (built once per source image, on its
+// first run), then one tree walk per mip.
+class ConvolutionPrefilter {
+public:
+    ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t budget,
+                         const ShaderFiles& files = embeddedShaderFiles());
+    // Writes mip `mip` of `target` (RGBA32F, storage) from mip 0 of `source` at `roughness`.
+    // `source` must keep its texels while this object runs on it.
+    void run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness);
+    DispatchTotals takeTotals();
+
+private:
+    void buildPyramid(vulkan::Image& source);
+
+    const vulkan::VulkanContext& context_;
+    uint32_t budget_;
+    Kernel cluster_, convolve_;
+    const vulkan::Image* pyramidSource_ = nullptr;
+    std::optional<vulkan::Image> energy_, centroid_, geometry_;
+};
+
+} // namespace iblkit::kernels

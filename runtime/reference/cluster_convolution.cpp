@@ -1,0 +1,195 @@
+#include "cluster_convolution.hpp"
+
+#include "cube_geometry.hpp"
+#include "parallel_rows.hpp"
+
+#include <algorithm>
+
+namespace iblkit::reference {
+namespace {
+
+template <typename T> using vec4 = glm::vec<4, T>;
+
+constexpr float kHorizonOpen = 2;
+
+template <typename T>
+vec3<T> blockCentre(uint32_t face, uint32_t x, uint32_t y, uint32_t size) {
+    return CubeFaceDirection<T>(face, (vec2<T>(T(x), T(y)) + T(0.5)) / T(size));
+}
+
+template <typename T>
+T NormalCdf(T z) {
+    const T x = std::abs(z) * T(0.70710678);
+    const T t = T(1) / (T(1) + T(0.3275911) * x);
+    const T polynomial =
+        T(0.254829592) + t * (T(-0.284496736) + t * (T(1.421413741) + t * (T(-1.453152027) + t * T(1.061405429))));
+    const T tail = T(0.5) * t * polynomial * std::exp(-x * x);
+    return z >= T(0) ? T(1) - tail : tail;
+}
+
+template <typename T>
+T ClippedMean(T mean, T spread) {
+    if (!(spread > T(0)) || std::abs(mean) > T(5) * spread) return std::max(mean, T(0));
+    const T z = mean / spread;
+    const T density = std::exp(T(-0.5) * z * z) * T(0.39894228);
+    return spread * density + mean * NormalCdf(z);
+}
+
+// The shader's ExpectedLobeWeight: E[D(u) max(u, 0)] for N.L = u of mean `ndotl` and variance
+// `variance`, by a second-order expansion away from the horizon and a clipped normal across it.
+template <typename T>
+T ExpectedLobeWeight(T ndotl, T variance, T roughness) {
+    const T spread = std::sqrt(std::max(variance, T(0)));
+    const T D = DistributionGGX(std::sqrt(T(0.5) + T(0.5) * std::max(ndotl, T(0))), roughness);
+    if (ndotl > T(3) * spread) {
+        const T a2 = roughness * roughness * roughness * roughness;
+        const T A = T(0.5) + T(0.5) * a2, B = T(0.5) * a2 - T(0.5);
+        const T s = A + B * ndotl;
+        return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) / (s * s));
+    }
+    const T clipped = ClippedMean(ndotl, spread);
+    return clipped > T(0) ? D * clipped : T(0);
+}
+
+// The shader's BlockLobeWeight: ExpectedLobeWeight over directions of first moment `mean`.
+template <typename T>
+T BlockLobeWeight(vec3<T> normal, vec3<T> mean, T roughness) {
+    const T length2 = glm::dot(mean, mean);
+    const T meanCosine = glm::dot(normal, mean);
+    const T variance =
+        T(0.5) * std::max(T(1) - length2, T(0)) * std::max(T(1) - meanCosine * meanCosine / length2, T(0));
+    return ExpectedLobeWeight(meanCosine, variance, roughness);
+}
+
+template <typename T>
+void baseLevel(std::span<const float> mip0, ClusterPyramid<T>& pyramid) {
+    const uint32_t size = pyramid.size;
+    const vec3<T> luminance(T(0.2126), T(0.7152), T(0.0722));
+    auto& energy = pyramid.energy.emplace_back(size_t(size) * size * 6);
+    auto& centroid = pyramid.centroid.emplace_back(size_t(size) * size * 6);
+    auto& geometry = pyramid.geometry.emplace_back(size_t(size) * size * 6);
+    for (uint32_t face = 0; face < 6; ++face)
+        for (uint32_t y = 0; y < size; ++y)
+            for (uint32_t x = 0; x < size; ++x) {
+                const size_t i = pyramid.index(0, face, x, y);
+                const vec3<T> radiance{T(mip0[i * 4]), T(mip0[i * 4 + 1]), T(mip0[i * 4 + 2])};
+                const T solidAngle = CubeTexelSolidAngle<T>(x, y, size);
+                const T weight = std::max(glm::dot(radiance, luminance), T(0)) * solidAngle;
+                energy[i] = vec4<T>(radiance * solidAngle, solidAngle);
+                centroid[i] = vec4<T>(blockCentre<T>(face, x, y, size) * weight, weight);
+                geometry[i] = vec4<T>(blockCentre<T>(face, x, y, size) * solidAngle, solidAngle);
+            }
+}
+
+// The shader's sum of the four children, in its order.
+template <typename T>
+vec4<T> childSum(const std::vector<vec4<T>>& below, const ClusterPyramid<T>& pyramid, uint32_t level, uint32_t face,
+                 uint32_t x, uint32_t y) {
+    const auto at = [&](uint32_t dx, uint32_t dy) { return below[pyramid.index(level - 1, face, 2 * x + dx, 2 * y + dy)]; };
+    return at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1);
+}
+
+template <typename T>
+void upperLevel(ClusterPyramid<T>& pyramid, uint32_t level) {
+    const uint32_t size = pyramid.levelSize(level);
+    std::vector<vec4<T>> energy(size_t(size) * size * 6), centroid(energy.size()), geometry(energy.size());
+    for (uint32_t face = 0; face < 6; ++face)
+        for (uint32_t y = 0; y < size; ++y)
+            for (uint32_t x = 0; x < size; ++x) {
+                const size_t i = pyramid.index(level, face, x, y);
+                energy[i] = childSum(pyramid.energy[level - 1], pyramid, level, face, x, y);
+                centroid[i] = childSum(pyramid.centroid[level - 1], pyramid, level, face, x, y);
+                geometry[i] = childSum(pyramid.geometry[level - 1], pyramid, level, face, x, y);
+            }
+    pyramid.energy.push_back(std::move(energy));
+    pyramid.centroid.push_back(std::move(centroid));
+    pyramid.geometry.push_back(std::move(geometry));
+}
+
+// PrefilterConvolutionCS's stackless depth-first walk over the tree's blocks.
+struct Walk {
+    uint32_t face = 0, x = 0, y = 0, level = 0, top = 0;
+};
+
+Walk topBlock(uint32_t top, uint32_t topSize, uint32_t topLevel) {
+    return {top / (topSize * topSize), top % topSize, (top / topSize) % topSize, topLevel, top};
+}
+
+bool nextBlock(Walk& walk, uint32_t topSize, uint32_t topLevel) {
+    while (walk.level < topLevel && (walk.x & walk.y & 1u) != 0) {
+        walk.x >>= 1, walk.y >>= 1;
+        ++walk.level;
+    }
+    if (walk.level == topLevel) {
+        if (walk.top + 1 >= 6 * topSize * topSize) return false;
+        walk = topBlock(walk.top + 1, topSize, topLevel);
+    } else if ((walk.x & 1u) == 0) {
+        ++walk.x;
+    } else {
+        --walk.x, ++walk.y;
+    }
+    return true;
+}
+
+template <typename T>
+vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughness, const ConvolutionTree& tree) {
+    vec3<T> radiance(0);
+    T weight = 0;
+    const uint32_t topSize = std::max(pyramid.size >> tree.topLevel, 1u);
+    Walk walk = topBlock(0, topSize, tree.topLevel);
+    for (bool walking = true; walking;) {
+        const uint32_t size = std::max(pyramid.size >> walk.level, 1u);
+        const vec3<T> centre = blockCentre<T>(walk.face, walk.x, walk.y, size);
+        const T cosine = glm::dot(normal, centre);
+        const T reach = T(tree.refine) * T(2) / T(size);
+        const bool nearN = T(2) - T(2) * cosine < reach * reach;
+        const bool acrossHorizon = walk.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
+        if (walk.level > tree.fineLevel && (nearN || acrossHorizon)) {
+            walk.x *= 2, walk.y *= 2;
+            --walk.level;
+            continue;
+        }
+        const size_t i = pyramid.index(walk.level, walk.face, walk.x, walk.y);
+        const vec4<T> energy = pyramid.energy[walk.level][i], weighted = pyramid.centroid[walk.level][i];
+        const vec4<T> geometry = pyramid.geometry[walk.level][i];
+        const vec3<T> extent = vec3<T>(geometry) / geometry.w;
+        const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) / weighted.w : extent;
+        radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness);
+        weight += energy.w * BlockLobeWeight(normal, extent, roughness);
+        walking = nextBlock(walk, topSize, tree.topLevel);
+    }
+    return radiance / weight;
+}
+
+} // namespace
+
+template <typename T>
+ClusterPyramid<T> clusterPyramid(std::span<const float> mip0, uint32_t size) {
+    ClusterPyramid<T> pyramid{size, {}, {}, {}};
+    baseLevel(mip0, pyramid);
+    for (uint32_t level = 1; (size >> level) > 0; ++level) upperLevel(pyramid, level);
+    return pyramid;
+}
+
+template <typename T>
+std::vector<T> convolvePrefilter(const ClusterPyramid<T>& pyramid, T roughness, uint32_t outSize,
+                                 const ConvolutionTree& tree) {
+    std::vector<T> texels(size_t(outSize) * outSize * 6 * 4, T(0));
+    forEachRow(outSize * 6, [&](uint32_t row) {
+        const uint32_t face = row / outSize, y = row % outSize;
+        for (uint32_t x = 0; x < outSize; ++x) {
+            const vec3<T> normal = blockCentre<T>(face, x, y, outSize);
+            const vec3<T> value = convolveTexel(pyramid, normal, roughness, tree);
+            const size_t i = ((size_t(face) * outSize + y) * outSize + x) * 4;
+            texels[i] = value.x, texels[i + 1] = value.y, texels[i + 2] = value.z;
+        }
+    });
+    return texels;
+}
+
+template ClusterPyramid<float> clusterPyramid(std::span<const float>, uint32_t);
+template ClusterPyramid<double> clusterPyramid(std::span<const float>, uint32_t);
+template std::vector<float> convolvePrefilter(const ClusterPyramid<float>&, float, uint32_t, const ConvolutionTree&);
+template std::vector<double> convolvePrefilter(const ClusterPyramid<double>&, double, uint32_t, const ConvolutionTree&);
+
+} // namespace iblkit::reference

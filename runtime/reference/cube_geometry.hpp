@@ -1,0 +1,39 @@
+#pragma once
+
+// hlsl/Common/Cube.fxh's geometry, function by function: T = float follows the shaders,
+// T = double gives the exact values.
+
+#include "pbr.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace iblkit::reference {
+
+template <typename T>
+vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
+    uv = (uv - T(0.5)) * vec2<T>(T(2), T(-2));
+    switch (face) {
+    case 0: return glm::normalize(vec3<T>(T(1), uv.y, -uv.x));
+    case 1: return glm::normalize(vec3<T>(T(-1), uv.y, uv.x));
+    case 2: return glm::normalize(vec3<T>(uv.x, T(1), -uv.y));
+    case 3: return glm::normalize(vec3<T>(uv.x, T(-1), uv.y));
+    case 4: return glm::normalize(vec3<T>(uv.x, uv.y, T(1)));
+    default: return glm::normalize(vec3<T>(-uv.x, uv.y, T(-1)));
+    }
+}
+
+template <typename T>
+T CubeAreaElement(T x, T y) {
+    return std::atan2(x * y, std::sqrt(x * x + y * y + T(1)));
+}
+
+template <typename T>
+T CubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size) {
+    const T inverseSize = T(1) / T(size);
+    const T x0 = T(2) * T(column) * inverseSize - T(1), y0 = T(2) * T(row) * inverseSize - T(1);
+    const T x1 = x0 + T(2) * inverseSize, y1 = y0 + T(2) * inverseSize;
+    return CubeAreaElement(x0, y0) - CubeAreaElement(x0, y1) - CubeAreaElement(x1, y0) + CubeAreaElement(x1, y1);
+}
+
+} // namespace iblkit::reference
