@@ -28,7 +28,7 @@ RWTexture2DArray<float4> Prefiltered;
 
 // The integrand of PrefilterSpecular's ratio at N = V, per unit solid angle of L, is the pdf
 // of L (D N.H / (4 V.H), with N.H = V.H) times the N.L weight: D(sqrt((1 + N.L) / 2)) N.L,
-// without the constant 1/4, which cancels.
+// without the constant 1/4, which cancels (ExpectedLobeWeight).
 
 // Phi(z), the standard normal distribution, by Abramowitz & Stegun 7.1.26 (|error| < 1.5e-7 in erf).
 float NormalCdf( float z )
@@ -90,11 +90,11 @@ float BlockLobeWeight( float3 normal, float3 mean, float roughness )
 // along a great circle (the face's centre has the widest texels, 2 / size across).
 static const float HORIZON_OPEN = 2.f;
 
-// The blocks of the tree in depth-first order, without a stack: a block's four children are
-// (2x, 2y), (2x + 1, 2y), (2x, 2y + 1), (2x + 1, 2y + 1), so where the walk goes next follows
-// from the block's own coordinates. (An indexed local array would be lowered to a chain of
-// selects by the compilers of CPU drivers, which costs more than the whole sum.)
-// The block after (face, xy, level) and its subtree, or (6, 0, TopLevel) when the walk is over.
+// The block after (face, xy, level) and its subtree in depth-first order, or face 6 when the walk
+// is over. No stack: a block's four children are (2x, 2y), (2x + 1, 2y), (2x, 2y + 1),
+// (2x + 1, 2y + 1), so where the walk goes next follows from the block's own coordinates. (An
+// indexed local array would be lowered to a chain of selects by the compilers of CPU drivers,
+// which costs more than the whole sum.)
 void NextBlock( inout uint face, inout uint2 xy, inout uint level, uint topSize )
 {
     while ( level < TopLevel && ( xy.x & xy.y & 1u ) != 0u )

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <ctime>
+#include <iterator>
 #include <fstream>
 #include <thread>
 #include <unistd.h>
@@ -55,6 +56,15 @@ std::vector<std::string> methodsWith(kernels::KernelRole whole, kernels::KernelR
     return methods;
 }
 
+// The counts of `samples` a specular method cannot take (the convolution's budget stops under
+// the driver's loop limit).
+std::vector<uint32_t> countsBeyond(const std::vector<uint32_t>& samples, const std::string& method) {
+    std::vector<uint32_t> beyond;
+    std::copy_if(samples.begin(), samples.end(), std::back_inserter(beyond),
+                 [most = kernels::maxSamplesOf(method)](uint32_t count) { return count > most; });
+    return beyond;
+}
+
 // Each output's methods: every one the table has for it, or those asked for; a method asked for
 // that has no kernel for any output the bench measures is refused before any work.
 OutputMethods outputMethods(const BenchOptions& options) {
@@ -75,6 +85,10 @@ OutputMethods outputMethods(const BenchOptions& options) {
     };
     keep(chosen.lut);
     keep(chosen.specular);
+    for (const auto& method : chosen.specular)
+        if (countsBeyond(options.samples, method).size() == options.samples.size())
+            throw BenchError(fmt::format("method '{}' takes at most {} samples per texel", method,
+                                         kernels::maxSamplesOf(method)));
     for (const auto& method : options.methods) {
         const auto has = [&](const std::vector<std::string>& methods) {
             return std::find(methods.begin(), methods.end(), method) != methods.end();
@@ -99,6 +113,14 @@ OutputMethods validate(const BenchOptions& options) {
     if (options.irradianceSize == 0 || options.irradianceSize > 1024)
         throw BenchError("the irradiance size must be from 1 to 1024");
     return outputMethods(options);
+}
+
+void logSpecularLimits(const BenchOptions& options, const std::vector<std::string>& methods) {
+    if (!options.log) return;
+    for (const auto& method : methods)
+        if (const auto beyond = countsBeyond(options.samples, method); !beyond.empty())
+            fmt::print(options.log, "bench  {}: {} above its limit of {}, not measured\n", method, fmt::join(beyond, ", "),
+                       kernels::maxSamplesOf(method));
 }
 
 void logResult(const BenchOptions& options, const BenchResult& result) {
@@ -129,7 +151,8 @@ void benchEnvironment(const vulkan::VulkanContext& context, const BenchEnvironme
         if (options.log) fmt::print(options.log, "bench  {}: converged prefilter references\n", environment.name);
         SpecularBench specular(context, source, cube, options, cache);
         for (const auto& method : methods)
-            for (const uint32_t samples : options.samples) add(specular.measure(method, samples));
+            for (const uint32_t samples : options.samples)
+                if (samples <= kernels::maxSamplesOf(method)) add(specular.measure(method, samples));
     }
     if (wants(options, BenchOutput::Irradiance)) add(measureIrradiance(context, source, cube, options, cache));
 }
@@ -150,6 +173,7 @@ BenchRun runBench(const BenchOptions& options) {
     const auto cacheDir = options.cacheDir.empty() ? ReferenceCache::defaultFolder() : options.cacheDir;
     const ReferenceCache cache(cacheDir);
     const auto environments = resolveEnvironments(options.environments, options.size, cacheDir);
+    logSpecularLimits(options, methods.specular);
     const vulkan::VulkanContext context(options.context);
     BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}};
     if (wants(options, BenchOutput::Lut)) {

@@ -5,15 +5,23 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+
+#include <fmt/core.h>
 #include <numbers>
 #include <stdexcept>
 
 namespace iblkit::kernels {
 namespace {
 
-constexpr uint32_t kMaxTreeDepth = 7; // PrefilterConvolutionCS's MAX_DEPTH
+constexpr uint32_t kMaxTreeDepth = 7; // levels from the top level down to the fine level
 
 uint32_t levelOf(uint32_t sourceSize, uint32_t size) { return uint32_t(std::bit_width(sourceSize / size)) - 1; }
+
+void requireBudget(uint32_t budget) {
+    if (budget == 0 || budget > kMaxConvolutionBudget)
+        throw std::invalid_argument(fmt::format("the convolution method takes a budget of 1 to {} terms per texel, not {}",
+                                                kMaxConvolutionBudget, budget));
+}
 
 DispatchTotals& operator+=(DispatchTotals& sum, const DispatchTotals& more) {
     sum.deviceMilliseconds += more.deviceMilliseconds;
@@ -27,12 +35,12 @@ DispatchTotals& operator+=(DispatchTotals& sum, const DispatchTotals& more) {
 ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget) {
     if (!(roughness > 0 && roughness <= 1))
         throw std::invalid_argument("the convolution method takes a roughness in (0, 1], not " + std::to_string(roughness));
-    if (budget == 0) throw std::invalid_argument("the convolution method needs a budget of at least 1 term per texel");
+    requireBudget(budget);
     const double alpha = double(roughness) * roughness;
     const double lobeWidth = std::min(2.58 * alpha, std::numbers::pi / 2);
     // A face of w texels is 2 / w radians wide at its centre.
     const double wanted = 2 * kFineTexelsPerLobe / lobeWidth;
-    uint32_t fineSize = std::min(sourceSize, std::bit_ceil(uint32_t(std::ceil(std::min(wanted, double(sourceSize))))));
+    const uint32_t fineSize = std::bit_ceil(uint32_t(std::ceil(std::min(wanted, double(sourceSize)))));
     const uint32_t fineLevel = levelOf(sourceSize, fineSize);
     const uint32_t lastLevel = levelOf(sourceSize, 1);
     const uint32_t topLevel = std::min(lastLevel, fineLevel + kMaxTreeDepth);
@@ -52,7 +60,7 @@ ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context,
     : context_(context), budget_(budget),
       cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)),
       convolve_(context, compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), {}, {}, files)) {
-    if (budget == 0) throw std::invalid_argument("the convolution method needs a budget of at least 1 term per texel");
+    requireBudget(budget);
 }
 
 void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {

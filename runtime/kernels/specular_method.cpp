@@ -1,19 +1,13 @@
 #include "kernels/specular_method.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace iblkit::kernels {
 
-std::vector<std::string> specularMethods() {
-    std::vector<std::string> methods;
-    for (const auto& kernel : kernelTable())
-        if ((kernel.role == KernelRole::Prefilter || kernel.role == KernelRole::PrefilterConvolution) &&
-            std::find(methods.begin(), methods.end(), kernel.method) == methods.end())
-            methods.push_back(kernel.method);
-    return methods;
-}
+namespace {
 
+// Whether `method`'s prefilter is the convolution (ClusterCube + PrefilterConvolution) rather
+// than a sampled estimator (Prefilter, PrefilterChunk).
 bool isConvolutionMethod(const std::string& method) {
     for (const auto& kernel : kernelTable())
         if (kernel.method == method && kernel.role == KernelRole::PrefilterConvolution) return true;
@@ -21,9 +15,14 @@ bool isConvolutionMethod(const std::string& method) {
     return false;
 }
 
+} // namespace
+
+uint32_t maxSamplesOf(const std::string& method) {
+    return isConvolutionMethod(method) ? kMaxConvolutionBudget : kMaxSamples;
+}
+
 SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
-                               const ShaderFiles& files)
-    : method_(method) {
+                               const ShaderFiles& files) {
     if (isConvolutionMethod(method))
         convolution_.emplace(context, method, samples, files);
     else
@@ -41,13 +40,5 @@ DispatchTotals SpecularMethod::takeTotals() {
 }
 
 uint32_t SpecularMethod::chunkSamples() const { return sampled_ ? sampled_->chunkSamples() : 0; }
-
-std::vector<std::string> SpecularMethod::shaderSources() const {
-    const auto source = [](const KernelEntry& kernel) { return kernel.options.source.generic_string(); };
-    if (convolution_)
-        return {source(kernelFor(KernelRole::ClusterCube)), source(kernelFor(KernelRole::PrefilterConvolution, method_))};
-    const auto role = sampled_->chunkSamples() ? KernelRole::PrefilterChunk : KernelRole::Prefilter;
-    return {source(kernelFor(role, method_))};
-}
 
 } // namespace iblkit::kernels

@@ -29,7 +29,7 @@ T NormalCdf(T z) {
 
 template <typename T>
 T ClippedMean(T mean, T spread) {
-    if (!(spread > T(0)) || std::abs(mean) > T(5) * spread) return std::max(mean, T(0));
+    if (!(spread > T(0) && std::abs(mean) <= T(5) * spread)) return std::max(mean, T(0));
     const T z = mean / spread;
     const T density = std::exp(T(-0.5) * z * z) * T(0.39894228);
     return spread * density + mean * NormalCdf(z);
@@ -47,8 +47,7 @@ T ExpectedLobeWeight(T ndotl, T variance, T roughness) {
         const T s = A + B * ndotl;
         return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) / (s * s));
     }
-    const T clipped = ClippedMean(ndotl, spread);
-    return clipped > T(0) ? D * clipped : T(0);
+    return D * std::max(ClippedMean(ndotl, spread), T(0));
 }
 
 // The shader's BlockLobeWeight: ExpectedLobeWeight over directions of first moment `mean`.
@@ -106,29 +105,35 @@ void upperLevel(ClusterPyramid<T>& pyramid, uint32_t level) {
     pyramid.geometry.push_back(std::move(geometry));
 }
 
-// PrefilterConvolutionCS's stackless depth-first walk over the tree's blocks.
-struct Walk {
-    uint32_t face = 0, x = 0, y = 0, level = 0, top = 0;
+// PrefilterConvolutionCS's NextBlock: the block after (face, x, y, level) and its subtree in
+// depth-first order, or face 6 when the walk is over.
+struct Block {
+    uint32_t face = 0, x = 0, y = 0, level = 0;
 };
 
-Walk topBlock(uint32_t top, uint32_t topSize, uint32_t topLevel) {
-    return {top / (topSize * topSize), top % topSize, (top / topSize) % topSize, topLevel, top};
+void nextBlock(Block& block, uint32_t topSize, uint32_t topLevel) {
+    while (block.level < topLevel && (block.x & block.y & 1u) != 0) {
+        block.x >>= 1, block.y >>= 1;
+        ++block.level;
+    }
+    if (block.level == topLevel) {
+        const uint32_t top = (block.face * topSize + block.y) * topSize + block.x + 1;
+        block = {top / (topSize * topSize), top % topSize, (top / topSize) % topSize, topLevel};
+    } else if ((block.x & 1u) == 0) {
+        ++block.x;
+    } else {
+        --block.x, ++block.y;
+    }
 }
 
-bool nextBlock(Walk& walk, uint32_t topSize, uint32_t topLevel) {
-    while (walk.level < topLevel && (walk.x & walk.y & 1u) != 0) {
-        walk.x >>= 1, walk.y >>= 1;
-        ++walk.level;
-    }
-    if (walk.level == topLevel) {
-        if (walk.top + 1 >= 6 * topSize * topSize) return false;
-        walk = topBlock(walk.top + 1, topSize, topLevel);
-    } else if ((walk.x & 1u) == 0) {
-        ++walk.x;
-    } else {
-        --walk.x, ++walk.y;
-    }
-    return true;
+// The shader's Opens.
+template <typename T>
+bool opens(vec3<T> normal, const Block& block, uint32_t size, const ConvolutionTree& tree) {
+    const T cosine = glm::dot(normal, blockCentre<T>(block.face, block.x, block.y, size));
+    const T reach = T(tree.refine) * T(2) / T(size);
+    const bool nearN = T(2) - T(2) * cosine < reach * reach;
+    const bool acrossHorizon = block.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
+    return nearN || acrossHorizon;
 }
 
 template <typename T>
@@ -136,27 +141,20 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
     vec3<T> radiance(0);
     T weight = 0;
     const uint32_t topSize = std::max(pyramid.size >> tree.topLevel, 1u);
-    Walk walk = topBlock(0, topSize, tree.topLevel);
-    for (bool walking = true; walking;) {
-        const uint32_t size = std::max(pyramid.size >> walk.level, 1u);
-        const vec3<T> centre = blockCentre<T>(walk.face, walk.x, walk.y, size);
-        const T cosine = glm::dot(normal, centre);
-        const T reach = T(tree.refine) * T(2) / T(size);
-        const bool nearN = T(2) - T(2) * cosine < reach * reach;
-        const bool acrossHorizon = walk.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
-        if (walk.level > tree.fineLevel && (nearN || acrossHorizon)) {
-            walk.x *= 2, walk.y *= 2;
-            --walk.level;
-            continue;
+    Block block{0, 0, 0, tree.topLevel};
+    while (block.face < 6) {
+        while (block.level > tree.fineLevel && opens(normal, block, std::max(pyramid.size >> block.level, 1u), tree)) {
+            block.x *= 2, block.y *= 2;
+            --block.level;
         }
-        const size_t i = pyramid.index(walk.level, walk.face, walk.x, walk.y);
-        const vec4<T> energy = pyramid.energy[walk.level][i], weighted = pyramid.centroid[walk.level][i];
-        const vec4<T> geometry = pyramid.geometry[walk.level][i];
+        const size_t i = pyramid.index(block.level, block.face, block.x, block.y);
+        const vec4<T> energy = pyramid.energy[block.level][i], weighted = pyramid.centroid[block.level][i];
+        const vec4<T> geometry = pyramid.geometry[block.level][i];
         const vec3<T> extent = vec3<T>(geometry) / geometry.w;
         const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) / weighted.w : extent;
         radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness);
         weight += energy.w * BlockLobeWeight(normal, extent, roughness);
-        walking = nextBlock(walk, topSize, tree.topLevel);
+        nextBlock(block, topSize, tree.topLevel);
     }
     return radiance / weight;
 }
