@@ -1,7 +1,16 @@
+#pragma clang diagnostic ignored "-Wmissing-prototypes"
+
 #include <metal_stdlib>
 #include <simd/simd.h>
 
 using namespace metal;
+
+// Implementation of the unsigned GLSL findMSB() function
+template<typename T>
+inline T spvFindUMSB(T x)
+{
+    return select(clz(T(0)) - (clz(x) + T(1)), T(-1), x == T(0));
+}
 
 struct PrefilterConvolutionParameter
 {
@@ -12,145 +21,168 @@ struct PrefilterConvolutionParameter
     uint HorizonLevel;
 };
 
-kernel void main0(constant PrefilterConvolutionParameter& _378 [[buffer(0)]], texture2d_array<float> Energy [[texture(0)]], texture2d_array<float> Centroid [[texture(1)]], texture2d_array<float> Geometry [[texture(2)]], texture2d_array<float, access::write> Prefiltered [[texture(3)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+constant int _1940 = {};
+
+kernel void main0(constant PrefilterConvolutionParameter& _383 [[buffer(0)]], texture2d_array<float> Energy [[texture(0)]], texture2d_array<float> Centroid [[texture(1)]], texture2d_array<float> Geometry [[texture(2)]], texture2d_array<float, access::write> Prefiltered [[texture(3)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _736 = uint3(0u);
-        uint3 _737 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
-        _736.x = _737.x;
-        _736.y = _737.y;
-        _736.z = _737.z;
-        if (any(gl_GlobalInvocationID >= _736))
+        uint3 _846 = uint3(0u);
+        uint3 _847 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
+        _846.x = _847.x;
+        _846.y = _847.y;
+        _846.z = _847.z;
+        if (any(gl_GlobalInvocationID >= _846))
         {
             break;
         }
-        float2 _740 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_736.x))) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _1612;
+        float2 _850 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_846.x))) - float2(0.5)) * float2(2.0, -2.0);
+        float3 _1824;
         if (param.z == 0u)
         {
-            _1612 = float3(1.0, _740.y, -_740.x);
+            _1824 = float3(1.0, _850.y, -_850.x);
         }
         else
         {
-            float3 _1613;
+            float3 _1825;
             if (param.z == 1u)
             {
-                _1613 = float3(-1.0, _740.y, _740.x);
+                _1825 = float3(-1.0, _850.y, _850.x);
             }
             else
             {
-                float3 _1614;
+                float3 _1826;
                 if (param.z == 2u)
                 {
-                    _1614 = float3(_740.x, 1.0, -_740.y);
+                    _1826 = float3(_850.x, 1.0, -_850.y);
                 }
                 else
                 {
-                    float3 _1615;
+                    float3 _1827;
                     if (param.z == 3u)
                     {
-                        _1615 = float3(_740.x, -1.0, _740.y);
+                        _1827 = float3(_850.x, -1.0, _850.y);
                     }
                     else
                     {
-                        float3 _1616;
+                        float3 _1828;
                         if (param.z == 4u)
                         {
-                            _1616 = float3(_740.x, _740.y, 1.0);
+                            _1828 = float3(_850.x, _850.y, 1.0);
                         }
                         else
                         {
-                            _1616 = float3(-_740.x, _740.y, -1.0);
+                            _1828 = float3(-_850.x, _850.y, -1.0);
                         }
-                        _1615 = _1616;
+                        _1827 = _1828;
                     }
-                    _1614 = _1615;
+                    _1826 = _1827;
                 }
-                _1613 = _1614;
+                _1825 = _1826;
             }
-            _1612 = _1613;
+            _1824 = _1825;
         }
-        float3 _1005 = fast::normalize(_1612);
-        uint3 _745 = uint3(Energy.get_width(0u), Energy.get_height(0u), Energy.get_array_size());
-        uint _820 = max((_745.x >> _378.TopLevel), 1u);
-        float3 _1618;
-        float _1619;
-        uint2 _1624;
-        _1624 = uint2(0u);
-        _1619 = 0.0;
-        _1618 = float3(0.0);
-        float3 _906;
-        float _916;
-        uint2 _923;
-        uint _1679;
-        uint _1681;
-        for (uint _1617 = 0u, _1621 = _378.TopLevel; _1617 < 6u; _1624 = _923, _1621 = _1679, _1619 = _916, _1618 = _906, _1617 = _1681)
+        float3 _1133 = fast::normalize(_1824);
+        uint3 _854 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
+        uint _932 = max((_854.x >> _383.TopLevel), 1u);
+        uint _934 = spvFindUMSB(_854.x);
+        float _1830;
+        float _1831;
+        _1831 = 0.0;
+        _1830 = 0.0;
+        float _1160;
+        float _1177;
+        for (uint _1829 = 0u; _1829 < 6u; _1831 = _1177, _1830 = _1160, _1829++)
         {
-            uint _1620;
-            uint2 _1623;
-            _1623 = _1624;
-            _1620 = _1621;
-            uint2 _847;
-            uint _849;
+            int3 _1150 = int4(0, 0, int(_1829), _1940).xyz;
+            _1160 = _1830 + Centroid.read(uint2(_1150.xy), uint(_1150.z), int(_934)).w;
+            int3 _1167 = int4(0, 0, int(_1829), _1940).xyz;
+            _1177 = _1831 + Geometry.read(uint2(_1167.xy), uint(_1167.z), int(_934)).w;
+        }
+        float _1184 = _1830 / _1831;
+        uint _941 = 65000u - min(((6u * _932) * _932), 65000u);
+        float3 _1833;
+        float _1835;
+        uint2 _1843;
+        _1843 = uint2(0u);
+        _1835 = 0.0;
+        _1833 = float3(0.0);
+        float3 _1032;
+        float _1042;
+        uint _1044;
+        uint2 _1051;
+        uint _1907;
+        uint _1909;
+        for (uint _1832 = 0u, _1838 = _383.TopLevel, _1840 = 0u; _1832 < 6u; _1843 = _1051, _1840 = _1044, _1838 = _1907, _1835 = _1042, _1833 = _1032, _1832 = _1909)
+        {
+            uint _1837;
+            uint2 _1842;
+            _1842 = _1843;
+            _1837 = _1838;
+            uint2 _973;
+            uint _975;
             for (;;)
             {
-                uint _837 = max((_745.x >> _1620), 1u);
-                float2 _1008 = (((float2(_1623) + float2(0.5)) / float2(float(_837))) - float2(0.5)) * float2(2.0, -2.0);
-                float3 _1625;
-                if (_1617 == 0u)
+                uint _962 = max((_854.x >> _1837), 1u);
+                float2 _1187 = (((float2(_1842) + float2(0.5)) / float2(float(_962))) - float2(0.5)) * float2(2.0, -2.0);
+                float3 _1844;
+                if (_1832 == 0u)
                 {
-                    _1625 = float3(1.0, _1008.y, -_1008.x);
+                    _1844 = float3(1.0, _1187.y, -_1187.x);
                 }
                 else
                 {
-                    float3 _1626;
-                    if (_1617 == 1u)
+                    float3 _1845;
+                    if (_1832 == 1u)
                     {
-                        _1626 = float3(-1.0, _1008.y, _1008.x);
+                        _1845 = float3(-1.0, _1187.y, _1187.x);
                     }
                     else
                     {
-                        float3 _1627;
-                        if (_1617 == 2u)
+                        float3 _1846;
+                        if (_1832 == 2u)
                         {
-                            _1627 = float3(_1008.x, 1.0, -_1008.y);
+                            _1846 = float3(_1187.x, 1.0, -_1187.y);
                         }
                         else
                         {
-                            float3 _1628;
-                            if (_1617 == 3u)
+                            float3 _1847;
+                            if (_1832 == 3u)
                             {
-                                _1628 = float3(_1008.x, -1.0, _1008.y);
+                                _1847 = float3(_1187.x, -1.0, _1187.y);
                             }
                             else
                             {
-                                float3 _1629;
-                                if (_1617 == 4u)
+                                float3 _1848;
+                                if (_1832 == 4u)
                                 {
-                                    _1629 = float3(_1008.x, _1008.y, 1.0);
+                                    _1848 = float3(_1187.x, _1187.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1629 = float3(-_1008.x, _1008.y, -1.0);
+                                    _1848 = float3(-_1187.x, _1187.y, -1.0);
                                 }
-                                _1628 = _1629;
+                                _1847 = _1848;
                             }
-                            _1627 = _1628;
+                            _1846 = _1847;
                         }
-                        _1626 = _1627;
+                        _1845 = _1846;
                     }
-                    _1625 = _1626;
+                    _1844 = _1845;
                 }
-                float _1027 = dot(_1005, fast::normalize(_1625));
-                float _1033 = (_378.Refine * 2.0) / float(_837);
-                if ((_1620 > _378.FineLevel) && ((fma(-2.0, _1027, 2.0) < (_1033 * _1033)) || ((_1620 > _378.HorizonLevel) && (abs(_1027) < (2.0 / float(_837))))))
+                float _1208 = dot(_1133, fast::normalize(_1844));
+                int4 _1217 = int4(int2(_1842), int(_1832), int(_1837));
+                int4 _1189 = _1217;
+                int3 _1220 = _1217.xyz;
+                int3 _1227 = _1217.xyz;
+                float _1245 = ((_383.Refine * 2.0) / float(_962)) * pow(fast::max(Centroid.read(uint2(_1220.xy), uint(_1220.z), _1189.w).w / fast::max(Geometry.read(uint2(_1227.xy), uint(_1227.z), _1189.w).w * _1184, 1.0000000031710768509710513471353e-30), 1.0), 0.3333333432674407958984375);
+                if (((_1837 > _383.FineLevel) && (_1840 < _941)) && ((fma(-2.0, _1208, 2.0) < (_1245 * _1245)) || ((_1837 > _383.HorizonLevel) && (abs(_1208) < (2.0 / float(_962))))))
                 {
-                    _847 = _1623 * uint2(2u);
-                    _849 = _1620 - 1u;
-                    _1623 = _847;
-                    _1620 = _849;
+                    _973 = _1842 * uint2(2u);
+                    _975 = _1837 - 1u;
+                    _1842 = _973;
+                    _1837 = _975;
                     continue;
                 }
                 else
@@ -158,122 +190,123 @@ kernel void main0(constant PrefilterConvolutionParameter& _378 [[buffer(0)]], te
                     break;
                 }
             }
-            int4 _860 = int4(int2(_1623), int(_1617), int(_1620));
-            int4 _757 = _860;
-            int3 _863 = _860.xyz;
-            float4 _866 = Energy.read(uint2(_863.xy), uint(_863.z), _757.w);
-            float4 _758 = _866;
-            int3 _869 = _860.xyz;
-            float4 _872 = Centroid.read(uint2(_869.xy), uint(_869.z), _757.w);
-            float4 _759 = _872;
-            int3 _875 = _860.xyz;
-            float4 _878 = Geometry.read(uint2(_875.xy), uint(_875.z), _757.w);
-            float4 _760 = _878;
-            float3 _884 = _878.xyz / float3(_760.w);
-            float3 _896 = select(_884, _872.xyz / float3(_759.w), bool3(_759.w > 0.0));
-            float _1132 = dot(_896, _896);
-            float _1135 = dot(_1005, _896);
-            float _1147 = (0.5 * fast::max(1.0 - _1132, 0.0)) * fast::max(1.0 - ((_1135 * _1135) / _1132), 0.0);
-            float _1167 = sqrt(fast::max(_1147, 0.0));
-            float _1172 = sqrt(fma(0.5, fast::max(_1135, 0.0), 0.5));
-            float _1235 = _378.Roughness * _378.Roughness;
-            float _1247 = fma(_1172 * _1172, fma(_1235, _1235, -1.0), 1.0);
-            float _1646;
-            if (_1135 > (3.0 * _1167))
+            int4 _986 = int4(int2(_1842), int(_1832), int(_1837));
+            int4 _871 = _986;
+            int3 _989 = _986.xyz;
+            float4 _992 = Energy.read(uint2(_989.xy), uint(_989.z), _871.w);
+            float4 _872 = _992;
+            int3 _995 = _986.xyz;
+            float4 _998 = Centroid.read(uint2(_995.xy), uint(_995.z), _871.w);
+            float4 _873 = _998;
+            int3 _1001 = _986.xyz;
+            float4 _1004 = Geometry.read(uint2(_1001.xy), uint(_1001.z), _871.w);
+            float4 _874 = _1004;
+            float3 _1010 = _1004.xyz / float3(_874.w);
+            float3 _1022 = select(_1010, _998.xyz / float3(_873.w), bool3(_873.w > 0.0));
+            float _1344 = dot(_1022, _1022);
+            float _1347 = dot(_1133, _1022);
+            float _1359 = (0.5 * fast::max(1.0 - _1344, 0.0)) * fast::max(1.0 - ((_1347 * _1347) / _1344), 0.0);
+            float _1379 = sqrt(fast::max(_1359, 0.0));
+            float _1384 = sqrt(fma(0.5, fast::max(_1347, 0.0), 0.5));
+            float _1447 = _383.Roughness * _383.Roughness;
+            float _1459 = fma(_1384 * _1384, fma(_1447, _1447, -1.0), 1.0);
+            float _1865;
+            if (_1347 > (3.0 * _1379))
             {
-                float _1186 = ((_378.Roughness * _378.Roughness) * _378.Roughness) * _378.Roughness;
-                float _1189 = fma(0.5, _1186, 0.5);
-                float _1192 = fma(0.5, _1186, -0.5);
-                float _1197 = fma(_1192, _1135, _1189);
-                _1646 = _1135 + ((((0.5 * _1147) * (-_1192)) * fma(4.0, _1189, -((2.0 * _1192) * _1135))) / (_1197 * _1197));
+                float _1398 = ((_383.Roughness * _383.Roughness) * _383.Roughness) * _383.Roughness;
+                float _1401 = fma(0.5, _1398, 0.5);
+                float _1404 = fma(0.5, _1398, -0.5);
+                float _1409 = fma(_1404, _1347, _1401);
+                _1865 = _1347 + ((((0.5 * _1359) * (-_1404)) * fma(4.0, _1401, -((2.0 * _1404) * _1347))) / (_1409 * _1409));
             }
             else
             {
-                float _1645;
-                if ((_1167 > 0.0) && (abs(_1135) <= (5.0 * _1167)))
+                float _1864;
+                if ((_1379 > 0.0) && (abs(_1347) <= (5.0 * _1379)))
                 {
-                    float _1274 = _1135 / _1167;
-                    float _1298 = abs(_1274);
-                    float _1302 = fma(_1298, 0.23164187371730804443359375, 1.0);
-                    float _1303 = 1.0 / _1302;
-                    float _1319 = (0.5 / _1302) * fma(_1303, fma(_1303, fma(_1303, (-1.45315206050872802734375) + (1.0614054203033447265625 / _1302), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
-                    float _1324 = exp((_1298 * (-0.707106769084930419921875)) * (_1298 * 0.707106769084930419921875));
-                    _1645 = fma(_1167, exp(((-0.5) * _1274) * _1274) * 0.398942291736602783203125, _1135 * ((_1274 >= 0.0) ? fma(-_1319, _1324, 1.0) : (_1319 * _1324)));
+                    float _1486 = _1347 / _1379;
+                    float _1510 = abs(_1486);
+                    float _1514 = fma(_1510, 0.23164187371730804443359375, 1.0);
+                    float _1515 = 1.0 / _1514;
+                    float _1531 = (0.5 / _1514) * fma(_1515, fma(_1515, fma(_1515, (-1.45315206050872802734375) + (1.0614054203033447265625 / _1514), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
+                    float _1536 = exp((_1510 * (-0.707106769084930419921875)) * (_1510 * 0.707106769084930419921875));
+                    _1864 = fma(_1379, exp(((-0.5) * _1486) * _1486) * 0.398942291736602783203125, _1347 * ((_1486 >= 0.0) ? fma(-_1531, _1536, 1.0) : (_1531 * _1536)));
                 }
                 else
                 {
-                    _1645 = fast::max(_1135, 0.0);
+                    _1864 = fast::max(_1347, 0.0);
                 }
-                _1646 = fast::max(_1645, 0.0);
+                _1865 = fast::max(_1864, 0.0);
             }
-            _906 = _1618 + (_866.xyz * (((_1235 * _1235) / ((3.1415927410125732421875 * _1247) * _1247)) * _1646));
-            float _1342 = dot(_884, _884);
-            float _1345 = dot(_1005, _884);
-            float _1357 = (0.5 * fast::max(1.0 - _1342, 0.0)) * fast::max(1.0 - ((_1345 * _1345) / _1342), 0.0);
-            float _1377 = sqrt(fast::max(_1357, 0.0));
-            float _1382 = sqrt(fma(0.5, fast::max(_1345, 0.0), 0.5));
-            float _1445 = _378.Roughness * _378.Roughness;
-            float _1457 = fma(_1382 * _1382, fma(_1445, _1445, -1.0), 1.0);
-            float _1656;
-            if (_1345 > (3.0 * _1377))
+            _1032 = _1833 + (_992.xyz * (((_1447 * _1447) / ((3.1415927410125732421875 * _1459) * _1459)) * _1865));
+            float _1554 = dot(_1010, _1010);
+            float _1557 = dot(_1133, _1010);
+            float _1569 = (0.5 * fast::max(1.0 - _1554, 0.0)) * fast::max(1.0 - ((_1557 * _1557) / _1554), 0.0);
+            float _1589 = sqrt(fast::max(_1569, 0.0));
+            float _1594 = sqrt(fma(0.5, fast::max(_1557, 0.0), 0.5));
+            float _1657 = _383.Roughness * _383.Roughness;
+            float _1669 = fma(_1594 * _1594, fma(_1657, _1657, -1.0), 1.0);
+            float _1875;
+            if (_1557 > (3.0 * _1589))
             {
-                float _1396 = ((_378.Roughness * _378.Roughness) * _378.Roughness) * _378.Roughness;
-                float _1399 = fma(0.5, _1396, 0.5);
-                float _1402 = fma(0.5, _1396, -0.5);
-                float _1407 = fma(_1402, _1345, _1399);
-                _1656 = _1345 + ((((0.5 * _1357) * (-_1402)) * fma(4.0, _1399, -((2.0 * _1402) * _1345))) / (_1407 * _1407));
+                float _1608 = ((_383.Roughness * _383.Roughness) * _383.Roughness) * _383.Roughness;
+                float _1611 = fma(0.5, _1608, 0.5);
+                float _1614 = fma(0.5, _1608, -0.5);
+                float _1619 = fma(_1614, _1557, _1611);
+                _1875 = _1557 + ((((0.5 * _1569) * (-_1614)) * fma(4.0, _1611, -((2.0 * _1614) * _1557))) / (_1619 * _1619));
             }
             else
             {
-                float _1655;
-                if ((_1377 > 0.0) && (abs(_1345) <= (5.0 * _1377)))
+                float _1874;
+                if ((_1589 > 0.0) && (abs(_1557) <= (5.0 * _1589)))
                 {
-                    float _1484 = _1345 / _1377;
-                    float _1508 = abs(_1484);
-                    float _1512 = fma(_1508, 0.23164187371730804443359375, 1.0);
-                    float _1513 = 1.0 / _1512;
-                    float _1529 = (0.5 / _1512) * fma(_1513, fma(_1513, fma(_1513, (-1.45315206050872802734375) + (1.0614054203033447265625 / _1512), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
-                    float _1534 = exp((_1508 * (-0.707106769084930419921875)) * (_1508 * 0.707106769084930419921875));
-                    _1655 = fma(_1377, exp(((-0.5) * _1484) * _1484) * 0.398942291736602783203125, _1345 * ((_1484 >= 0.0) ? fma(-_1529, _1534, 1.0) : (_1529 * _1534)));
+                    float _1696 = _1557 / _1589;
+                    float _1720 = abs(_1696);
+                    float _1724 = fma(_1720, 0.23164187371730804443359375, 1.0);
+                    float _1725 = 1.0 / _1724;
+                    float _1741 = (0.5 / _1724) * fma(_1725, fma(_1725, fma(_1725, (-1.45315206050872802734375) + (1.0614054203033447265625 / _1724), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
+                    float _1746 = exp((_1720 * (-0.707106769084930419921875)) * (_1720 * 0.707106769084930419921875));
+                    _1874 = fma(_1589, exp(((-0.5) * _1696) * _1696) * 0.398942291736602783203125, _1557 * ((_1696 >= 0.0) ? fma(-_1741, _1746, 1.0) : (_1741 * _1746)));
                 }
                 else
                 {
-                    _1655 = fast::max(_1345, 0.0);
+                    _1874 = fast::max(_1557, 0.0);
                 }
-                _1656 = fast::max(_1655, 0.0);
+                _1875 = fast::max(_1874, 0.0);
             }
-            _916 = fma(_758.w, ((_1445 * _1445) / ((3.1415927410125732421875 * _1457) * _1457)) * _1656, _1619);
-            uint2 _770 = _1623;
-            _1679 = _1620;
-            uint _1563;
-            for (; (_1679 < _378.TopLevel) && (((_770.x & _770.y) & 1u) != 0u); _1679 = _1563)
+            _1042 = fma(_872.w, ((_1657 * _1657) / ((3.1415927410125732421875 * _1669) * _1669)) * _1875, _1835);
+            _1044 = _1840 + 1u;
+            uint2 _884 = _1842;
+            _1907 = _1837;
+            uint _1775;
+            for (; (_1907 < _383.TopLevel) && (((_884.x & _884.y) & 1u) != 0u); _1907 = _1775)
             {
-                _770 = _770 >> uint2(int2(1));
-                _1563 = _1679 + 1u;
+                _884 = _884 >> uint2(int2(1));
+                _1775 = _1907 + 1u;
             }
-            if (_1679 == _378.TopLevel)
+            if (_1907 == _383.TopLevel)
             {
-                uint _1575 = _770.y;
-                uint _1580 = _770.x;
-                uint _1582 = ((((_1617 * _820) + _1575) * _820) + _1580) + 1u;
-                _770 = uint2(_1582 % _820, (_1582 / _820) % _820);
-                _1681 = _1582 / (_820 * _820);
+                uint _1787 = _884.y;
+                uint _1792 = _884.x;
+                uint _1794 = ((((_1832 * _932) + _1787) * _932) + _1792) + 1u;
+                _884 = uint2(_1794 % _932, (_1794 / _932) % _932);
+                _1909 = _1794 / (_932 * _932);
             }
             else
             {
-                if ((_770.x & 1u) == 0u)
+                if ((_884.x & 1u) == 0u)
                 {
-                    _770.x++;
+                    _884.x++;
                 }
                 else
                 {
-                    _770 += uint2(4294967295u, 1u);
+                    _884 += uint2(4294967295u, 1u);
                 }
-                _1681 = _1617;
+                _1909 = _1832;
             }
-            _923 = _770;
+            _1051 = _884;
         }
-        Prefiltered.write(float4(_1618 / float3(_1619), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Prefiltered.write(float4(_1833 / float3(_1835), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

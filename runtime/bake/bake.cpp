@@ -1,5 +1,7 @@
 #include "bake.hpp"
 
+#include "kernels/specular_method.hpp"
+
 #include "bake_directory.hpp"
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
@@ -30,7 +32,9 @@ std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e
 void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
                  uint32_t size) {
     const double panorama = double(input.panorama.width) * input.panorama.height * 16;
-    const double device = 2 * cubeChainBytes(size) + panorama + double(settings.lutSize) * settings.lutSize * 8 +
+    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain.
+    const double pyramids = kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(size) : 0;
+    const double device = 2 * cubeChainBytes(size) + pyramids + panorama + double(settings.lutSize) * settings.lutSize * 8 +
                           6.0 * settings.irradianceSize * settings.irradianceSize * 16;
     // The host holds each image as floats while it downloads and encodes it.
     const double host = device + 2 * cubeChainBytes(size);
@@ -93,7 +97,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     progress.end();
 
     auto source = buildSourceCube(context, input, size, progress);
-    auto specular = prefilterSpecular(context, source, mips, settings.samples, progress);
+    auto specular = prefilterSpecular(context, source, mips, settings.specularMethod, resolvedSamples(settings), progress);
     auto lut = integrateBrdfLut(context, settings.lutSize, settings.lutSamples, progress);
     auto irradiance = computeIrradiance(context, source, settings.irradianceSize, progress);
     const float exposure = previewExposure(irradiance);

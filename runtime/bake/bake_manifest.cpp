@@ -1,5 +1,7 @@
 #include "bake_manifest.hpp"
 
+#include "kernels/specular_method.hpp"
+
 #include "kernels/sampled_methods.hpp"
 
 namespace iblkit::bake {
@@ -30,7 +32,8 @@ json settingsJson(const ManifestFacts& facts) {
     const auto& s = *facts.settings;
     return {{"size", facts.size},
             {"mips", facts.mips},
-            {"samples", s.samples},
+            {"method", s.specularMethod},
+            {"samples", resolvedSamples(s)},
             {"lut_size", s.lutSize},
             {"lut_samples", s.lutSamples},
             {"lut_format", s.lutFormat == LutFormat::Rg16Float ? "rg16f" : "rg32f"},
@@ -52,19 +55,34 @@ uint32_t samplesPerDispatch(uint32_t samples) {
     return chunk ? chunk : samples;
 }
 
+// How the prefilter method computed the mips: a sampled estimator's sample count and shader, or
+// the convolution's budget of terms per texel and its two shaders.
+json prefilterJson(const BakeSettings& settings) {
+    const uint32_t samples = resolvedSamples(settings);
+    const auto& method = settings.specularMethod;
+    if (kernels::isConvolutionMethod(method))
+        return {{"method", method},
+                {"terms_per_texel", samples},
+                {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterConvolution, method).options.source.generic_string()},
+                {"pyramid_shader", kernels::kernelFor(kernels::KernelRole::ClusterCube).options.source.generic_string()}};
+    const auto role = kernels::chunkSamplesFor(samples) ? kernels::KernelRole::PrefilterChunk : kernels::KernelRole::Prefilter;
+    return {{"method", method},
+            {"samples", samples},
+            {"samples_per_dispatch", samplesPerDispatch(samples)},
+            {"shader", kernels::kernelFor(role, method).options.source.generic_string()}};
+}
+
 json specularJson(const ManifestFacts& facts) {
     json roughness = json::array();
     for (uint32_t mip = 0; mip < facts.mips; ++mip) roughness.push_back(roughnessOfMip(mip, facts.mips));
-    return {{"file", "specular.ktx2"},
-            {"format", "R16G16B16A16_SFLOAT"},
-            {"size", facts.size},
-            {"mips", facts.mips},
-            {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
-            {"roughness", roughness},
-            {"samples", facts.settings->samples},
-            {"samples_per_dispatch", samplesPerDispatch(facts.settings->samples)},
-            {"shader", sampledShader(kernels::KernelRole::Prefilter, kernels::KernelRole::PrefilterChunk,
-                                     facts.settings->samples)}};
+    json specular = {{"file", "specular.ktx2"},
+                     {"format", "R16G16B16A16_SFLOAT"},
+                     {"size", facts.size},
+                     {"mips", facts.mips},
+                     {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
+                     {"roughness", roughness}};
+    specular.update(prefilterJson(*facts.settings));
+    return specular;
 }
 
 json irradianceJson(const ManifestFacts& facts) {

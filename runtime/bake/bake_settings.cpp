@@ -2,6 +2,11 @@
 
 #include "bake_error.hpp"
 
+#include "kernels/specular_method.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <bit>
 #include <string>
 
@@ -20,7 +25,20 @@ void requirePowerOfTwo(const char* name, uint32_t value) {
                         " is not a power of two (each mip must halve the one above it exactly)");
 }
 
+void requireSpecularMethod(const std::string& method) {
+    const auto methods = kernels::methodsOf(kernels::KernelRole::Prefilter);
+    auto all = methods;
+    for (const auto& convolution : kernels::methodsOf(kernels::KernelRole::PrefilterConvolution)) all.push_back(convolution);
+    if (std::find(all.begin(), all.end(), method) == all.end())
+        throw BakeError(fmt::format("--method {} is not a prefilter method (there are: {})", method, fmt::join(all, ", ")));
+}
+
 } // namespace
+
+uint32_t resolvedSamples(const BakeSettings& settings) {
+    if (settings.samples) return *settings.samples;
+    return kernels::isConvolutionMethod(settings.specularMethod) ? kDefaultConvolutionBudget : kDocumentSamples;
+}
 
 uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize) {
     if (inputCubeSize == 0) return settings.size.value_or(kDefaultSize);
@@ -46,7 +64,8 @@ void validateSettings(const BakeSettings& settings) {
         requireRange("--size", *settings.size, 1, kMaxCubeSize);
         requirePowerOfTwo("--size", *settings.size);
     }
-    requireRange("--samples", settings.samples, 1, kernels::kMaxSamples);
+    requireSpecularMethod(settings.specularMethod);
+    if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
     requireRange("--lut-samples", settings.lutSamples, 1, kernels::kMaxSamples);
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);

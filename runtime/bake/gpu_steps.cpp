@@ -1,5 +1,7 @@
 #include "gpu_steps.hpp"
 
+#include "kernels/specular_method.hpp"
+
 #include "kernels/kernel_steps.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "bake_settings.hpp"
@@ -74,19 +76,19 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
 }
 
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                uint32_t samples, BakeProgress& progress) {
+                                const std::string& method, uint32_t samples, BakeProgress& progress) {
     progress.begin("prefilter");
     const uint32_t size = source.desc().width;
     auto specular = makeCube(context, "Specular", size, mips);
     specular.copyMipFrom(context, source, 0);
-    kernels::PrefilterMethod method(context, "document", samples);
+    kernels::SpecularMethod prefilter(context, method, samples);
     const vulkan::Sampler linear(context, {});
     double work = 0, done = 0; // texels still to convolve, for the percentage
     for (uint32_t mip = 1; mip < mips; ++mip) work += std::pow(double(specular.mipWidth(mip)), 2);
     for (uint32_t mip = 1; mip < mips; ++mip) {
         progress.advance(done / work, fmt::format("mip {} of {}", mip, mips - 1));
-        method.run(source, linear, specular, mip, roughnessOfMip(mip, mips));
-        progress.addDeviceTime(method.takeTotals().deviceMilliseconds);
+        prefilter.run(source, linear, specular, mip, roughnessOfMip(mip, mips));
+        progress.addDeviceTime(prefilter.takeTotals().deviceMilliseconds);
         done += std::pow(double(specular.mipWidth(mip)), 2);
     }
     progress.end();

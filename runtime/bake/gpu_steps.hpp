@@ -17,10 +17,11 @@ namespace iblkit::bake {
 vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
                               BakeProgress& progress);
 
-// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by PrefilterSpecularCS
-// at roughnessOfMip(m, mips) with `samples` samples (SAMPLE_COUNT).
+// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by the prefilter method
+// `method` (kernels::SpecularMethod) at roughnessOfMip(m, mips) with `samples` samples (terms
+// per texel, for the convolution).
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                uint32_t samples, BakeProgress& progress);
+                                const std::string& method, uint32_t samples, BakeProgress& progress);
 
 // PrecomputedBrdfCS over size x size, stored as R32G32_SFLOAT (the host rounds to 16 bits).
 vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, uint32_t samples,

@@ -20,7 +20,8 @@ struct ConvolutionPlan {
 
 // The fine level resolves the lobe (its half-maximum width, about 2.58 α for GGX at N = V) with
 // at least kFineTexelsPerLobe texels; the top level is at most 7 levels above it; `refine`
-// spends about `budget` block terms per output texel: about 6 top² + π refine² (3 levels + 4);
+// spends about `budget` block terms per output texel: about 6 top² + π refine² (3 levels + 4),
+// and more where bright blocks open from farther away (the shader's Opens);
 // blocks across N's horizon open down to kHorizonTexels per face, scaled by the cube root of the
 // lobe's weight there. Throws std::invalid_argument for a roughness <= 0 or > 1, or a budget of
 // 0 or above kMaxConvolutionBudget.
@@ -29,7 +30,7 @@ inline constexpr double kHorizonTexels = 16;
 // The shader's walk takes one loop iteration per term, and llvmpipe ends a loop after 65535
 // iterations without a word. Measured on a 256² source, a texel at a face corner sums up to
 // 1.02 terms per unit of budget (33333 at 32768, 55329 at 65536, roughness 0.2): budgets above
-// 32768 are refused rather than risk a truncated sum.
+// 32768 are refused, and the shader stops opening blocks before the limit whatever the light.
 inline constexpr uint32_t kMaxConvolutionBudget = 32768;
 ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget);
 

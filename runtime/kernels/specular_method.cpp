@@ -4,18 +4,12 @@
 
 namespace iblkit::kernels {
 
-namespace {
-
-// Whether `method`'s prefilter is the convolution (ClusterCube + PrefilterConvolution) rather
-// than a sampled estimator (Prefilter, PrefilterChunk).
 bool isConvolutionMethod(const std::string& method) {
     for (const auto& kernel : kernelTable())
         if (kernel.method == method && kernel.role == KernelRole::PrefilterConvolution) return true;
     kernelFor(KernelRole::Prefilter, method); // throws for a method with neither
     return false;
 }
-
-} // namespace
 
 uint32_t maxSamplesOf(const std::string& method) {
     return isConvolutionMethod(method) ? kMaxConvolutionBudget : kMaxSamples;

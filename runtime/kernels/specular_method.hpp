@@ -8,6 +8,11 @@
 
 namespace iblkit::kernels {
 
+// Whether `method`'s prefilter is the convolution (ClusterCube + PrefilterConvolution) rather
+// than a sampled estimator (Prefilter, PrefilterChunk). Throws std::out_of_range for a method
+// with neither.
+bool isConvolutionMethod(const std::string& method);
+
 // The largest sample count (budget, for the convolution) `method`'s prefilter takes. Throws
 // std::out_of_range for a method with no prefilter kernel.
 uint32_t maxSamplesOf(const std::string& method);

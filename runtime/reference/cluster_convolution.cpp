@@ -11,6 +11,7 @@ namespace {
 template <typename T> using vec4 = glm::vec<4, T>;
 
 constexpr float kHorizonOpen = 2;
+constexpr uint32_t kOpenLimit = 65000;
 
 template <typename T>
 vec3<T> blockCentre(uint32_t face, uint32_t x, uint32_t y, uint32_t size) {
@@ -126,11 +127,26 @@ void nextBlock(Block& block, uint32_t topSize, uint32_t topLevel) {
     }
 }
 
+// The shader's MeanLuminance.
+template <typename T>
+T meanLuminance(const ClusterPyramid<T>& pyramid) {
+    T light = 0, solidAngle = 0;
+    for (uint32_t face = 0; face < 6; ++face) {
+        light += pyramid.centroid.back()[face].w;
+        solidAngle += pyramid.geometry.back()[face].w;
+    }
+    return light / solidAngle;
+}
+
 // The shader's Opens.
 template <typename T>
-bool opens(vec3<T> normal, const Block& block, uint32_t size, const ConvolutionTree& tree) {
+bool opens(const ClusterPyramid<T>& pyramid, vec3<T> normal, const Block& block, uint32_t size,
+           const ConvolutionTree& tree, T meanLight) {
     const T cosine = glm::dot(normal, blockCentre<T>(block.face, block.x, block.y, size));
-    const T reach = T(tree.refine) * T(2) / T(size);
+    const size_t i = pyramid.index(block.level, block.face, block.x, block.y);
+    const T brightness =
+        pyramid.centroid[block.level][i].w / std::max(pyramid.geometry[block.level][i].w * meanLight, T(1e-30));
+    const T reach = T(tree.refine) * T(2) / T(size) * std::pow(std::max(brightness, T(1)), T(1) / T(3));
     const bool nearN = T(2) - T(2) * cosine < reach * reach;
     const bool acrossHorizon = block.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
     return nearN || acrossHorizon;
@@ -141,9 +157,13 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
     vec3<T> radiance(0);
     T weight = 0;
     const uint32_t topSize = std::max(pyramid.size >> tree.topLevel, 1u);
+    const T meanLight = meanLuminance(pyramid);
+    const uint32_t openLimit = kOpenLimit - std::min(6 * topSize * topSize, kOpenLimit);
+    uint32_t terms = 0;
     Block block{0, 0, 0, tree.topLevel};
     while (block.face < 6) {
-        while (block.level > tree.fineLevel && opens(normal, block, std::max(pyramid.size >> block.level, 1u), tree)) {
+        while (block.level > tree.fineLevel && terms < openLimit &&
+               opens(pyramid, normal, block, std::max(pyramid.size >> block.level, 1u), tree, meanLight)) {
             block.x *= 2, block.y *= 2;
             --block.level;
         }
@@ -154,6 +174,7 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
         const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) / weighted.w : extent;
         radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness);
         weight += energy.w * BlockLobeWeight(normal, extent, roughness);
+        ++terms;
         nextBlock(block, topSize, tree.topLevel);
     }
     return radiance / weight;

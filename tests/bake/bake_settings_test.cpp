@@ -38,6 +38,16 @@ TEST(BakeSettings, InputCubeSetsTheSizeAndAConflictingSizeIsRefused) {
     EXPECT_EQ(resolvedSize(settings, 128), 128u);
 }
 
+TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
+    auto settings = settingsWithOutput();
+    EXPECT_EQ(settings.specularMethod, "convolution");
+    EXPECT_EQ(resolvedSamples(settings), kDefaultConvolutionBudget);
+    settings.specularMethod = "document";
+    EXPECT_EQ(resolvedSamples(settings), 1024u);
+    settings.samples = 64;
+    EXPECT_EQ(resolvedSamples(settings), 64u);
+}
+
 TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     const auto refused = [](auto change, const std::string& name) {
         auto settings = settingsWithOutput();
@@ -53,9 +63,14 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.size = 0; }, "--size");
     refused([](BakeSettings& s) { s.size = 32768; }, "--size");
     refused([](BakeSettings& s) { s.samples = 0; }, "--samples");
+    refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 32768)");
+    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, convolution)");
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
     auto settings = settingsWithOutput();
+    settings.specularMethod = "document";
+    settings.samples = 65536;
+    EXPECT_NO_THROW(validateSettings(settings)) << "past the convolution's limit, not the document's";
     settings.mips = 10; // a 256 cube has 9
     EXPECT_THROW(resolvedMips(settings, 256), BakeError);
 }

@@ -73,7 +73,10 @@ TEST_F(BakeCli, DefaultBakeWritesEveryOutputWithProgress) {
     EXPECT_EQ(manifest["specular"]["mips"], 6);
     EXPECT_EQ(manifest["brdf_lut"]["size"], 512);
     EXPECT_EQ(manifest["brdf_lut"]["format"], "R16G16_SFLOAT");
-    EXPECT_EQ(manifest["settings"]["samples"], 1024);
+    EXPECT_EQ(manifest["settings"]["method"], "convolution");
+    EXPECT_EQ(manifest["settings"]["samples"], 128);
+    EXPECT_EQ(manifest["specular"]["terms_per_texel"], 128);
+    EXPECT_EQ(manifest["specular"]["shader"], "hlsl/PrefilterConvolutionCS.hlsl");
 }
 
 TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
@@ -151,6 +154,8 @@ TEST_F(BakeCli, SizesOutOfRangeOrBeyondMemoryAreRefused) {
     expectFailure({"bake", "-o", at("out"), "--size", "16384", "--quiet"}, "memory");
     expectFailure({"bake", "-o", at("out"), "--lut-format", "rgba8"}, "--lut-format");
     expectFailure({"bake", "-o", at("out"), "--mips", "12", "--size", "64"}, "--mips 12");
+    expectFailure({"bake", "-o", at("out"), "--method", "nope"}, "--method nope is not a prefilter method");
+    expectFailure({"bake", "-o", at("out"), "--samples", "40000"}, "--samples 40000 is out of range (1 to 32768)");
 }
 
 TEST_F(BakeCli, AFolderThatIsNotABakeIsNeverReplaced) {
@@ -165,7 +170,7 @@ TEST_F(BakeCli, AFailedOrKilledBakeLeavesTheEarlierBakeAsItWas) {
     EXPECT_NE(iblkit(small({"bake", at("wide.hdr"), "-o", at("out")})).exitCode, 0);
     EXPECT_EQ(snapshot(scratch.path() / "out"), good);
     // Killed while the prefilter runs (a 256² bake with 4096 samples takes several seconds).
-    const auto killed = iblkit({"bake", "-o", at("out"), "--samples", "4096", "--quiet"}, 2.0);
+    const auto killed = iblkit({"bake", "-o", at("out"), "--method", "document", "--samples", "4096", "--quiet"}, 2.0);
     EXPECT_EQ(killed.exitCode, 128 + 9) << "the bake finished before it could be killed";
     EXPECT_EQ(snapshot(scratch.path() / "out"), good);
 }

@@ -56,7 +56,12 @@ void addBakeCommand(CLI::App& app) {
     command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the bake succeeds)")->required();
     command->add_option("--size", s.size, "Cube face size, a power of two (default 256)");
     command->add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
-    command->add_option("--samples", s.samples, "Prefilter samples per texel (default 1024)");
+    command->add_option("--method", s.specularMethod,
+                        "Prefilter method: convolution (default; an exact sum over the source's texels as a tree) "
+                        "or document (the documents' importance sampling)");
+    command->add_option("--samples", s.samples,
+                        "Prefilter samples per texel, or for the convolution its budget of terms per texel "
+                        "(default 1024 for document, 128 for convolution)");
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-samples", s.lutSamples, "BRDF LUT samples per texel (default 1024)");
     command->add_option("--lut-format", arguments->lutFormat, "rg16f (default) or rg32f")
