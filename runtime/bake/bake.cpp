@@ -78,7 +78,6 @@ BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image&
 
 } // namespace
 
-uint32_t builtInPanoramaWidth(uint32_t size) { return std::clamp(8 * size, 64u, 4096u); }
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     const auto started = Clock::now();
@@ -86,8 +85,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     BakeDirectory directory(settings.outputDir);
 
     progress.begin("load");
-    const auto input = loadEnvironment(settings.environment, settings.sanitize,
-                                       builtInPanoramaWidth(settings.size.value_or(kDefaultSize)));
+    const auto input = loadEnvironment(settings.environment, settings.sanitize);
     const uint32_t size = resolvedSize(settings, input.cubeSize);
     if (!std::has_single_bit(size))
         throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));

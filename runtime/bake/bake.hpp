@@ -29,8 +29,4 @@ struct BakeSummary {
 // Throws BakeError, image_io::ImageError, compiler::CompileError or vulkan::VulkanError.
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress);
 
-// The width of the built-in environment's panorama for a cube of `size`: two panorama texels
-// per cube texel across, so its small sun is resolved.
-uint32_t builtInPanoramaWidth(uint32_t size);
-
 } // namespace iblkit::bake

@@ -4,6 +4,8 @@
 
 #include "kernels/sampled_methods.hpp"
 
+#include <fmt/core.h>
+
 namespace iblkit::bake {
 
 using nlohmann::json;
@@ -20,7 +22,9 @@ json inputJson(const EnvironmentInput& input) {
     json files = json::array();
     for (const auto& file : input.files) files.push_back({{"path", file.path.string()}, {"sha256", file.sha256}});
     json result = {{"kind", inputKindName(input.kind)}, {"files", files}};
-    if (input.kind == InputKind::BuiltIn || input.kind == InputKind::Panorama)
+    if (input.kind == InputKind::BuiltIn)
+        result["rendered"] = fmt::format("SkyCubeCS straight into the cube, {}² evaluations per texel", kSkySupersample);
+    else if (input.kind == InputKind::Panorama)
         result["panorama"] = {input.panorama.width, input.panorama.height};
     else
         result["cube_size"] = input.cubeSize;

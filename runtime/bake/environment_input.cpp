@@ -1,7 +1,6 @@
 #include "environment_input.hpp"
 
 #include "bake_error.hpp"
-#include "default_environment.hpp"
 #include "file_names.hpp"
 #include "files.hpp"
 #include "image_error.hpp"
@@ -98,8 +97,8 @@ std::string_view inputKindName(InputKind kind) {
     return "?";
 }
 
-EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, bool sanitize, uint32_t builtInWidth) {
-    if (!path) return {InputKind::BuiltIn, {}, defaultEnvironmentPanorama(builtInWidth), 0, {}, 0};
+EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, bool sanitize) {
+    if (!path) return {InputKind::BuiltIn, {}, {}, 0, {}, 0};
     std::error_code error;
     if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
     if (fs::is_directory(*path, error)) return loadFaces(*path, sanitize);

@@ -36,6 +36,12 @@ uint32_t supersampleFor(uint32_t panoramaWidth, uint32_t size) {
     return std::clamp<uint32_t>((panoramaWidth + 4 * size - 1) / (4 * size), 1, 16);
 }
 
+void renderSky(const vulkan::VulkanContext& context, vulkan::Image& cube, BakeProgress& progress) {
+    auto kernel = makeKernel(context, KernelRole::SkyCube);
+    kernels::runSkyCube(kernel, cube, {kSkySupersample});
+    report(kernel, progress);
+}
+
 void convertPanorama(const vulkan::VulkanContext& context, const image_io::FloatImage& panorama, vulkan::Image& cube,
                      BakeProgress& progress) {
     vulkan::Image equirect(context, {"Equirect", &rgba32(), panorama.width, panorama.height, 1, 1, false, false});
@@ -63,7 +69,9 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
                               BakeProgress& progress) {
     progress.begin("source cube");
     auto cube = makeCube(context, "Source", size, vulkan::fullMipCount(size, size));
-    if (input.kind == InputKind::BuiltIn || input.kind == InputKind::Panorama)
+    if (input.kind == InputKind::BuiltIn)
+        renderSky(context, cube, progress);
+    else if (input.kind == InputKind::Panorama)
         convertPanorama(context, input.panorama, cube, progress);
     else
         uploadFaces(context, input.cubeTexels, cube);

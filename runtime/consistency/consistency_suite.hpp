@@ -82,6 +82,7 @@ Bounds lutBounds(uint32_t size);
 Bounds prefilterBounds();
 Bounds lutChunkBounds();
 Bounds prefilterChunkBounds();
+Bounds skyBounds();
 Bounds equirectBounds();
 Bounds downsampleBounds();
 Bounds shBounds();

@@ -4,6 +4,7 @@
 #include "gpu_cube_bake.hpp"
 #include "reference_bake.hpp"
 #include "reference_irradiance.hpp"
+#include "sky_environment.hpp"
 #include "suite_run.hpp"
 
 #include <fmt/core.h>
@@ -34,6 +35,14 @@ std::vector<double> rgbaWithAlphaOne(const std::vector<glm::dvec3>& texels) {
     std::vector<double> values;
     for (const auto& texel : texels) values.insert(values.end(), {texel.r, texel.g, texel.b, 1.0});
     return values;
+}
+
+void addSkyOutput(SuiteRun& run) {
+    const uint32_t size = run.options.cubeSize, supersample = run.options.supersample;
+    addOutput(run, {"SkyCubeCS", fmt::format("built-in environment → {}², {}² evaluations", size, supersample), skyBounds()},
+              {reference::skyCube<float>(size, supersample), reference::skyCube<double>(size, supersample)},
+              [&](const PathProgram& program) { return gpuSkyCube(run.vulkan, program, size, supersample); },
+              [&](const OpenGlForm& form) { return glSkyCube(run.gl, form, size, supersample); });
 }
 
 void addEquirectOutput(SuiteRun& run) {
@@ -98,6 +107,7 @@ void addIrradianceOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
 } // namespace
 
 void addCubeOutputs(SuiteRun& run) {
+    addSkyOutput(run);
     addEquirectOutput(run);
     const uint32_t size = run.options.mipChainSize;
     const auto cube = testCube(size, uint32_t(std::bit_width(size)));

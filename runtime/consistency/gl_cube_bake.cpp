@@ -9,6 +9,15 @@ size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
 
 } // namespace
 
+std::vector<float> glSkyCube(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size, uint32_t supersample) {
+    const auto program = glpath::program(context, form);
+    const auto cube = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
+    glpath::bindLayeredImage(context, form, "Cube", cube, 0);
+    const auto parameters = glpath::bindParameters(context, form, kernels::SkyCubeParameters{supersample}.members());
+    glpath::dispatch(context, program, form, {size, size, 6});
+    return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
+}
+
 std::vector<float> glEquirectToCube(const opengl::EglContext& context, const OpenGlForm& form, const Panorama& panorama,
                                     uint32_t size, uint32_t supersample) {
     const auto program = glpath::program(context, form);

@@ -11,6 +11,7 @@ namespace iblkit::consistency {
 // The same runs as gpu_cube_bake's, as OpenGL 4.5 compute shaders: a cube is a
 // GL_TEXTURE_2D_ARRAY of 6 layers (what the GLSL form's sampler2DArray and image2DArray take),
 // a TextureCube a GL_TEXTURE_CUBE_MAP.
+std::vector<float> glSkyCube(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size, uint32_t supersample);
 std::vector<float> glEquirectToCube(const opengl::EglContext& context, const OpenGlForm& form, const Panorama& panorama,
                                     uint32_t size, uint32_t supersample);
 std::vector<float> glDownsampleChain(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube);

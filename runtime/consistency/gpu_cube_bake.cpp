@@ -13,6 +13,14 @@ vulkan::Image uploadCube(const vulkan::VulkanContext& context, const std::string
 
 } // namespace
 
+std::vector<float> gpuSkyCube(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size,
+                              uint32_t supersample) {
+    kernels::Kernel kernel(context, program);
+    vulkan::Image cube(context, {"Cube", &rgba32(), size, size, 6, 1, true, true});
+    kernels::runSkyCube(kernel, cube, {supersample});
+    return cube.download(context);
+}
+
 std::vector<float> gpuEquirectToCube(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const Panorama& panorama, uint32_t size, uint32_t supersample) {
     kernels::Kernel kernel(context, program);

@@ -12,6 +12,9 @@ namespace iblkit::consistency {
 // The kit's cube kernels on Vulkan, each through its kernels::run* step; cube results are RGBA
 // per texel, ordered face, row, column (mip by mip for the chain).
 
+// SkyCube: the built-in environment onto a size x size cube.
+std::vector<float> gpuSkyCube(const vulkan::VulkanContext& context, const PathProgram& program, uint32_t size,
+                              uint32_t supersample);
 // EquirectToCube: the panorama onto mip 0 of a size x size cube.
 std::vector<float> gpuEquirectToCube(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const Panorama& panorama, uint32_t size, uint32_t supersample);

@@ -30,6 +30,8 @@ void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
 // which threads. The kernel may come from any form of its shader (the bake's, or a
 // consistency path's); every command runs its GPU steps through these.
 
+// SkyCube: the built-in environment into mip 0 of a cube.
+void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SkyCubeParameters& parameters);
 // EquirectToCube: a 2D panorama into mip 0 of a cube.
 void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const EquirectToCubeParameters& parameters);
 

@@ -15,6 +15,7 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"prefilter-chunk", KernelRole::PrefilterChunk},
     {"cluster-cube", KernelRole::ClusterCube},
     {"prefilter-convolution", KernelRole::PrefilterConvolution},
+    {"sky-cube", KernelRole::SkyCube},
     {"equirect-to-cube", KernelRole::EquirectToCube},
     {"downsample-cube", KernelRole::DownsampleCube},
     {"sh-project", KernelRole::ShProject},

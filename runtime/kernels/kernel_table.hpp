@@ -20,6 +20,7 @@ enum class KernelRole {
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
     ClusterCube,    // Source -> Energy + Centroid (one pyramid level); ClusterParameters
     PrefilterConvolution, // Energy + Centroid -> Prefiltered (one mip); PrefilterConvolutionParameters
+    SkyCube,        // the built-in environment into mip 0 of a cube; SkyCubeParameters
     EquirectToCube,
     DownsampleCube,
     ShProject,

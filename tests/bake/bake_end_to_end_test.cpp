@@ -2,7 +2,6 @@
 // reference, a white-furnace bake, and the conversion's orientation against an analytic sky.
 #include "bake.hpp"
 #include "converged_prefilter.hpp"
-#include "default_environment.hpp"
 #include "float_image.hpp"
 #include "files.hpp"
 #include "ktx2.hpp"

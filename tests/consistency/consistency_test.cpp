@@ -50,11 +50,11 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 14u * 6u + 5u)
-        << "LUT 512² and 32², four prefilter roughnesses, the chunked LUT and prefilter, the panorama, the mip chain, the "
+    ASSERT_EQ(rows.size(), 15u * 6u + 5u)
+        << "LUT 512² and 32², four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution: the float reference and five paths "
            "each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 15)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 16)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -121,7 +121,7 @@ TEST_F(BrokenVariant, SwappedCubeFaceFailsThePrefilter) {
 TEST_F(BrokenVariant, SwappedCubeFaceFailsEveryKernelOfCubeFxh) {
     const auto rows = run(broken("Common/Cube.fxh", "direction = float3( uv.x, 1.f, -uv.y );", "direction = float3( uv.x, -1.f, uv.y );"));
     for (const char* kernel : {"PrefilterSpecularChunkCS", "EquirectToCubeCS", "ShProjectCS", "IrradianceCubeCS",
-                               "ClusterCubeCS", "PrefilterConvolutionCS"})
+                               "ClusterCubeCS", "PrefilterConvolutionCS", "SkyCubeCS"})
         expectEveryPathFails(rows, kernel);
 }
 
