@@ -78,7 +78,6 @@ BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image&
 
 } // namespace
 
-
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     const auto started = Clock::now();
     validateSettings(settings);

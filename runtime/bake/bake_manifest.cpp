@@ -48,10 +48,11 @@ json settingsJson(const ManifestFacts& facts) {
             {"clamp_half", s.clampHalf}};
 }
 
-// The document's shader, or its chunked twin past the loop limit (see docs/kernels.md).
-std::string sampledShader(kernels::KernelRole whole, kernels::KernelRole chunked, uint32_t samples) {
+// A sampled method's shader, or its chunked twin past the loop limit (see docs/kernels.md).
+std::string sampledShader(kernels::KernelRole whole, kernels::KernelRole chunked, const std::string& method,
+                          uint32_t samples) {
     const auto role = kernels::chunkSamplesFor(samples) ? chunked : whole;
-    return kernels::kernelFor(role, "document").options.source.generic_string();
+    return kernels::kernelFor(role, method).options.source.generic_string();
 }
 
 uint32_t samplesPerDispatch(uint32_t samples) {
@@ -69,11 +70,10 @@ json prefilterJson(const BakeSettings& settings) {
                 {"terms_per_texel", samples},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterConvolution, method).options.source.generic_string()},
                 {"pyramid_shader", kernels::kernelFor(kernels::KernelRole::ClusterCube).options.source.generic_string()}};
-    const auto role = kernels::chunkSamplesFor(samples) ? kernels::KernelRole::PrefilterChunk : kernels::KernelRole::Prefilter;
     return {{"method", method},
             {"samples", samples},
             {"samples_per_dispatch", samplesPerDispatch(samples)},
-            {"shader", kernels::kernelFor(role, method).options.source.generic_string()}};
+            {"shader", sampledShader(kernels::KernelRole::Prefilter, kernels::KernelRole::PrefilterChunk, method, samples)}};
 }
 
 json specularJson(const ManifestFacts& facts) {
@@ -130,7 +130,7 @@ json bakeManifest(const ManifestFacts& facts) {
               {"samples", s.lutSamples},
               {"samples_per_dispatch", samplesPerDispatch(s.lutSamples)},
               {"axes", "u = N.V, v = roughness, at texel centres; texel = (scale, bias) of F0"},
-              {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, s.lutSamples)}}},
+              {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, "document", s.lutSamples)}}},
             {"irradiance", irradianceJson(facts)},
             {"half_range", {{"policy", s.clampHalf ? "clamp to 65504" : "refuse"}, {"clamped_values", facts.clampedValues}}},
             {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};

@@ -26,9 +26,7 @@ void requirePowerOfTwo(const char* name, uint32_t value) {
 }
 
 void requireSpecularMethod(const std::string& method) {
-    const auto methods = kernels::methodsOf(kernels::KernelRole::Prefilter);
-    auto all = methods;
-    for (const auto& convolution : kernels::methodsOf(kernels::KernelRole::PrefilterConvolution)) all.push_back(convolution);
+    const auto all = kernels::specularMethods();
     if (std::find(all.begin(), all.end(), method) == all.end())
         throw BakeError(fmt::format("--method {} is not a prefilter method (there are: {})", method, fmt::join(all, ", ")));
 }

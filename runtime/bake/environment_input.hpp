@@ -18,14 +18,14 @@ struct InputFile {
     std::string sha256;
 };
 
-// An environment as read from disk, before any GPU work: either an equirectangular panorama
-// or mip 0 of a cube (RGBA floats ordered face +X..-Z, row, column).
 // The built-in environment (hlsl/SkyCubeCS.hlsl) is rendered on the device straight into the
 // cube, each texel the mean of kSkySupersample² evaluations over its footprint: the sun's disc,
 // about 11 texels across at 256², keeps the cube's energy within 1.5e-5 of 16² evaluations
 // (1.9e-3 at 64², where the disc is under 3 texels; tests/reference/sky_environment_test.cpp).
 inline constexpr uint32_t kSkySupersample = 4;
 
+// An environment as read from disk, before any GPU work: either an equirectangular panorama
+// or mip 0 of a cube (RGBA floats ordered face +X..-Z, row, column); nothing for the built-in one.
 struct EnvironmentInput {
     InputKind kind = InputKind::BuiltIn;
     std::vector<InputFile> files;
@@ -36,8 +36,7 @@ struct EnvironmentInput {
 };
 
 // ENV: an .hdr or .exr panorama (2:1), a folder of six faces (px, nx, py, ny, pz, nz or posx ...
-// negz, each .hdr or .exr), or a .ktx2 / .dds cube; empty: the built-in environment at
-// `builtInWidth`. NaN/Inf texels are refused unless `sanitize`. Throws BakeError or
+// negz, each .hdr or .exr), or a .ktx2 / .dds cube; empty: the built-in environment. NaN/Inf texels are refused unless `sanitize`. Throws BakeError or
 // image_io::ImageError, one line each.
 EnvironmentInput loadEnvironment(const std::optional<std::filesystem::path>& path, bool sanitize);
 

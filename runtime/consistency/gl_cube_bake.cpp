@@ -13,7 +13,7 @@ std::vector<float> glSkyCube(const opengl::EglContext& context, const OpenGlForm
     const auto program = glpath::program(context, form);
     const auto cube = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
     glpath::bindLayeredImage(context, form, "Cube", cube, 0);
-    const auto parameters = glpath::bindParameters(context, form, kernels::SkyCubeParameters{supersample}.members());
+    const auto parameters = glpath::bindParameters(context, form, kernels::SupersampleParameters{supersample}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
     return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
 }
@@ -25,7 +25,7 @@ std::vector<float> glEquirectToCube(const opengl::EglContext& context, const Ope
     glpath::bindTexture(context, form, "Equirect", equirect);
     const auto cube = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
     glpath::bindLayeredImage(context, form, "Cube", cube, 0);
-    const auto parameters = glpath::bindParameters(context, form, kernels::EquirectToCubeParameters{supersample}.members());
+    const auto parameters = glpath::bindParameters(context, form, kernels::SupersampleParameters{supersample}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
     return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
 }

@@ -27,8 +27,7 @@ NamedValues BrdfChunkParameters::members() const {
             {"Resolve", {resolve ? 1.0 : 0.0}}};
 }
 
-NamedValues SkyCubeParameters::members() const { return {{"Supersample", {double(supersample)}}}; }
-NamedValues EquirectToCubeParameters::members() const { return {{"Supersample", {double(supersample)}}}; }
+NamedValues SupersampleParameters::members() const { return {{"Supersample", {double(supersample)}}}; }
 
 NamedValues SourceMipParameters::members() const { return {{"SourceMip", {double(sourceMip)}}}; }
 

@@ -44,13 +44,9 @@ struct BrdfChunkParameters {
     NamedValues members() const;
 };
 
-struct SkyCubeParameters {
-    uint32_t supersample = 1; // evaluations per cube texel along each axis
-    NamedValues members() const;
-};
-
-struct EquirectToCubeParameters {
-    uint32_t supersample = 1; // reads per cube texel along each axis
+// SkyCube and EquirectToCube: evaluations (reads) per cube texel along each axis.
+struct SupersampleParameters {
+    uint32_t supersample = 1;
     NamedValues members() const;
 };
 

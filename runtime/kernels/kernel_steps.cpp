@@ -4,13 +4,13 @@
 
 namespace iblkit::kernels {
 
-void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SkyCubeParameters& parameters) {
+void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SupersampleParameters& parameters) {
     kernel.program().bind("Cube", cube, 0);
     kernel.setParameters(parameters.members());
     kernel.run({cube.desc().width, cube.desc().width, 6});
 }
 
-void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const EquirectToCubeParameters& parameters) {
+void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const SupersampleParameters& parameters) {
     kernel.program().bind("Equirect", equirect);
     kernel.program().bind("Cube", cube, 0);
     kernel.setParameters(parameters.members());

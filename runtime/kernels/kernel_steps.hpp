@@ -31,9 +31,9 @@ void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
 // consistency path's); every command runs its GPU steps through these.
 
 // SkyCube: the built-in environment into mip 0 of a cube.
-void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SkyCubeParameters& parameters);
+void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SupersampleParameters& parameters);
 // EquirectToCube: a 2D panorama into mip 0 of a cube.
-void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const EquirectToCubeParameters& parameters);
+void runEquirectToCube(Kernel& kernel, vulkan::Image& equirect, vulkan::Image& cube, const SupersampleParameters& parameters);
 
 // DownsampleCube: mips 1.. of a cube, each the 2x2 means of the one above.
 void runDownsampleChain(Kernel& kernel, vulkan::Image& cube);

@@ -18,10 +18,10 @@ enum class KernelRole {
     BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
     Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
-    ClusterCube,    // Source -> Energy + Centroid (one pyramid level); ClusterParameters
-    PrefilterConvolution, // Energy + Centroid -> Prefiltered (one mip); PrefilterConvolutionParameters
-    SkyCube,        // the built-in environment into mip 0 of a cube; SkyCubeParameters
-    EquirectToCube,
+    ClusterCube,    // Source -> Energy + Centroid + Geometry (one pyramid level); ClusterParameters
+    PrefilterConvolution, // Energy + Centroid + Geometry -> Prefiltered (one mip); PrefilterConvolutionParameters
+    SkyCube,        // the built-in environment into mip 0 of a cube; SupersampleParameters
+    EquirectToCube, // SupersampleParameters
     DownsampleCube,
     ShProject,
     IrradianceCube,

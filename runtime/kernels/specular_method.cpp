@@ -11,6 +11,12 @@ bool isConvolutionMethod(const std::string& method) {
     return false;
 }
 
+std::vector<std::string> specularMethods() {
+    auto methods = methodsOf(KernelRole::Prefilter);
+    for (const auto& method : methodsOf(KernelRole::PrefilterConvolution)) methods.push_back(method);
+    return methods;
+}
+
 uint32_t maxSamplesOf(const std::string& method) {
     return isConvolutionMethod(method) ? kMaxConvolutionBudget : kMaxSamples;
 }

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace iblkit::kernels {
 
@@ -12,6 +13,9 @@ namespace iblkit::kernels {
 // than a sampled estimator (Prefilter, PrefilterChunk). Throws std::out_of_range for a method
 // with neither.
 bool isConvolutionMethod(const std::string& method);
+
+// Every method with a prefilter kernel: the sampled ones, then the convolutions, in table order.
+std::vector<std::string> specularMethods();
 
 // The largest sample count (budget, for the convolution) `method`'s prefilter takes. Throws
 // std::out_of_range for a method with no prefilter kernel.
