@@ -95,7 +95,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
 
     auto source = buildSourceCube(context, input, size, progress);
     auto specular = prefilterSpecular(context, source, mips, settings.specularMethod, resolvedSamples(settings), progress);
-    auto lut = integrateBrdfLut(context, settings.lutSize, settings.lutSamples, progress);
+    auto lut = integrateBrdfLut(context, settings.lutSize, settings.lutMethod, resolvedLutSamples(settings), progress);
     auto irradiance = computeIrradiance(context, source, settings.irradianceSize, progress);
     const float exposure = previewExposure(irradiance);
     const auto preview = renderPreview(context, specular, irradiance.cube, lut, exposure, progress);

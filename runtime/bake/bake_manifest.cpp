@@ -39,7 +39,8 @@ json settingsJson(const ManifestFacts& facts) {
             {"method", s.specularMethod},
             {"samples", resolvedSamples(s)},
             {"lut_size", s.lutSize},
-            {"lut_samples", s.lutSamples},
+            {"lut_method", s.lutMethod},
+            {"lut_samples", resolvedLutSamples(s)},
             {"lut_format", s.lutFormat == LutFormat::Rg16Float ? "rg16f" : "rg32f"},
             {"irradiance_size", s.irradianceSize},
             {"dds", s.dds},
@@ -74,6 +75,30 @@ json prefilterJson(const BakeSettings& settings) {
             {"samples", samples},
             {"samples_per_dispatch", samplesPerDispatch(samples)},
             {"shader", sampledShader(kernels::KernelRole::Prefilter, kernels::KernelRole::PrefilterChunk, method, samples)}};
+}
+
+// How the LUT method computed the LUT: the estimator's sample count or the quadrature's nodes per
+// panel, and the shader.
+json lutMethodJson(const BakeSettings& settings) {
+    const uint32_t samples = resolvedLutSamples(settings);
+    const auto& method = settings.lutMethod;
+    if (method == kernels::kQuadratureLutMethod)
+        return {{"method", method},
+                {"nodes_per_panel", samples},
+                {"shader", kernels::kernelFor(kernels::KernelRole::BrdfLut, method).options.source.generic_string()}};
+    return {{"method", method},
+            {"samples", samples},
+            {"samples_per_dispatch", samplesPerDispatch(samples)},
+            {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, method, samples)}};
+}
+
+json lutJson(const BakeSettings& s) {
+    json lut = {{"file", "brdf_lut.ktx2"},
+                {"format", s.lutFormat == LutFormat::Rg16Float ? "R16G16_SFLOAT" : "R32G32_SFLOAT"},
+                {"size", s.lutSize},
+                {"axes", "u = N.V, v = roughness, at texel centres; texel = (scale, bias) of F0"}};
+    lut.update(lutMethodJson(s));
+    return lut;
 }
 
 json specularJson(const ManifestFacts& facts) {
@@ -123,14 +148,7 @@ json bakeManifest(const ManifestFacts& facts) {
             {"input", inputJson(*facts.input)},
             {"settings", settingsJson(facts)},
             {"specular", specularJson(facts)},
-            {"brdf_lut",
-             {{"file", "brdf_lut.ktx2"},
-              {"format", s.lutFormat == LutFormat::Rg16Float ? "R16G16_SFLOAT" : "R32G32_SFLOAT"},
-              {"size", s.lutSize},
-              {"samples", s.lutSamples},
-              {"samples_per_dispatch", samplesPerDispatch(s.lutSamples)},
-              {"axes", "u = N.V, v = roughness, at texel centres; texel = (scale, bias) of F0"},
-              {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, "document", s.lutSamples)}}},
+            {"brdf_lut", lutJson(s)},
             {"irradiance", irradianceJson(facts)},
             {"half_range", {{"policy", s.clampHalf ? "clamp to 65504" : "refuse"}, {"clamped_values", facts.clampedValues}}},
             {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};

@@ -31,7 +31,18 @@ void requireSpecularMethod(const std::string& method) {
         throw BakeError(fmt::format("--method {} is not a prefilter method (there are: {})", method, fmt::join(all, ", ")));
 }
 
+void requireLutMethod(const std::string& method) {
+    const auto all = kernels::lutMethods();
+    if (std::find(all.begin(), all.end(), method) == all.end())
+        throw BakeError(fmt::format("--lut-method {} is not a LUT method (there are: {})", method, fmt::join(all, ", ")));
+}
+
 } // namespace
+
+uint32_t resolvedLutSamples(const BakeSettings& settings) {
+    if (settings.lutSamples) return *settings.lutSamples;
+    return settings.lutMethod == kernels::kQuadratureLutMethod ? kernels::kDefaultQuadratureNodes : kDocumentSamples;
+}
 
 uint32_t resolvedSamples(const BakeSettings& settings) {
     if (settings.samples) return *settings.samples;
@@ -64,7 +75,8 @@ void validateSettings(const BakeSettings& settings) {
     }
     requireSpecularMethod(settings.specularMethod);
     if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
-    requireRange("--lut-samples", settings.lutSamples, 1, kernels::kMaxSamples);
+    requireLutMethod(settings.lutMethod);
+    if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, 1, kernels::maxLutSamplesOf(settings.lutMethod));
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
     if (settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "kernels/lut_methods.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "vulkan_context.hpp"
 
@@ -19,6 +20,10 @@ enum class LutFormat { Rg16Float, Rg32Float };
 inline constexpr const char* kDefaultSpecularMethod = "convolution";
 inline constexpr uint32_t kDefaultConvolutionBudget = 128;
 inline constexpr uint32_t kDocumentSamples = 1024; // the documents' SAMPLE_COUNT
+// The LUT method the bake runs unless told otherwise: the quadrature is within 6e-6 of the
+// converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in a fifth
+// of its time (docs/bench.md).
+inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureLutMethod;
 
 struct BakeSettings {
     std::optional<std::filesystem::path> environment; // empty: the built-in environment
@@ -28,7 +33,8 @@ struct BakeSettings {
     std::string specularMethod = kDefaultSpecularMethod; // a prefilter method of the kernel table
     std::optional<uint32_t> samples; // samples (budget of terms, for the convolution); default by method
     uint32_t lutSize = 512;
-    uint32_t lutSamples = 1024;
+    std::string lutMethod = kDefaultLutMethod; // a LUT method of the kernel table
+    std::optional<uint32_t> lutSamples; // samples (nodes per panel, for the quadrature); default by method
     LutFormat lutFormat = LutFormat::Rg16Float;
     uint32_t irradianceSize = 32;
     bool dds = false;
@@ -52,6 +58,8 @@ uint32_t resolvedMips(const BakeSettings& settings, uint32_t size);
 // The prefilter's sample count (budget of terms, for the convolution): the setting, or the
 // method's default.
 uint32_t resolvedSamples(const BakeSettings& settings);
+// The LUT method's count: the setting, or the method's default.
+uint32_t resolvedLutSamples(const BakeSettings& settings);
 // Throws BakeError naming the first setting out of range.
 void validateSettings(const BakeSettings& settings);
 // roughness = mip / (mips - 1), as in the documents; mip 0 is the mirror (roughness 0).

@@ -103,13 +103,13 @@ vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Im
     return specular;
 }
 
-vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, uint32_t samples,
+vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, const std::string& method, uint32_t samples,
                                BakeProgress& progress) {
     progress.begin("brdf lut");
-    kernels::BrdfLutMethod method(context, "document", samples);
+    kernels::BrdfLutMethod integrator(context, method, samples);
     vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
-    method.run(lut);
-    progress.addDeviceTime(method.takeTotals().deviceMilliseconds);
+    integrator.run(lut);
+    progress.addDeviceTime(integrator.takeTotals().deviceMilliseconds);
     progress.end();
     return lut;
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace iblkit::bake {
@@ -24,7 +25,7 @@ vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Im
                                 const std::string& method, uint32_t samples, BakeProgress& progress);
 
 // PrecomputedBrdfCS over size x size, stored as R32G32_SFLOAT (the host rounds to 16 bits).
-vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, uint32_t samples,
+vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, const std::string& method, uint32_t samples,
                                BakeProgress& progress);
 
 struct Irradiance {

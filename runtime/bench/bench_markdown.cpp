@@ -83,11 +83,12 @@ std::string targetTable(const BenchRun& run, const std::vector<std::string>& env
 }
 
 std::string lutTable(const BenchRun& run) {
-    std::string text = "| method | samples | device s | wall s | max abs error | RMS abs error |\n|---|---:|---:|---:|---:|---:|\n";
+    std::string text = "| method | samples (nodes per panel) | device s | wall s | max abs error | RMS abs error | RG16F: "
+                       "furthest texel, half steps |\n|---|---:|---:|---:|---:|---:|---:|\n";
     for (const auto* result : select(run, BenchOutput::Lut, {}))
-        text += fmt::format("| {} | {} | {} | {} | {:.2e} | {:.2e} |\n", result->method, result->samples,
+        text += fmt::format("| {} | {} | {} | {} | {:.2e} | {:.2e} | {} |\n", result->method, result->samples,
                             seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds), result->errorMax,
-                            result->errorRms);
+                            result->errorRms, result->halfSteps);
     return text;
 }
 
@@ -127,7 +128,9 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
             "error is the relative error of luminance, RMS and max per mip. A configuration's error is its worst mip's. "
             "The estimators read the source through bilinear filtering where the reference takes each texel as "
             "constant: a floor of about 8e-4 relative on a smooth 64² cube (tests/reference), far below the 1 % target.\n"
-            "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error.\n"
+            "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error. For the "
+            "quadrature method the count is its Gauss-Legendre nodes per panel. The RG16F column rounds both to half "
+            "floats: 0 or 1 steps apart is the target (the converged value's nearest half, or its neighbour).\n"
             "- Irradiance: every texel against the exact sum over the source cube; relative error of luminance.\n\n";
     text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
     text += "### Time to reach the targets\n\n" + targetTable(run, environments) + "\n";

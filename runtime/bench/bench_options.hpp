@@ -18,6 +18,7 @@ struct BenchOptions {
     std::vector<std::string> environments{"sky"}; // see bench_environments.hpp
     std::vector<std::string> methods;             // prefilter and LUT methods; empty: every one in the table
     std::vector<uint32_t> samples{16, 64, 256, 1024, 4096, 16384, 65536};
+    std::vector<uint32_t> quadratureNodes{3, 4, 5, 6, 7, 8}; // the LUT quadrature's counts, nodes per panel
     uint32_t size = 256;          // source cube face; specular mips down to 8x8, as the bake makes them
     uint32_t lutSize = 512;
     uint32_t irradianceSize = 32;
@@ -46,13 +47,14 @@ struct BenchResult {
     BenchOutput output;
     std::string environment;
     std::string method;
-    uint32_t samples = 0;
+    uint32_t samples = 0; // samples, terms per texel (convolution) or nodes per panel (LUT quadrature)
     uint32_t chunkSamples = 0; // samples per dispatch when split under the loop limit, else 0
     double deviceMilliseconds = 0; // median over the repeats
     double wallMilliseconds = 0;
     uint32_t repeat = 0;
     double errorRms = 0, errorMax = 0;
     std::vector<MipError> mips; // specular only
+    uint32_t halfSteps = 0; // LUT only: the furthest texel, rounded to half floats, in half steps from the converged value's nearest half
 };
 
 struct BenchRun {

@@ -35,7 +35,7 @@ nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
                            {"method", result.method}, {"samples", result.samples},
                            {"chunk_samples", result.chunkSamples}, {"device_ms", result.deviceMilliseconds},
                            {"wall_ms", result.wallMilliseconds}, {"repeat", result.repeat},
-                           {"error_rms", number(result.errorRms)}, {"error_max", number(result.errorMax)},
+                           {"error_rms", number(result.errorRms)}, {"error_max", number(result.errorMax)}, {"half_steps", result.halfSteps},
                            {"mips", mips}});
     }
     return {{"machine", run.machine}, {"device", run.device}, {"date", run.date}, {"command", command},

@@ -3,6 +3,7 @@
 #include "bench_environments.hpp"
 #include "bench_error.hpp"
 #include "gpu_steps.hpp"
+#include "kernels/lut_methods.hpp"
 #include "kernels/specular_method.hpp"
 #include "measurements.hpp"
 
@@ -65,6 +66,11 @@ std::vector<uint32_t> countsBeyond(const std::vector<uint32_t>& samples, const s
     return beyond;
 }
 
+// The counts a LUT method is measured at: the quadrature's nodes per panel, or the sample counts.
+const std::vector<uint32_t>& lutCounts(const BenchOptions& options, const std::string& method) {
+    return method == kernels::kQuadratureLutMethod ? options.quadratureNodes : options.samples;
+}
+
 // Each output's methods: every one the table has for it, or those asked for; a method asked for
 // that has no kernel for any output the bench measures is refused before any work.
 OutputMethods outputMethods(const BenchOptions& options) {
@@ -72,6 +78,7 @@ OutputMethods outputMethods(const BenchOptions& options) {
     const bool chunked = std::any_of(options.samples.begin(), options.samples.end(),
                                      [](uint32_t samples) { return kernels::chunkSamplesFor(samples) != 0; });
     auto lut = methodsWith(KernelRole::BrdfLut, KernelRole::BrdfLutChunk, chunked);
+    if (chunked) lut.push_back(kernels::kQuadratureLutMethod); // measured at its own counts, never chunked
     auto specular = methodsWith(KernelRole::Prefilter, KernelRole::PrefilterChunk, chunked);
     for (const auto& method : kernels::methodsOf(KernelRole::PrefilterConvolution)) specular.push_back(method);
     OutputMethods chosen;
@@ -108,6 +115,10 @@ OutputMethods validate(const BenchOptions& options) {
     if (options.size < 16 || options.size > 4096 || (options.size & (options.size - 1)))
         throw BenchError(fmt::format("the cube size must be a power of two from 16 to 4096, not {}", options.size));
     if (options.lutSize == 0 || options.lutSize > 4096) throw BenchError("the LUT size must be from 1 to 4096");
+    for (const uint32_t nodes : options.quadratureNodes)
+        if (nodes == 0 || nodes > kernels::kMaxQuadratureNodes)
+            throw BenchError(fmt::format("the LUT quadrature takes 1 to {} nodes per panel, not {}",
+                                         kernels::kMaxQuadratureNodes, nodes));
     if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
     if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
     if (options.irradianceSize == 0 || options.irradianceSize > 1024)
@@ -180,7 +191,7 @@ BenchRun runBench(const BenchOptions& options) {
         if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
         LutBench lut(context, options, cache);
         for (const auto& method : methods.lut)
-            for (const uint32_t samples : options.samples) {
+            for (const uint32_t samples : lutCounts(options, method)) {
                 run.results.push_back(lut.measure(method, samples));
                 logResult(options, run.results.back());
             }

@@ -4,6 +4,7 @@
 #include "kernels/sampled_methods.hpp"
 
 #include <fmt/core.h>
+#include <glm/gtc/packing.hpp>
 
 #include <cmath>
 
@@ -28,9 +29,15 @@ BenchResult LutBench::measure(const std::string& method, uint32_t samples) {
     });
     const auto values = lut.download(context_);
     ErrorSummary errors;
-    for (size_t i = 0; i < values.size(); ++i) errors.add(std::abs(double(values[i]) - reference_[i]));
+    uint32_t halfSteps = 0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        errors.add(std::abs(double(values[i]) - reference_[i]));
+        // Positive halves order as their bits do: the bits' difference counts the steps between them.
+        const int steps = std::abs(int(glm::packHalf1x16(values[i])) - int(glm::packHalf1x16(float(reference_[i]))));
+        halfSteps = std::max(halfSteps, uint32_t(steps));
+    }
     return {BenchOutput::Lut, {}, method, samples, integrator.chunkSamples(), timing.deviceMilliseconds,
-            timing.wallMilliseconds, options_.repeat, errors.rms(), errors.max(), {}};
+            timing.wallMilliseconds, options_.repeat, errors.rms(), errors.max(), {}, halfSteps};
 }
 
 } // namespace iblkit::bench

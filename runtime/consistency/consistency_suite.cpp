@@ -1,6 +1,7 @@
 #include "consistency_suite.hpp"
 
 #include "kernels/kernel_table.hpp"
+#include "kernels/lut_methods.hpp"
 #include "shader_manifest.hpp"
 #include "suite_run.hpp"
 
@@ -22,6 +23,8 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
     for (const auto& kernel : kernels::kernelTable()) {
         auto shader = compiler::manifestShaderOptions(manifest, kernel.name);
         if (isSampled(kernel.role)) shader.defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
+        if (kernel.method == kernels::kQuadratureLutMethod)
+            shader.defines["SAMPLE_COUNT"] = std::to_string(kernels::kDefaultQuadratureNodes);
         if (kernel.role == kernels::KernelRole::BrdfLut) shader.imageFormats["Precomputed"] = "rg32f";
         if (kernel.role == kernels::KernelRole::BrdfLutChunk)
             shader.imageFormats = {{"Precomputed", "rg32f"}, {"Accumulated", "rg32f"}};
@@ -36,6 +39,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     const opengl::EglContext gl;
     SuiteRun run(context, gl, options);
     addSampledOutputs(run);
+    addQuadratureLutOutput(run);
     addChunkedOutputs(run);
     addCubeOutputs(run);
     addConvolutionOutputs(run);

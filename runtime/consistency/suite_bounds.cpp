@@ -9,6 +9,8 @@ Bounds lutBounds(uint32_t size) {
     return {1.2e-2, 4e-5, 2e-3, 6e-6};
 }
 
+Bounds quadratureLutBounds() { return {5e-6, 3e-7, 8e-6, 6e-7}; }
+
 Bounds prefilterBounds() { return {1.5e-3, 2e-5, 1.5e-3, 6e-5}; }
 
 Bounds lutChunkBounds() { return {5e-5, 2e-6, 4e-5, 1e-6}; }
@@ -58,6 +60,13 @@ std::string boundsRationale() {
            "edge: a last-bit difference in llvmpipe's atan2 puts them in the other cell, 0.26 darker or lighter, "
            "0.065 per evaluation of a texel's four; measured 0.13 (two of four), RMS 3.4e-3, the same with the "
            "sun's disc taken out. The float reference is 6.0e-5 from the double one, on values up to ~4000.\n"
+           "- **BrdfLutQuadrature** (max 5e-6, RMS 3e-7 against float; 8e-6, 6e-7 against double), 128² at 7 nodes "
+           "per panel: every path lands 2.4e-6 from the float twin, RMS 1.3e-7, on values up to 1; the float twin "
+           "is 3.7e-6 from the double one (the method's own float rounding, mostly the ring integral's pole terms "
+           "where roughness and N.V are both small), and the paths 3.8e-6, RMS 3e-7. The twin takes llvmpipe's "
+           "place only where the shader uses transcendental functions llvmpipe gets to float precision (sin, cos, "
+           "tan, log, sqrt); atan and asin, which llvmpipe has 2e-5 and 2e-4 off, are the shader's own (Cephes' atanf) "
+           "in both; with llvmpipe's atan for the arc's length, every path fails (tests/consistency).\n"
            "- **EquirectToCube** (max 3.2e-2, RMS 2.3e-3, against both): llvmpipe's acos is off glibc's by up to 1.6e-4 "
            "rad (measured over [-1, 1]), which moves a read by up to 3e-3 of a panorama texel in latitude; beside the "
            "test sun (radiance 40 over a few texels) that is 1.6e-2 (RMS 1.2e-3). The float reference is 1.2e-5 from "

@@ -59,8 +59,10 @@ void addOutput(SuiteRun& run, const OutputSpec& spec, const References& referenc
 // For an output with no C++ reference: path a's result is the reference of the other paths.
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
-// The outputs of each group of kernels (sampled_outputs.cpp, cube_outputs.cpp, convolution_outputs.cpp).
+// The outputs of each group of kernels (sampled_outputs.cpp, quadrature_outputs.cpp, cube_outputs.cpp,
+// convolution_outputs.cpp).
 void addSampledOutputs(SuiteRun& run);
+void addQuadratureLutOutput(SuiteRun& run);
 void addChunkedOutputs(SuiteRun& run);
 void addCubeOutputs(SuiteRun& run);
 void addConvolutionOutputs(SuiteRun& run);

@@ -1,6 +1,7 @@
 #include "kernels/sampled_methods.hpp"
 
 #include "kernels/kernel_steps.hpp"
+#include "kernels/lut_methods.hpp"
 
 #include <stdexcept>
 
@@ -23,6 +24,14 @@ std::map<std::string, std::string> imageFormats(KernelRole role) {
 
 KernelProgram compileSampled(KernelRole role, const std::string& method, uint32_t samples, const ShaderFiles& files) {
     return compileKernel(kernelFor(role, method), sampleCountDefine(samples), imageFormats(role), files);
+}
+
+uint32_t checkedLutCount(const std::string& method, uint32_t samples) {
+    const uint32_t most = maxLutSamplesOf(method);
+    if (samples == 0 || samples > most)
+        throw std::invalid_argument("the LUT method '" + method + "' takes 1 to " + std::to_string(most) + " " +
+                                    lutCountName(method) + ", not " + std::to_string(samples));
+    return samples;
 }
 
 } // namespace
@@ -52,7 +61,8 @@ void PrefilterMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler,
 
 BrdfLutMethod::BrdfLutMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
                              uint32_t requestedChunk, const ShaderFiles& files)
-    : SampledMethod(context, KernelRole::BrdfLut, KernelRole::BrdfLutChunk, method, samples, requestedChunk, files) {}
+    : SampledMethod(context, KernelRole::BrdfLut, KernelRole::BrdfLutChunk, method, checkedLutCount(method, samples),
+                    requestedChunk, files) {}
 
 void BrdfLutMethod::run(vulkan::Image& lut) {
     if (chunk_) return runBrdfLutChunked(kernel_, lut, samples_, chunk_);

@@ -46,6 +46,10 @@ TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
     EXPECT_EQ(resolvedSamples(settings), 1024u);
     settings.samples = 64;
     EXPECT_EQ(resolvedSamples(settings), 64u);
+    EXPECT_EQ(settings.lutMethod, "quadrature");
+    EXPECT_EQ(resolvedLutSamples(settings), kernels::kDefaultQuadratureNodes);
+    settings.lutMethod = "document";
+    EXPECT_EQ(resolvedLutSamples(settings), 1024u);
 }
 
 TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
@@ -66,6 +70,8 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 32768)");
     refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, convolution)");
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
+    refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature)");
+    refused([](BakeSettings& s) { s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
     auto settings = settingsWithOutput();
     settings.specularMethod = "document";

@@ -21,6 +21,7 @@ protected:
         options.irradianceSize = 4;
         options.texelsPerMip = 24;
         options.repeat = 1;
+        options.quadratureNodes = {2, 7};
         options.cacheDir = scratch.path();
         options.log = nullptr;
         return options;
@@ -38,8 +39,8 @@ protected:
 
 TEST_F(Bench, MeasuresEveryOutputAndErrorsFallWithSamples) {
     const auto run = runBench(tiny({"sky"}));
-    EXPECT_EQ(run.results.size(), 2u + 2u * 2u + 1u)
-        << "LUT at two counts, specular by the document's method and the convolution at two counts, irradiance once";
+    EXPECT_EQ(run.results.size(), 2u + 2u + 2u * 2u + 1u)
+        << "LUT by the document's method and the quadrature at two counts each, specular by the document's method and the convolution at two counts, irradiance once";
     const auto& few = find(run, BenchOutput::Specular, "sky", 16);
     const auto& many = find(run, BenchOutput::Specular, "sky", 1024);
     ASSERT_EQ(few.mips.size(), 2u);
@@ -50,6 +51,14 @@ TEST_F(Bench, MeasuresEveryOutputAndErrorsFallWithSamples) {
     const auto& lutFew = find(run, BenchOutput::Lut, "", 16);
     const auto& lutMany = find(run, BenchOutput::Lut, "", 1024);
     EXPECT_LT(lutMany.errorRms, lutFew.errorRms / 4);
+    // The quadrature at 7 nodes per panel: measured 3.4e-6 at 16², far below the estimator's 1024
+    // samples (1e-2) and its own 2 nodes (3e-3); every texel within one half-float step.
+    const auto& nodesFew = find(run, BenchOutput::Lut, "", 2, "quadrature");
+    const auto& nodesMany = find(run, BenchOutput::Lut, "", 7, "quadrature");
+    EXPECT_LT(nodesMany.errorMax, 1e-5);
+    EXPECT_LT(nodesMany.errorMax, nodesFew.errorMax / 10);
+    EXPECT_LE(nodesMany.halfSteps, 1u);
+    EXPECT_GT(lutMany.halfSteps, 1u);
     // The exact sum over a 32² source, read at 32² by the GPU: only the rounding of 6144 float
     // terms summed in order remains. Measured 4.8e-5; bound 1e-4.
     EXPECT_LT(find(run, BenchOutput::Irradiance, "sky", 0).errorMax, 1e-4);

@@ -28,6 +28,7 @@ std::vector<std::string> allPathNames() {
 // Small enough for the broken variants, which fail long before the sizes matter.
 SuiteOptions testSizes(SuiteOptions options) {
     options.lutSizes = {32};
+    options.quadratureLutSize = 32;
     options.prefilterSize = 16;
     return options;
 }
@@ -50,11 +51,11 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 15u * 6u + 5u)
-        << "LUT 512² and 32², four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
+    ASSERT_EQ(rows.size(), 16u * 6u + 5u)
+        << "LUT 512² and 32², the quadrature LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution: the float reference and five paths "
            "each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 16)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 17)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -115,6 +116,12 @@ TEST_F(BrokenVariant, TransposedTangentFrameFailsThePrefilter) {
 TEST_F(BrokenVariant, SwappedCubeFaceFailsThePrefilter) {
     const auto rows = run(broken("document/PrefilterSpecularCS.hlsl", "normal = float3( uv.x, 1.f, -uv.y );", "normal = float3( uv.x, -1.f, uv.y );"));
     expectEveryPathFails(rows, "PrefilterSpecularCS");
+}
+
+// The visible arc's length from llvmpipe's atan (2e-5 off) instead of the shader's own.
+TEST_F(BrokenVariant, ImpreciseArcFailsTheQuadratureLut) {
+    const auto rows = run(broken("BrdfLutQuadratureCS.hlsl", "S[0] = 2.f * PreciseAtan( tanHalfArc );", "S[0] = 2.f * atan( tanHalfArc );"));
+    expectEveryPathFails(rows, "BrdfLutQuadratureCS");
 }
 
 // The kit's cube geometry: +Y's direction swapped for -Y's in Cube.fxh.

@@ -33,9 +33,10 @@ std::string invocation(const bench::BenchOptions& options, const std::vector<std
     std::string text = "iblkit bench";
     for (const auto& environment : options.environments) text += " " + word(environment);
     if (!options.methods.empty()) text += fmt::format(" --method {}", word(fmt::format("{}", fmt::join(options.methods, ","))));
-    text += fmt::format(" --samples {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} --repeat {} "
-                        "--outputs {}",
-                        fmt::join(options.samples, ","), options.size, options.lutSize, options.irradianceSize,
+    text += fmt::format(" --samples {} --lut-nodes {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} "
+                        "--repeat {} --outputs {}",
+                        fmt::join(options.samples, ","), fmt::join(options.quadratureNodes, ","), options.size,
+                        options.lutSize, options.irradianceSize,
                         options.texelsPerMip, options.seed, options.repeat, fmt::join(outputs, ","));
     if (!options.context.device.empty()) text += " --device " + word(options.context.device);
     text += " --out " + word(out);
@@ -61,6 +62,9 @@ void addBenchCommand(CLI::App& app) {
                         "or an .hdr/.exr/.ktx2/.dds file or a folder of faces");
     command->add_option("--method", o.methods, "Methods from hlsl/shaders.json (default: every one)")->delimiter(',');
     command->add_option("--samples", o.samples, "Sample counts (default 16,64,256,1024,4096,16384,65536)")
+        ->delimiter(',');
+    command->add_option("--lut-nodes", o.quadratureNodes,
+                        "The LUT quadrature's Gauss-Legendre nodes per panel, 1 to 16 (default 3,4,5,6,7,8)")
         ->delimiter(',');
     command->add_option("--size", o.size, "Source cube face size, a power of two (default 256)");
     command->add_option("--lut-size", o.lutSize, "BRDF LUT size (default 512)");
