@@ -8,151 +8,166 @@ struct IrradianceParameter
     uint SourceMip;
 };
 
-constant int _843 = {};
+constant int _899 = {};
 
-kernel void main0(constant IrradianceParameter& _222 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float, access::write> Irradiance [[texture(1)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant IrradianceParameter& _222 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float, access::write> Irradiance [[texture(1)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]], uint gl_LocalInvocationIndex [[thread_index_in_threadgroup]])
 {
+    threadgroup float3 ChunkDirection[64];
+    threadgroup float3 ChunkEnergy[64];
     uint3 param = gl_GlobalInvocationID;
-    do
+    uint3 _420 = uint3(0u);
+    uint3 _421 = uint3(Irradiance.get_width(), Irradiance.get_height(), Irradiance.get_array_size());
+    _420.x = _421.x;
+    _420.y = _421.y;
+    _420.z = _421.z;
+    uint3 _461 = _420;
+    uint3 _427 = uint3(Source.get_width(_222.SourceMip), Source.get_height(_222.SourceMip), Source.get_array_size());
+    uint _478 = _427.x * _427.x;
+    uint _480 = 6u * _478;
+    float2 _432 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_461.xy)) - float2(0.5)) * float2(2.0, -2.0);
+    float3 _859;
+    if (param.z == 0u)
     {
-        uint3 _382 = uint3(0u);
-        uint3 _383 = uint3(Irradiance.get_width(), Irradiance.get_height(), Irradiance.get_array_size());
-        _382.x = _383.x;
-        _382.y = _383.y;
-        _382.z = _383.z;
-        if (any(gl_GlobalInvocationID >= _382))
+        _859 = float3(1.0, _432.y, -_432.x);
+    }
+    else
+    {
+        float3 _860;
+        if (param.z == 1u)
         {
-            break;
-        }
-        uint3 _388 = uint3(Source.get_width(_222.SourceMip), Source.get_height(_222.SourceMip), Source.get_array_size());
-        float2 _391 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_382.xy)) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _792;
-        if (param.z == 0u)
-        {
-            _792 = float3(1.0, _391.y, -_391.x);
+            _860 = float3(-1.0, _432.y, _432.x);
         }
         else
         {
-            float3 _793;
-            if (param.z == 1u)
+            float3 _861;
+            if (param.z == 2u)
             {
-                _793 = float3(-1.0, _391.y, _391.x);
+                _861 = float3(_432.x, 1.0, -_432.y);
             }
             else
             {
-                float3 _794;
-                if (param.z == 2u)
+                float3 _862;
+                if (param.z == 3u)
                 {
-                    _794 = float3(_391.x, 1.0, -_391.y);
+                    _862 = float3(_432.x, -1.0, _432.y);
                 }
                 else
                 {
-                    float3 _795;
-                    if (param.z == 3u)
+                    float3 _863;
+                    if (param.z == 4u)
                     {
-                        _795 = float3(_391.x, -1.0, _391.y);
+                        _863 = float3(_432.x, _432.y, 1.0);
                     }
                     else
                     {
-                        float3 _796;
-                        if (param.z == 4u)
-                        {
-                            _796 = float3(_391.x, _391.y, 1.0);
-                        }
-                        else
-                        {
-                            _796 = float3(-_391.x, _391.y, -1.0);
-                        }
-                        _795 = _796;
+                        _863 = float3(-_432.x, _432.y, -1.0);
                     }
-                    _794 = _795;
+                    _862 = _863;
                 }
-                _793 = _794;
+                _861 = _862;
             }
-            _792 = _793;
+            _860 = _861;
         }
-        float3 _609 = fast::normalize(_792);
-        float3 _798;
-        _798 = float3(0.0);
-        float3 _826;
-        for (uint _797 = 0u; _797 < 6u; _798 = _826, _797++)
+        _859 = _860;
+    }
+    float3 _676 = fast::normalize(_859);
+    float3 _865;
+    _865 = float3(0.0);
+    float3 _881;
+    for (uint _864 = 0u; _864 < _480; _865 = _881, _864 += 64u)
+    {
+        uint _501 = _864 + gl_LocalInvocationIndex;
+        float3 _871;
+        float3 _872;
+        if (_501 < _480)
         {
-            _826 = _798;
-            float3 _825;
-            for (uint _799 = 0u; _799 < _388.y; _799++, _826 = _825)
+            uint _508 = _501 / _478;
+            uint _511 = _501 % _427.x;
+            uint _516 = (_501 % _478) / _427.x;
+            float2 _442 = (((float2(float(_511), float(_516)) + float2(0.5)) / float2(float(_427.x))) - float2(0.5)) * float2(2.0, -2.0);
+            float3 _866;
+            if (_508 == 0u)
             {
-                _825 = _826;
-                float3 _834;
-                for (uint _801 = 0u; _801 < _388.x; _825 = _834, _801++)
+                _866 = float3(1.0, _442.y, -_442.x);
+            }
+            else
+            {
+                float3 _867;
+                if (_508 == 1u)
                 {
-                    float2 _398 = (((float2(float(_801), float(_799)) + float2(0.5)) / float2(float(_388.x))) - float2(0.5)) * float2(2.0, -2.0);
-                    float3 _804;
-                    if (_797 == 0u)
+                    _867 = float3(-1.0, _442.y, _442.x);
+                }
+                else
+                {
+                    float3 _868;
+                    if (_508 == 2u)
                     {
-                        _804 = float3(1.0, _398.y, -_398.x);
+                        _868 = float3(_442.x, 1.0, -_442.y);
                     }
                     else
                     {
-                        float3 _805;
-                        if (_797 == 1u)
+                        float3 _869;
+                        if (_508 == 3u)
                         {
-                            _805 = float3(-1.0, _398.y, _398.x);
+                            _869 = float3(_442.x, -1.0, _442.y);
                         }
                         else
                         {
-                            float3 _806;
-                            if (_797 == 2u)
+                            float3 _870;
+                            if (_508 == 4u)
                             {
-                                _806 = float3(_398.x, 1.0, -_398.y);
+                                _870 = float3(_442.x, _442.y, 1.0);
                             }
                             else
                             {
-                                float3 _807;
-                                if (_797 == 3u)
-                                {
-                                    _807 = float3(_398.x, -1.0, _398.y);
-                                }
-                                else
-                                {
-                                    float3 _808;
-                                    if (_797 == 4u)
-                                    {
-                                        _808 = float3(_398.x, _398.y, 1.0);
-                                    }
-                                    else
-                                    {
-                                        _808 = float3(-_398.x, _398.y, -1.0);
-                                    }
-                                    _807 = _808;
-                                }
-                                _806 = _807;
+                                _870 = float3(-_442.x, _442.y, -1.0);
                             }
-                            _805 = _806;
+                            _869 = _870;
                         }
-                        _804 = _805;
+                        _868 = _869;
                     }
-                    float _479 = dot(_609, fast::normalize(_804));
-                    if (_479 > 0.0)
-                    {
-                        int3 _494 = int4(int(_801), int(_799), int(_797), _843).xyz;
-                        uint2 _401 = uint2(_801, _799);
-                        float _693 = float(_388.x);
-                        float _694 = 1.0 / _693;
-                        float _701 = fma(2.0 * float(_401.x), _694, -1.0);
-                        float _708 = fma(2.0 * float(_401.y), _694, -1.0);
-                        float _712 = _701 + (2.0 / _693);
-                        float _716 = _708 + (2.0 / _693);
-                        _834 = _825 + (Source.read(uint2(_494.xy), uint(_494.z), int(_222.SourceMip)).xyz * (_479 * (((precise::atan2(_701 * _708, sqrt(fma(_701, _701, _708 * _708) + 1.0)) - precise::atan2(_701 * _716, sqrt(fma(_701, _701, _716 * _716) + 1.0))) - precise::atan2(_712 * _708, sqrt(fma(_712, _712, _708 * _708) + 1.0))) + precise::atan2(_712 * _716, sqrt(fma(_712, _712, _716 * _716) + 1.0)))));
-                    }
-                    else
-                    {
-                        _834 = _825;
-                    }
+                    _867 = _868;
                 }
+                _866 = _867;
+            }
+            int3 _541 = int4(int(_511), int(_516), int(_508), _899).xyz;
+            uint2 _443 = uint2(_511, _516);
+            float _760 = float(_427.x);
+            float _761 = 1.0 / _760;
+            float _768 = fma(2.0 * float(_443.x), _761, -1.0);
+            float _775 = fma(2.0 * float(_443.y), _761, -1.0);
+            float _779 = _768 + (2.0 / _760);
+            float _783 = _775 + (2.0 / _760);
+            _872 = Source.read(uint2(_541.xy), uint(_541.z), int(_222.SourceMip)).xyz * (((precise::atan2(_768 * _775, sqrt(fma(_768, _768, _775 * _775) + 1.0)) - precise::atan2(_768 * _783, sqrt(fma(_768, _768, _783 * _783) + 1.0))) - precise::atan2(_779 * _775, sqrt(fma(_779, _779, _775 * _775) + 1.0))) + precise::atan2(_779 * _783, sqrt(fma(_779, _779, _783 * _783) + 1.0)));
+            _871 = fast::normalize(_866);
+        }
+        else
+        {
+            _872 = float3(0.0);
+            _871 = float3(0.0);
+        }
+        ChunkDirection[gl_LocalInvocationIndex] = _871;
+        ChunkEnergy[gl_LocalInvocationIndex] = _872;
+        threadgroup_barrier(mem_flags::mem_threadgroup);
+        _881 = _865;
+        float3 _890;
+        for (uint _873 = 0u; _873 < 64u; _881 = _890, _873++)
+        {
+            float _577 = dot(_676, ChunkDirection[_873]);
+            if (_577 > 0.0)
+            {
+                _890 = _881 + (ChunkEnergy[_873] * _577);
+            }
+            else
+            {
+                _890 = _881;
             }
         }
-        Irradiance.write(float4(_798 * float3(0.3183098733425140380859375), 1.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        break;
-    } while(false);
+        threadgroup_barrier(mem_flags::mem_threadgroup);
+    }
+    if (all(gl_GlobalInvocationID < _461))
+    {
+        Irradiance.write(float4(_865 * float3(0.3183098733425140380859375), 1.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+    }
 }
 

@@ -11,34 +11,48 @@ cbuffer IrradianceParameter : register( b0 )
 Texture2DArray<float4> Source;
 RWTexture2DArray<float4> Irradiance;
 
+static const uint GROUP_SIZE = 64;
+
+// One chunk of the source's texels at a time, shared by the group: each texel's direction and
+// its radiance times its solid angle are computed once per group instead of once per output
+// texel (CubeTexelSolidAngle's four atan2 cost more than the rest of the sum).
+groupshared float3 ChunkDirection[GROUP_SIZE];
+groupshared float3 ChunkEnergy[GROUP_SIZE];
+
 [numthreads(8, 8, 1)]
-void main( uint3 DTid : SV_DispatchThreadId )
+void main( uint3 DTid : SV_DispatchThreadId, uint GroupIndex : SV_GroupIndex )
 {
     uint3 dims = (uint3)0;
     Irradiance.GetDimensions( dims.x, dims.y, dims.z );
-    if ( any( DTid >= dims ) )
-        return;
+    bool inside = all( DTid < dims ); // every thread loads its share of each chunk
 
     uint width = 0, height = 0, layers = 0, levels = 0;
     Source.GetDimensions( SourceMip, width, height, layers, levels );
+    uint faceTexels = width * width, texels = 6 * faceTexels;
 
     float3 normal = CubeFaceDirection( DTid.z, ( DTid.xy + 0.5f ) / dims.xy );
     float3 sum = 0.f;
-    for ( uint face = 0; face < 6; ++face )
+    for ( uint start = 0; start < texels; start += GROUP_SIZE )
     {
-        for ( uint y = 0; y < height; ++y )
+        uint index = start + GroupIndex;
+        float3 direction = 0.f, energy = 0.f;
+        if ( index < texels )
         {
-            for ( uint x = 0; x < width; ++x )
-            {
-                float3 direction = CubeFaceDirection( face, ( float2( x, y ) + 0.5f ) / width );
-                float cosine = dot( normal, direction );
-                if ( cosine > 0.f )
-                {
-                    float3 radiance = Source.Load( int4( x, y, face, SourceMip ) ).rgb;
-                    sum += radiance * ( cosine * CubeTexelSolidAngle( uint2( x, y ), width ) );
-                }
-            }
+            uint face = index / faceTexels, x = index % width, y = ( index % faceTexels ) / width;
+            direction = CubeFaceDirection( face, ( float2( x, y ) + 0.5f ) / width );
+            energy = Source.Load( int4( x, y, face, SourceMip ) ).rgb * CubeTexelSolidAngle( uint2( x, y ), width );
         }
+        ChunkDirection[GroupIndex] = direction;
+        ChunkEnergy[GroupIndex] = energy;
+        GroupMemoryBarrierWithGroupSync();
+        for ( uint i = 0; i < GROUP_SIZE; ++i )
+        {
+            float cosine = dot( normal, ChunkDirection[i] );
+            if ( cosine > 0.f )
+                sum += ChunkEnergy[i] * cosine;
+        }
+        GroupMemoryBarrierWithGroupSync();
     }
-    Irradiance[DTid] = float4( sum / CUBE_PI, 1.f );
+    if ( inside )
+        Irradiance[DTid] = float4( sum / CUBE_PI, 1.f );
 }

@@ -41,15 +41,16 @@ std::vector<std::string> environmentsOf(const BenchRun& run) {
 std::string specularTable(const std::vector<const BenchResult*>& results) {
     if (results.empty()) return {};
     const auto& mips = results.front()->mips;
-    std::string header = "| method | samples | device s | wall s |", rule = "|---|---:|---:|---:|";
+    std::string header = "| method | samples | device s | wall s | seam jump (converged) |", rule = "|---|---:|---:|---:|---:|";
     for (const auto& mip : mips) {
         header += fmt::format(" mip {} (r {:.2f}) RMS / max |", mip.mip, mip.roughness);
         rule += "---:|";
     }
     std::string text = header + "\n" + rule + "\n";
     for (const auto* result : results) {
-        text += fmt::format("| {} | {} | {} | {} |", result->method, result->samples, seconds(result->deviceMilliseconds),
-                            seconds(result->wallMilliseconds));
+        text += fmt::format("| {} | {} | {} | {} | {} ({}) |", result->method, result->samples,
+                            seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds),
+                            percent(result->seamJump), percent(result->referenceSeamJump));
         for (const auto& mip : result->mips) text += fmt::format(" {} / {} |", percent(mip.rms), percent(mip.max));
         text += "\n";
     }
@@ -128,6 +129,9 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
             "error is the relative error of luminance, RMS and max per mip. A configuration's error is its worst mip's. "
             "The estimators read the source through bilinear filtering where the reference takes each texel as "
             "constant: a floor of about 8e-4 relative on a smooth 64² cube (tests/reference), far below the 1 % target.\n"
+            "- Seams: the largest relative jump of luminance between texels facing each other across a face edge "
+            "(4 pairs per edge and mip, over the mips), beside the same jump of the converged integral at the same "
+            "texels: a jump well above the converged one is a visible seam.\n"
             "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error. For the "
             "quadrature method the count is its Gauss-Legendre nodes per panel. The RG16F column rounds both to half "
             "floats: 0 or 1 steps apart is the target (the converged value's nearest half, or its neighbour).\n"

@@ -23,6 +23,7 @@ struct BenchOptions {
     uint32_t lutSize = 512;
     uint32_t irradianceSize = 32;
     uint32_t texelsPerMip = 192;  // reference texels per specular mip, seeded
+    uint32_t seamPairsPerEdge = 4; // texel pairs across each of the cube's 12 edges, per specular mip
     uint64_t seed = 1;
     uint32_t repeat = 3;          // timed runs per configuration; times are their medians
     std::vector<BenchOutput> outputs{BenchOutput::Specular, BenchOutput::Lut, BenchOutput::Irradiance};
@@ -54,6 +55,9 @@ struct BenchResult {
     uint32_t repeat = 0;
     double errorRms = 0, errorMax = 0;
     std::vector<MipError> mips; // specular only
+    // Specular only: the largest relative jump of luminance across a face edge over the mips, of the
+    // result and of the converged reference at the same texels.
+    double seamJump = 0, referenceSeamJump = 0;
     uint32_t halfSteps = 0; // LUT only: the furthest texel, rounded to half floats, in half steps from the converged value's nearest half
 };
 

@@ -36,6 +36,7 @@ nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
                            {"chunk_samples", result.chunkSamples}, {"device_ms", result.deviceMilliseconds},
                            {"wall_ms", result.wallMilliseconds}, {"repeat", result.repeat},
                            {"error_rms", number(result.errorRms)}, {"error_max", number(result.errorMax)}, {"half_steps", result.halfSteps},
+                           {"seam_jump", number(result.seamJump)}, {"reference_seam_jump", number(result.referenceSeamJump)},
                            {"mips", mips}});
     }
     return {{"machine", run.machine}, {"device", run.device}, {"date", run.date}, {"command", command},

@@ -37,7 +37,7 @@ BenchResult LutBench::measure(const std::string& method, uint32_t samples) {
         halfSteps = std::max(halfSteps, uint32_t(steps));
     }
     return {BenchOutput::Lut, {}, method, samples, integrator.chunkSamples(), timing.deviceMilliseconds,
-            timing.wallMilliseconds, options_.repeat, errors.rms(), errors.max(), {}, halfSteps};
+            timing.wallMilliseconds, options_.repeat, errors.rms(), errors.max(), {}, 0, 0, halfSteps};
 }
 
 } // namespace iblkit::bench

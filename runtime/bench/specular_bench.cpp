@@ -2,6 +2,7 @@
 
 #include "bake_settings.hpp"
 #include "converged_prefilter.hpp"
+#include "face_seams.hpp"
 #include "kernels/specular_method.hpp"
 
 #include <fmt/core.h>
@@ -15,6 +16,8 @@ struct SpecularBench::MipReference {
     float roughness;
     std::vector<reference::PrefilterTexel> texels;
     std::vector<glm::dvec3> radiance;
+    std::vector<reference::PrefilterTexel> seamTexels; // pairs across face edges, flattened
+    double seamJump;                                   // the converged values' own
 };
 
 namespace {
@@ -25,6 +28,30 @@ std::string prefilterKey(const reference::MippedCube& cube, uint32_t mipSize, fl
     return ReferenceCache::key(fmt::format("converged prefilter v1 size {} roughness {:a} output {} texels {} seed {}",
                                            cube.size, roughness, mipSize, options.texelsPerMip, options.seed),
                                std::as_bytes(source));
+}
+
+// The texels of the pairs across the face edges, pair after pair.
+std::vector<reference::PrefilterTexel> seamTexels(uint32_t mipSize, uint32_t perEdge) {
+    std::vector<reference::PrefilterTexel> texels;
+    for (const auto& pair : reference::faceEdgePairs(mipSize, perEdge)) texels.insert(texels.end(), pair.begin(), pair.end());
+    return texels;
+}
+
+std::string seamKey(const reference::MippedCube& cube, uint32_t mipSize, float roughness, uint32_t perEdge) {
+    return ReferenceCache::key(fmt::format("converged prefilter seams v1 size {} roughness {:a} output {} per edge {}",
+                                           cube.size, roughness, mipSize, perEdge),
+                               std::as_bytes(cube.mip(0)));
+}
+
+std::vector<glm::dvec3> texelRadiance(const std::vector<float>& specular, const vulkan::Image& image, uint32_t mip,
+                                      const std::vector<reference::PrefilterTexel>& texels) {
+    const uint32_t width = image.mipWidth(mip);
+    std::vector<glm::dvec3> radiance;
+    for (const auto& texel : texels) {
+        const float* at = &specular[image.valueOffset(mip, texel.face) + (size_t(texel.y) * width + texel.x) * 4];
+        radiance.emplace_back(at[0], at[1], at[2]);
+    }
+    return radiance;
 }
 
 MipError mipError(const std::vector<float>& specular, const vulkan::Image& image, uint32_t mip, float roughness,
@@ -53,7 +80,12 @@ SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image
         const auto values = cache.getOrCompute(prefilterKey(cube, mipSize, roughness, options), texels.size() * 3, [&] {
             return flatten(reference::convergedPrefilter(cube.mip(0), cube.size, double(roughness), mipSize, texels));
         });
-        references_.push_back({mip, roughness, std::move(texels), unflatten(values)});
+        auto seams = seamTexels(mipSize, options.seamPairsPerEdge);
+        const auto seamValues = cache.getOrCompute(seamKey(cube, mipSize, roughness, options.seamPairsPerEdge), seams.size() * 3, [&] {
+            return flatten(reference::convergedPrefilter(cube.mip(0), cube.size, double(roughness), mipSize, seams));
+        });
+        const double seamJump = reference::largestSeamJump(unflatten(seamValues));
+        references_.push_back({mip, roughness, std::move(texels), unflatten(values), std::move(seams), seamJump});
     }
 }
 
@@ -78,6 +110,8 @@ BenchResult SpecularBench::measure(const std::string& method, uint32_t samples) 
                                        reference.radiance));
         result.errorRms = std::max(result.errorRms, result.mips.back().rms);
         result.errorMax = std::max(result.errorMax, result.mips.back().max);
+        result.seamJump = std::max(result.seamJump, reference::largestSeamJump(texelRadiance(values, specular, reference.mip, reference.seamTexels)));
+        result.referenceSeamJump = std::max(result.referenceSeamJump, reference.seamJump);
     }
     return result;
 }

@@ -39,6 +39,13 @@ glm::dvec3 cubeTexelDirection(uint32_t face, double column, double row, uint32_t
     }
 }
 
+CubeTexelIndex cubeTexelOf(glm::dvec3 direction, uint32_t size) {
+    const auto coordinates = selectFace(direction);
+    const int n = static_cast<int>(size);
+    return {coordinates.face, uint32_t(std::clamp(static_cast<int>(std::floor(coordinates.s * n)), 0, n - 1)),
+            uint32_t(std::clamp(static_cast<int>(std::floor(coordinates.t * n)), 0, n - 1))};
+}
+
 CubeEnvironment::CubeEnvironment(uint32_t size, std::vector<float> texels) : size_(size), texels_(std::move(texels)) {
     if (texels_.size() != size_t(6) * size * size * 4) throw std::invalid_argument("cube texels do not match the size");
 }
@@ -72,10 +79,10 @@ glm::dvec3 CubeEnvironment::texel(uint32_t face, int column, int row) const {
     if (column < 0 || row < 0 || column >= n || row >= n) {
         // Beyond an edge: the texel of the neighbouring face that the extrapolated direction
         // reaches, as seamless cube filtering reads it.
-        const auto other = selectFace(cubeTexelDirection(face, column, row, size_));
+        const auto other = cubeTexelOf(cubeTexelDirection(face, column, row, size_), size_);
         face = other.face;
-        column = std::clamp(static_cast<int>(std::floor(other.s * n)), 0, n - 1);
-        row = std::clamp(static_cast<int>(std::floor(other.t * n)), 0, n - 1);
+        column = static_cast<int>(other.column);
+        row = static_cast<int>(other.row);
     }
     const size_t at = ((size_t(face) * size_ + row) * size_ + column) * 4;
     return {texels_[at], texels_[at + 1], texels_[at + 2]};

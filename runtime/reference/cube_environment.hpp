@@ -35,4 +35,10 @@ private:
 // the column and row may lie outside the face, extrapolating its plane.
 glm::dvec3 cubeTexelDirection(uint32_t face, double column, double row, uint32_t size);
 
+// The texel of a size² face set that `direction` falls in, by Vulkan's face selection.
+struct CubeTexelIndex {
+    uint32_t face, column, row;
+};
+CubeTexelIndex cubeTexelOf(glm::dvec3 direction, uint32_t size);
+
 } // namespace iblkit::reference

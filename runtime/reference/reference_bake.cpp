@@ -160,9 +160,10 @@ std::vector<float> irradianceCubeInFloat(const std::vector<float>& texels, uint3
                     for (uint32_t column = 0; column < size; ++column) {
                         const auto uv = (glm::vec2(float(column), float(row)) + 0.5f) / float(size);
                         const float cosine = glm::dot(normal, CubeFaceDirection<float>(sourceFace, uv));
+                        // The shader's order: radiance times solid angle per source texel, then the cosine.
                         if (cosine > 0.f)
                             sum += texelRgb(texels, texelIndex(sourceFace, row, column, size)) *
-                                   (cosine * CubeTexelSolidAngle<float>(column, row, size));
+                                   CubeTexelSolidAngle<float>(column, row, size) * cosine;
                     }
             const glm::vec3 irradiance = sum / PI<float>;
             const size_t at = texelIndex(face, y, x, outSize);
