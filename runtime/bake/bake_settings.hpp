@@ -21,8 +21,8 @@ inline constexpr const char* kDefaultSpecularMethod = "convolution";
 inline constexpr uint32_t kDefaultConvolutionBudget = 128;
 inline constexpr uint32_t kDocumentSamples = 1024; // the documents' SAMPLE_COUNT
 // The LUT method the bake runs unless told otherwise: the quadrature is within 6e-6 of the
-// converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in a fifth
-// of its time (docs/bench.md).
+// converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in about
+// a quarter of its time (docs/bench.md).
 inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureLutMethod;
 
 struct BakeSettings {
