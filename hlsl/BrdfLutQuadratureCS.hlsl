@@ -20,7 +20,8 @@ RWTexture2D<float2> Precomputed;
 #error the quadrature takes at most 16 nodes per panel (SAMPLE_COUNT)
 #endif
 // Gauss–Legendre nodes per panel. A compile-time count, so that the node loops unroll and the
-// rule stays in registers: llvmpipe reads an array at a varying index from memory, 2x slower.
+// rule stays in registers: llvmpipe reads an array at a varying index from memory (unrolled, the
+// 512² LUT went from 0.19 to 0.14 s).
 static const uint NODES = SAMPLE_COUNT;
 static const uint SERIES_TERMS = 24; // |r| <= 1/2 on the far branch: r^24 < 1e-7
 static const float FAR_POLE = 1.25f; // x < -FAR_POLE: the far branch (RingPoleFar)

@@ -71,14 +71,27 @@ const std::vector<uint32_t>& lutCounts(const BenchOptions& options, const std::s
     return method == kernels::kQuadratureLutMethod ? options.quadratureNodes : options.samples;
 }
 
+// The LUT methods that can run at their own counts: a count past the loop limit needs the
+// method's chunked twin.
+std::vector<std::string> runnableLutMethods(const BenchOptions& options) {
+    auto methods = kernels::lutMethods();
+    const auto twins = kernels::methodsOf(kernels::KernelRole::BrdfLutChunk);
+    std::erase_if(methods, [&](const std::string& method) {
+        const auto& counts = lutCounts(options, method);
+        const bool chunked = std::any_of(counts.begin(), counts.end(),
+                                         [](uint32_t count) { return kernels::chunkSamplesFor(count) != 0; });
+        return chunked && std::find(twins.begin(), twins.end(), method) == twins.end();
+    });
+    return methods;
+}
+
 // Each output's methods: every one the table has for it, or those asked for; a method asked for
 // that has no kernel for any output the bench measures is refused before any work.
 OutputMethods outputMethods(const BenchOptions& options) {
     using kernels::KernelRole;
     const bool chunked = std::any_of(options.samples.begin(), options.samples.end(),
                                      [](uint32_t samples) { return kernels::chunkSamplesFor(samples) != 0; });
-    auto lut = methodsWith(KernelRole::BrdfLut, KernelRole::BrdfLutChunk, chunked);
-    if (chunked) lut.push_back(kernels::kQuadratureLutMethod); // measured at its own counts, never chunked
+    const auto lut = runnableLutMethods(options);
     auto specular = methodsWith(KernelRole::Prefilter, KernelRole::PrefilterChunk, chunked);
     for (const auto& method : kernels::methodsOf(KernelRole::PrefilterConvolution)) specular.push_back(method);
     OutputMethods chosen;

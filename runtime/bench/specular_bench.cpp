@@ -56,13 +56,9 @@ std::vector<glm::dvec3> texelRadiance(const std::vector<float>& specular, const 
 
 MipError mipError(const std::vector<float>& specular, const vulkan::Image& image, uint32_t mip, float roughness,
                   const std::vector<reference::PrefilterTexel>& texels, const std::vector<glm::dvec3>& reference) {
-    const uint32_t width = image.mipWidth(mip);
+    const auto radiance = texelRadiance(specular, image, mip, texels);
     ErrorSummary errors;
-    for (size_t i = 0; i < texels.size(); ++i) {
-        const auto& texel = texels[i];
-        const float* at = &specular[image.valueOffset(mip, texel.face) + (size_t(texel.y) * width + texel.x) * 4];
-        errors.add(relativeLuminanceError({at[0], at[1], at[2]}, reference[i]));
-    }
+    for (size_t i = 0; i < texels.size(); ++i) errors.add(relativeLuminanceError(radiance[i], reference[i]));
     return {mip, roughness, uint32_t(texels.size()), errors.rms(), errors.max()};
 }
 
