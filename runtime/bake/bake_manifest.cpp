@@ -61,12 +61,18 @@ uint32_t samplesPerDispatch(uint32_t samples) {
     return chunk ? chunk : samples;
 }
 
-// How the prefilter method computed the mips: a sampled estimator's sample count and shader, or
-// the convolution's budget of terms per texel and its two shaders.
+// How the prefilter method computed the mips: a sampled estimator's or a sample table's count
+// and shader, or the convolution's budget of terms per texel and its two shaders.
 json prefilterJson(const BakeSettings& settings) {
     const uint32_t samples = resolvedSamples(settings);
     const auto& method = settings.specularMethod;
-    if (kernels::isConvolutionMethod(method))
+    const auto kind = kernels::specularKindOf(method);
+    if (kind == kernels::SpecularKind::Table)
+        return {{"method", method},
+                {"samples", samples},
+                {"samples_per_dispatch", samples},
+                {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterTable, method).options.source.generic_string()}};
+    if (kind == kernels::SpecularKind::Convolution)
         return {{"method", method},
                 {"terms_per_texel", samples},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterConvolution, method).options.source.generic_string()},

@@ -48,17 +48,8 @@ struct OutputMethods {
     std::vector<std::string> lut, specular;
 };
 
-// The methods that have kernels for `role` (and its chunked twin where a sample count needs it).
-std::vector<std::string> methodsWith(kernels::KernelRole whole, kernels::KernelRole chunked, bool needsChunks) {
-    auto methods = kernels::methodsOf(whole);
-    if (!needsChunks) return methods;
-    const auto twins = kernels::methodsOf(chunked);
-    std::erase_if(methods, [&](const std::string& m) { return std::find(twins.begin(), twins.end(), m) == twins.end(); });
-    return methods;
-}
-
-// The counts of `samples` a specular method cannot take (the convolution's budget stops under
-// the driver's loop limit).
+// The counts of `samples` a specular method cannot take (the convolution's budget, and a sampled
+// method without a chunked twin, stop under the driver's loop limit).
 std::vector<uint32_t> countsBeyond(const std::vector<uint32_t>& samples, const std::string& method) {
     std::vector<uint32_t> beyond;
     std::copy_if(samples.begin(), samples.end(), std::back_inserter(beyond),
@@ -88,12 +79,8 @@ std::vector<std::string> runnableLutMethods(const BenchOptions& options) {
 // Each output's methods: every one the table has for it, or those asked for; a method asked for
 // that has no kernel for any output the bench measures is refused before any work.
 OutputMethods outputMethods(const BenchOptions& options) {
-    using kernels::KernelRole;
-    const bool chunked = std::any_of(options.samples.begin(), options.samples.end(),
-                                     [](uint32_t samples) { return kernels::chunkSamplesFor(samples) != 0; });
     const auto lut = runnableLutMethods(options);
-    auto specular = methodsWith(KernelRole::Prefilter, KernelRole::PrefilterChunk, chunked);
-    for (const auto& method : kernels::methodsOf(KernelRole::PrefilterConvolution)) specular.push_back(method);
+    const auto specular = kernels::specularMethods();
     OutputMethods chosen;
     if (wants(options, BenchOutput::Lut)) chosen.lut = lut;
     if (wants(options, BenchOutput::Specular)) chosen.specular = specular;

@@ -43,6 +43,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     addChunkedOutputs(run);
     addCubeOutputs(run);
     addConvolutionOutputs(run);
+    addFilteredOutputs(run);
     addPreviewOutput(run);
     return {std::move(run.rows), gl.renderer()};
 }

@@ -91,6 +91,8 @@ Bounds shBounds();
 Bounds irradianceBounds();
 Bounds clusterBounds();
 Bounds convolutionBounds();
+Bounds filteredBounds();
+Bounds tableBounds();
 Bounds previewBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.

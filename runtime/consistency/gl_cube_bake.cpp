@@ -7,6 +7,22 @@ namespace {
 
 size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
 
+// EnvMap: `cube` with its whole chain, read through a trilinear sampler. A shader that also
+// asks EnvMap its size reads it through a second unit, the texture alone ("EnvMap").
+struct BoundMippedEnvironment {
+    opengl::GlObject texture, sampler;
+};
+BoundMippedEnvironment bindMippedEnvironment(const opengl::EglContext& context, const OpenGlForm& form,
+                                             const MippedCube& cube) {
+    BoundMippedEnvironment bound{glpath::cubeTexture(context, GL_TEXTURE_CUBE_MAP, cube.size, cube.mips, cube.texels),
+                                 glpath::linearClampSampler(context)};
+    glpath::bindTexture(context, form, "EnvMap+EnvMapSampler", bound.texture);
+    context.gl().BindSampler(glpath::slotOf(form, "EnvMap+EnvMapSampler"), bound.sampler.name());
+    for (const auto& binding : form.glsl.bindings)
+        if (binding.resource == "EnvMap") glpath::bindTexture(context, form, "EnvMap", bound.texture);
+    return bound;
+}
+
 } // namespace
 
 std::vector<float> glSkyCube(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size, uint32_t supersample) {
@@ -73,6 +89,33 @@ std::vector<float> glIrradianceCube(const opengl::EglContext& context, const Ope
     const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip}.members());
     glpath::dispatch(context, program, form, {outSize, outSize, 6});
     return glpath::readTexture(context, irradiance, 0, GL_RGBA, cubeValues(outSize));
+}
+
+std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                     float roughness, uint32_t size) {
+    const auto program = glpath::program(context, form);
+    const auto envMap = bindMippedEnvironment(context, form, cube);
+    const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
+    glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
+    const auto parameters = glpath::bindParameters(context, form, kernels::PrefilterParameters{roughness}.members());
+    glpath::dispatch(context, program, form, {size, size, 6});
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+}
+
+std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                    std::span<const glm::vec4> table, uint32_t size) {
+    const auto program = glpath::program(context, form);
+    const auto envMap = bindMippedEnvironment(context, form, cube);
+    const auto bytes = std::as_bytes(table);
+    const auto samples = opengl::createBuffer(context);
+    context.gl().NamedBufferData(samples.name(), GLsizeiptr(bytes.size()), bytes.data(), GL_STATIC_DRAW);
+    context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "SampleTable"), samples.name());
+    const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
+    glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
+    const auto parameters =
+        glpath::bindParameters(context, form, kernels::PrefilterTableParameters{uint32_t(table.size())}.members());
+    glpath::dispatch(context, program, form, {size, size, 6});
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }
 
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {

@@ -4,6 +4,9 @@
 #include "kernels/kernel_steps.hpp"
 #include "suite_inputs.hpp"
 
+#include <glm/vec4.hpp>
+
+#include <span>
 #include <vector>
 
 namespace iblkit::consistency {
@@ -19,6 +22,10 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
                                   uint32_t mip);
 std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                     uint32_t mip, uint32_t outSize);
+std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                     float roughness, uint32_t size);
+std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                    std::span<const glm::vec4> table, uint32_t size);
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
 
 } // namespace iblkit::consistency

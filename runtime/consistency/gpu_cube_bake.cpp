@@ -60,6 +60,29 @@ std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const
     return irradiance.download(context);
 }
 
+std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const MippedCube& cube, float roughness, uint32_t size) {
+    kernels::Kernel kernel(context, program);
+    auto envMap = uploadCube(context, "EnvMap", cube);
+    const vulkan::Sampler linear(context, {});
+    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    kernels::runPrefilter(kernel, envMap, linear, prefiltered, 0, {roughness});
+    return prefiltered.download(context);
+}
+
+std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size) {
+    kernels::Kernel kernel(context, program);
+    auto envMap = uploadCube(context, "EnvMap", cube);
+    const vulkan::Sampler linear(context, {});
+    const auto bytes = std::as_bytes(table);
+    vulkan::Buffer samples(context, bytes.size(), vk::BufferUsageFlagBits::eStorageBuffer, "SampleTable");
+    samples.write(bytes);
+    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    kernels::runPrefilterTable(kernel, envMap, linear, samples, uint32_t(table.size()), prefiltered, 0);
+    return prefiltered.download(context);
+}
+
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs) {
     kernels::Kernel kernel(context, program);

@@ -5,6 +5,9 @@
 #include "suite_inputs.hpp"
 #include "vulkan_context.hpp"
 
+#include <glm/vec4.hpp>
+
+#include <span>
 #include <vector>
 
 namespace iblkit::consistency {
@@ -31,6 +34,13 @@ kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const P
 std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const MippedCube& cube, uint32_t mip, uint32_t outSize);
 
+// Prefilter of a method that reads the source's mips (PrefilterFilteredCS): `cube` with its
+// whole chain as EnvMap, read through a trilinear sampler, into size x size faces.
+std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                      const MippedCube& cube, float roughness, uint32_t size);
+// PrefilterTable: the same, each texel summing `table`'s samples.
+std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                     const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size);
 // Preview: the RGBA image, row by row.
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs);

@@ -60,12 +60,13 @@ void addOutput(SuiteRun& run, const OutputSpec& spec, const References& referenc
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
 // The outputs of each group of kernels (sampled_outputs.cpp, quadrature_outputs.cpp, cube_outputs.cpp,
-// convolution_outputs.cpp).
+// convolution_outputs.cpp, filtered_outputs.cpp).
 void addSampledOutputs(SuiteRun& run);
 void addQuadratureLutOutput(SuiteRun& run);
 void addChunkedOutputs(SuiteRun& run);
 void addCubeOutputs(SuiteRun& run);
 void addConvolutionOutputs(SuiteRun& run);
+void addFilteredOutputs(SuiteRun& run);
 void addPreviewOutput(SuiteRun& run);
 
 } // namespace iblkit::consistency

@@ -11,6 +11,8 @@ NamedValues PrefilterChunkParameters::members() const {
             {"Resolve", {resolve ? 1.0 : 0.0}}};
 }
 
+NamedValues PrefilterTableParameters::members() const { return {{"SampleCount", {double(sampleCount)}}}; }
+
 NamedValues ClusterParameters::members() const { return {{"Level", {double(level)}}}; }
 
 NamedValues PrefilterConvolutionParameters::members() const {

@@ -24,6 +24,11 @@ struct PrefilterChunkParameters {
     NamedValues members() const;
 };
 
+struct PrefilterTableParameters {
+    uint32_t sampleCount = 0; // entries of the sample table
+    NamedValues members() const;
+};
+
 struct ClusterParameters {
     uint32_t level = 0;
     NamedValues members() const;

@@ -55,6 +55,16 @@ void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sa
     });
 }
 
+void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, const vulkan::Buffer& table,
+                       uint32_t entries, vulkan::Image& target, uint32_t mip) {
+    kernel.program().bind("EnvMap", source);
+    kernel.program().bind("EnvMapSampler", sampler);
+    kernel.program().bind("SampleTable", table);
+    kernel.program().bind("Prefiltered", target, mip);
+    kernel.setParameters(PrefilterTableParameters{entries}.members());
+    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
 void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid) {
     kernel.program().bind("Source", source);
     kernel.program().bind("EnergyIn", pyramid.energy);

@@ -2,6 +2,7 @@
 
 #include "kernels/kernel.hpp"
 
+#include "buffer.hpp"
 #include "image.hpp"
 
 #include <glm/vec3.hpp>
@@ -50,6 +51,11 @@ void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
 // PrefilterChunk over all `samples`, `chunk` per dispatch, through an accumulator it makes.
 void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                          uint32_t mip, float roughness, uint32_t samples, uint32_t chunk);
+
+// PrefilterTable: one mip of `target` from `source`, each texel summing the `entries` samples of
+// `table` (float4 each, reference::prefilterSampleTable's) in its own frame.
+void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, const vulkan::Buffer& table,
+                       uint32_t entries, vulkan::Image& target, uint32_t mip);
 
 // ClusterCubeCS's three pyramids: RGBA32F cubes the size of the source, with a full mip chain,
 // sampled and storage.

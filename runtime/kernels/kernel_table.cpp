@@ -13,6 +13,7 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"brdf-lut-chunk", KernelRole::BrdfLutChunk},
     {"prefilter", KernelRole::Prefilter},
     {"prefilter-chunk", KernelRole::PrefilterChunk},
+    {"prefilter-table", KernelRole::PrefilterTable},
     {"cluster-cube", KernelRole::ClusterCube},
     {"prefilter-convolution", KernelRole::PrefilterConvolution},
     {"sky-cube", KernelRole::SkyCube},

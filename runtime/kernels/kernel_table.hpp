@@ -18,6 +18,7 @@ enum class KernelRole {
     BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
     Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
+    PrefilterTable, // EnvMap + EnvMapSampler + SampleTable -> Prefiltered (one mip); PrefilterTableParameters
     ClusterCube,    // Source -> Energy + Centroid + Geometry (one pyramid level); ClusterParameters
     PrefilterConvolution, // Energy + Centroid + Geometry -> Prefiltered (one mip); PrefilterConvolutionParameters
     SkyCube,        // the built-in environment into mip 0 of a cube; SupersampleParameters

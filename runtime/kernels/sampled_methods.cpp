@@ -3,6 +3,7 @@
 #include "kernels/kernel_steps.hpp"
 #include "kernels/lut_methods.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace iblkit::kernels {
@@ -23,6 +24,11 @@ std::map<std::string, std::string> imageFormats(KernelRole role) {
 }
 
 KernelProgram compileSampled(KernelRole role, const std::string& method, uint32_t samples, const ShaderFiles& files) {
+    const auto methods = methodsOf(role);
+    const bool chunked = role == KernelRole::PrefilterChunk || role == KernelRole::BrdfLutChunk;
+    if (chunked && std::find(methods.begin(), methods.end(), method) == methods.end())
+        throw std::invalid_argument("the method '" + method + "' has no chunked kernel, so it takes at most " +
+                                    std::to_string(kLoopLimit) + " samples, not " + std::to_string(samples));
     return compileKernel(kernelFor(role, method), sampleCountDefine(samples), imageFormats(role), files);
 }
 

@@ -1,42 +1,62 @@
 #include "kernels/specular_method.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace iblkit::kernels {
+namespace {
 
-bool isConvolutionMethod(const std::string& method) {
-    for (const auto& kernel : kernelTable())
-        if (kernel.method == method && kernel.role == KernelRole::PrefilterConvolution) return true;
-    kernelFor(KernelRole::Prefilter, method); // throws for a method with neither
-    return false;
+bool hasKernel(KernelRole role, const std::string& method) {
+    const auto methods = methodsOf(role);
+    return std::find(methods.begin(), methods.end(), method) != methods.end();
 }
+
+} // namespace
+
+SpecularKind specularKindOf(const std::string& method) {
+    if (hasKernel(KernelRole::PrefilterConvolution, method)) return SpecularKind::Convolution;
+    if (hasKernel(KernelRole::PrefilterTable, method)) return SpecularKind::Table;
+    kernelFor(KernelRole::Prefilter, method); // throws for a method with none
+    return SpecularKind::Sampled;
+}
+
+bool isConvolutionMethod(const std::string& method) { return specularKindOf(method) == SpecularKind::Convolution; }
 
 std::vector<std::string> specularMethods() {
     auto methods = methodsOf(KernelRole::Prefilter);
-    for (const auto& method : methodsOf(KernelRole::PrefilterConvolution)) methods.push_back(method);
+    for (const auto role : {KernelRole::PrefilterTable, KernelRole::PrefilterConvolution})
+        for (const auto& method : methodsOf(role)) methods.push_back(method);
     return methods;
 }
 
 uint32_t maxSamplesOf(const std::string& method) {
-    return isConvolutionMethod(method) ? kMaxConvolutionBudget : kMaxSamples;
+    switch (specularKindOf(method)) {
+    case SpecularKind::Convolution: return kMaxConvolutionBudget;
+    case SpecularKind::Table: return kLoopLimit;
+    case SpecularKind::Sampled: break;
+    }
+    return hasKernel(KernelRole::PrefilterChunk, method) ? kMaxSamples : kLoopLimit;
 }
 
 SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
                                const ShaderFiles& files) {
-    if (isConvolutionMethod(method))
-        convolution_.emplace(context, method, samples, files);
-    else
-        sampled_.emplace(context, method, samples, 0, files);
+    switch (specularKindOf(method)) {
+    case SpecularKind::Convolution: convolution_.emplace(context, method, samples, files); break;
+    case SpecularKind::Table: table_.emplace(context, method, samples, files); break;
+    case SpecularKind::Sampled: sampled_.emplace(context, method, samples, 0, files); break;
+    }
 }
 
 void SpecularMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                          float roughness) {
     if (convolution_) return convolution_->run(source, target, mip, roughness);
+    if (table_) return table_->run(source, sampler, target, mip, roughness);
     sampled_->run(source, sampler, target, mip, roughness);
 }
 
 DispatchTotals SpecularMethod::takeTotals() {
-    return convolution_ ? convolution_->takeTotals() : sampled_->takeTotals();
+    if (convolution_) return convolution_->takeTotals();
+    return table_ ? table_->takeTotals() : sampled_->takeTotals();
 }
 
 uint32_t SpecularMethod::chunkSamples() const { return sampled_ ? sampled_->chunkSamples() : 0; }

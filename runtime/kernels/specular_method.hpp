@@ -2,6 +2,7 @@
 
 #include "kernels/convolution_method.hpp"
 #include "kernels/sampled_methods.hpp"
+#include "kernels/table_method.hpp"
 
 #include <optional>
 #include <string>
@@ -9,15 +10,20 @@
 
 namespace iblkit::kernels {
 
-// Whether `method`'s prefilter is the convolution (ClusterCube + PrefilterConvolution) rather
-// than a sampled estimator (Prefilter, PrefilterChunk). Throws std::out_of_range for a method
-// with neither.
+// How a prefilter method's kernels compute a mip: a sampled estimator with its per-sample work
+// on the GPU (Prefilter, PrefilterChunk), a host sample table (PrefilterTable), or the
+// convolution (ClusterCube + PrefilterConvolution). Throws std::out_of_range for a method with
+// none of them.
+enum class SpecularKind { Sampled, Table, Convolution };
+SpecularKind specularKindOf(const std::string& method);
 bool isConvolutionMethod(const std::string& method);
 
-// Every method with a prefilter kernel: the sampled ones, then the convolutions, in table order.
+// Every method with a prefilter kernel: the sampled ones, the tables, then the convolutions, in
+// table order.
 std::vector<std::string> specularMethods();
 
-// The largest sample count (budget, for the convolution) `method`'s prefilter takes. Throws
+// The largest sample count (budget, for the convolution) `method`'s prefilter takes: a sampled
+// method without a chunked twin, and a table, stop at the driver's loop limit. Throws
 // std::out_of_range for a method with no prefilter kernel.
 uint32_t maxSamplesOf(const std::string& method);
 
@@ -35,6 +41,7 @@ public:
 
 private:
     std::optional<PrefilterMethod> sampled_;
+    std::optional<TablePrefilter> table_;
     std::optional<ConvolutionPrefilter> convolution_;
 };
 

@@ -1,8 +1,7 @@
 #include "reference_bake.hpp"
 
-#include "parallel_rows.hpp"
 #include "cube_geometry.hpp"
-#include "pbr.hpp"
+#include "prefilter_faces.hpp"
 #include "reference_irradiance.hpp"
 
 #include <algorithm>
@@ -48,21 +47,8 @@ std::vector<T> referenceBrdfLut(uint32_t size, uint32_t sampleCount) {
 
 template <typename T>
 std::vector<T> referencePrefilter(const CubeEnvironment& environment, T roughness, uint32_t size, uint32_t sampleCount) {
-    std::vector<T> faces(size_t(6) * size * size * 4);
     const auto envMap = [&](vec3<T> direction) { return vec3<T>(environment.sample(glm::dvec3(direction))); };
-    forEachRow(6 * size, [&](uint32_t faceRow) {
-        const uint32_t face = faceRow / size, y = faceRow % size;
-        for (uint32_t x = 0; x < size; ++x) {
-            const vec3<T> normal = PrefilterFaceDirection<T>(face, x, y, size);
-            const vec3<T> color = PrefilterSpecular<T>(normal, roughness, envMap, sampleCount);
-            const size_t at = ((size_t(face) * size + y) * size + x) * 4;
-            faces[at] = color.r;
-            faces[at + 1] = color.g;
-            faces[at + 2] = color.b;
-            faces[at + 3] = T(0);
-        }
-    });
-    return faces;
+    return prefilterFaces<T>(size, [&](vec3<T> normal) { return PrefilterSpecular<T>(normal, roughness, envMap, sampleCount); });
 }
 
 template <typename T>

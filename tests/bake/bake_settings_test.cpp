@@ -68,7 +68,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.size = 32768; }, "--size");
     refused([](BakeSettings& s) { s.samples = 0; }, "--samples");
     refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 32768)");
-    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, convolution)");
+    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, filtered, table, convolution)");
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
     refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature)");
     refused([](BakeSettings& s) { s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");

@@ -51,11 +51,11 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 16u * 6u + 5u)
+    ASSERT_EQ(rows.size(), 24u * 6u + 5u)
         << "LUT 512² and 32², the quadrature LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
-           "harmonics, the irradiance cube, the energy pyramid and its convolution: the float reference and five paths "
-           "each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 17)
+           "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered and table prefilters at "
+           "four roughnesses: the float reference and five paths each; the preview: path a as the reference and four paths";
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 25)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -128,7 +128,8 @@ TEST_F(BrokenVariant, ImpreciseArcFailsTheQuadratureLut) {
 TEST_F(BrokenVariant, SwappedCubeFaceFailsEveryKernelOfCubeFxh) {
     const auto rows = run(broken("Common/Cube.fxh", "direction = float3( uv.x, 1.f, -uv.y );", "direction = float3( uv.x, -1.f, uv.y );"));
     for (const char* kernel : {"PrefilterSpecularChunkCS", "EquirectToCubeCS", "ShProjectCS", "IrradianceCubeCS",
-                               "ClusterCubeCS", "PrefilterConvolutionCS", "SkyCubeCS"})
+                               "ClusterCubeCS", "PrefilterConvolutionCS", "SkyCubeCS", "PrefilterFilteredCS",
+                               "PrefilterTableCS"})
         expectEveryPathFails(rows, kernel);
 }
 
@@ -138,6 +139,18 @@ TEST_F(BrokenVariant, LightMeanOverTheWrongWeightFailsTheConvolution) {
                                  "float3 light = weighted.w > 0.f ? weighted.xyz / weighted.w : extent;",
                                  "float3 light = weighted.w > 0.f ? weighted.xyz / geometry.w : extent;"));
     expectEveryPathFails(rows, "PrefilterConvolutionCS");
+}
+
+// HLSL's log is the natural one: a port that writes it for log2 reads every sample 0.69 times as
+// far up the chain.
+TEST_F(BrokenVariant, NaturalLogLodFailsTheFilteredPrefilter) {
+    const auto rows = run(broken("PrefilterFilteredCS.hlsl", "log2( texelsPerSample )", "log( texelsPerSample )"));
+    expectEveryPathFails(rows, "PrefilterFilteredCS");
+}
+
+TEST_F(BrokenVariant, UnweightedSamplesFailTheTablePrefilter) {
+    const auto rows = run(broken("PrefilterTableCS.hlsl", ".rgb * entry.z;", ".rgb;"));
+    expectEveryPathFails(rows, "PrefilterTableCS");
 }
 
 // A wrong 2x2 weight: texel (1, 0) read twice, (1, 1) never.

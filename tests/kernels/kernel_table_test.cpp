@@ -20,7 +20,7 @@ TEST(KernelTable, EveryManifestShaderIsAKernelAndCompiles) {
         roles.insert(kernel.role);
         EXPECT_NO_THROW(compileKernel(kernel)) << kernel.name;
     }
-    EXPECT_EQ(roles.size(), 12u) << "every role has a kernel";
+    EXPECT_EQ(roles.size(), 13u) << "every role has a kernel";
 }
 
 TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
@@ -30,7 +30,8 @@ TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
     EXPECT_EQ(document, (std::set<std::string>{"PrecomputedBrdfCS", "PrefilterSpecularCS"}));
     EXPECT_EQ(kernelFor(KernelRole::Prefilter, "document").name, "PrefilterSpecularCS");
     EXPECT_EQ(kernelFor(KernelRole::PrefilterChunk, "document").name, "PrefilterSpecularChunkCS");
-    EXPECT_EQ(methodsOf(KernelRole::Prefilter), std::vector<std::string>{"document"});
+    EXPECT_EQ(methodsOf(KernelRole::Prefilter), (std::vector<std::string>{"document", "filtered"}));
+    EXPECT_EQ(methodsOf(KernelRole::PrefilterTable), std::vector<std::string>{"table"});
     EXPECT_EQ(methodsOf(KernelRole::PrefilterConvolution), std::vector<std::string>{"convolution"});
 }
 

@@ -57,11 +57,12 @@ void addBakeCommand(CLI::App& app) {
     command->add_option("--size", s.size, "Cube face size, a power of two (default 256)");
     command->add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
     command->add_option("--method", s.specularMethod,
-                        "Prefilter method: convolution (default; an exact sum over the source's texels as a tree) "
-                        "or document (the documents' importance sampling)");
+                        "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
+                        "table (filtered importance sampling from a host sample table), filtered (the same, per "
+                        "sample on the GPU) or document (the documents' importance sampling)");
     command->add_option("--samples", s.samples,
-                        "Prefilter samples per texel, or for the convolution its budget of terms per texel "
-                        "(default 1024 for document, 128 for convolution)");
+                        "Prefilter samples per texel (for table, mip 1's, doubling per mip), or for the convolution "
+                        "its budget of terms per texel (default 1024, 128 for convolution)");
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-method", s.lutMethod,
                         "BRDF LUT method: quadrature (default; a deterministic quadrature, exact in azimuth) or document "

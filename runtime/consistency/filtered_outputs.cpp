@@ -1,0 +1,37 @@
+// The prefilter methods that read the source's mips: filtered importance sampling and its
+// host sample table, over the test environment with its whole chain.
+#include "filtered_prefilter.hpp"
+#include "gl_cube_bake.hpp"
+#include "gpu_cube_bake.hpp"
+#include "prefilter_sample_table.hpp"
+#include "suite_run.hpp"
+
+#include <bit>
+
+#include <fmt/core.h>
+
+namespace iblkit::consistency {
+
+void addFilteredOutputs(SuiteRun& run) {
+    const auto& options = run.options;
+    const uint32_t size = options.prefilterSize, samples = options.sampleCount;
+    const auto cube = testCube(options.environmentSize, uint32_t(std::bit_width(options.environmentSize)));
+    const reference::MippedEnvironment source(cube);
+    for (const float roughness : options.roughnesses) {
+        addOutput(run, {"PrefilterFilteredCS", fmt::format("prefilter {}² r={} from every mip", size, roughness),
+                        filteredBounds()},
+                  {reference::referenceFilteredPrefilter<float>(source, roughness, size, samples),
+                   reference::referenceFilteredPrefilter<double>(source, double(roughness), size, samples)},
+                  [&](const PathProgram& program) { return gpuMippedPrefilter(run.vulkan, program, cube, roughness, size); },
+                  [&](const OpenGlForm& form) { return glMippedPrefilter(run.gl, form, cube, roughness, size); });
+        const auto table = reference::prefilterSampleTable(roughness, samples, cube.size);
+        addOutput(run, {"PrefilterTableCS", fmt::format("prefilter {}² r={}, {} table samples", size, roughness, table.size()),
+                        tableBounds()},
+                  {reference::referenceTablePrefilter<float>(source, table, size),
+                   reference::referenceTablePrefilter<double>(source, table, size)},
+                  [&](const PathProgram& program) { return gpuTablePrefilter(run.vulkan, program, cube, table, size); },
+                  [&](const OpenGlForm& form) { return glTablePrefilter(run.gl, form, cube, table, size); });
+    }
+}
+
+} // namespace iblkit::consistency

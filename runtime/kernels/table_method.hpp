@@ -1,0 +1,30 @@
+#pragma once
+
+#include "kernels/kernel.hpp"
+
+#include "image.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace iblkit::kernels {
+
+// The sample-table method: per mip, the samples' directions, weights and lods computed on the
+// host in double (reference::prefilterSampleTable) and shared by every texel of the mip. Throws
+// std::invalid_argument for 0 samples or more than the loop limit (the shader's loop runs once
+// per entry).
+class TablePrefilter {
+public:
+    TablePrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
+                   const ShaderFiles& files = embeddedShaderFiles());
+    // Writes mip `mip` of `target` (RGBA32F, storage) from `source` (with its mip chain, read
+    // through `sampler`) at `roughness`.
+    void run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip, float roughness);
+    DispatchTotals takeTotals() { return kernel_.takeTotals(); }
+
+private:
+    uint32_t samples_;
+    Kernel kernel_;
+};
+
+} // namespace iblkit::kernels
