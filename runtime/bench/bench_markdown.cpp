@@ -1,5 +1,7 @@
 #include "bench_report.hpp"
 
+#include "bench_frontier.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -138,6 +140,9 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
             "- Irradiance: every texel against the exact sum over the source cube; relative error of luminance.\n\n";
     text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
     text += "### Time to reach the targets\n\n" + targetTable(run, environments) + "\n";
+    text += "### Lowest error at each time budget\n\nSpecular by the worst mip's RMS, the LUT by its max error; a budget "
+            "below a row's first time reaches nothing.\n\n" +
+            frontierTable(run, environments) + "\n";
     for (const auto& environment : environments) {
         text += fmt::format("### {}\n\n", environment);
         text += images(plots, "specular_" + environment + ".", relativeFolder);

@@ -22,7 +22,8 @@ std::vector<std::string> writeBenchResults(const BenchRun& run, const std::strin
 
 // The Markdown report: the machine, device, date and command; per environment the error of
 // every method and sample count per mip with its times; the LUT and irradiance tables; the
-// time each method needs to reach the error targets; and the plots, linked relative to
+// time each method needs to reach the error targets; the lowest error at each time budget and
+// whether the documents' estimator holds any; and the plots, linked relative to
 // `markdownFile`'s folder.
 std::string renderBenchMarkdown(const BenchRun& run, const std::string& command, const std::filesystem::path& folder,
                                 const std::vector<std::string>& plots, const std::filesystem::path& markdownFile);

@@ -52,6 +52,7 @@ TEST_F(BenchCli, WritesResultsPlotsAndReport) {
     EXPECT_NE(report.find("llvmpipe"), std::string::npos);
     EXPECT_NE(report.find("](bench/specular_sky.png)"), std::string::npos) << "plots linked relative to the report";
     EXPECT_NE(report.find("Time to reach the targets"), std::string::npos);
+    EXPECT_NE(report.find("| LUT (max) | "), std::string::npos) << "the time-error frontiers";
 }
 
 TEST_F(BenchCli, AFailedRunLeavesEarlierResultsAsTheyWere) {
