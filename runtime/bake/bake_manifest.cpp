@@ -61,17 +61,20 @@ uint32_t samplesPerDispatch(uint32_t samples) {
     return chunk ? chunk : samples;
 }
 
-// How the prefilter method computed the mips: a sampled estimator's or a sample table's count
-// and shader, or the convolution's budget of terms per texel and its two shaders.
-json prefilterJson(const BakeSettings& settings) {
+// How the prefilter method computed the mips: a sampled estimator's count and shader, a sample
+// table's count at each mip, or the convolution's budget of terms per texel and its two shaders.
+json prefilterJson(const BakeSettings& settings, uint32_t mips) {
     const uint32_t samples = resolvedSamples(settings);
     const auto& method = settings.specularMethod;
     const auto kind = kernels::specularKindOf(method);
-    if (kind == kernels::SpecularKind::Table)
+    if (kind == kernels::SpecularKind::Table) {
+        json perMip = json::array(); // mips 1 and up
+        for (uint32_t mip = 1; mip < mips; ++mip) perMip.push_back(kernels::tableSamplesAt(samples, mip));
         return {{"method", method},
                 {"samples", samples},
-                {"samples_per_dispatch", samples},
+                {"samples_of_mip", perMip},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterTable, method).options.source.generic_string()}};
+    }
     if (kind == kernels::SpecularKind::Convolution)
         return {{"method", method},
                 {"terms_per_texel", samples},
@@ -116,7 +119,7 @@ json specularJson(const ManifestFacts& facts) {
                      {"mips", facts.mips},
                      {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
                      {"roughness", roughness}};
-    specular.update(prefilterJson(*facts.settings));
+    specular.update(prefilterJson(*facts.settings, facts.mips));
     return specular;
 }
 

@@ -19,6 +19,11 @@ uint32_t checkedSamples(uint32_t samples) {
 
 } // namespace
 
+uint32_t tableSamplesAt(uint32_t samples, uint32_t mip) {
+    const uint32_t growth = mip > 0 ? mip - 1 : 0;
+    return uint32_t(std::min<uint64_t>(uint64_t(samples) << std::min(growth, 16u), kLoopLimit));
+}
+
 TablePrefilter::TablePrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
                                const ShaderFiles& files)
     : samples_(checkedSamples(samples)),
@@ -26,9 +31,7 @@ TablePrefilter::TablePrefilter(const vulkan::VulkanContext& context, const std::
 
 void TablePrefilter::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                          float roughness) {
-    const uint32_t growth = mip > 0 ? mip - 1 : 0;
-    const uint32_t samples = uint32_t(std::min<uint64_t>(uint64_t(samples_) << std::min(growth, 16u), kLoopLimit));
-    const auto table = reference::prefilterSampleTable(roughness, samples, source.desc().width);
+    const auto table = reference::prefilterSampleTable(roughness, tableSamplesAt(samples_, mip), source.desc().width);
     const auto bytes = std::as_bytes(std::span(table));
     vulkan::Buffer buffer(kernel_.context(), bytes.size(), vk::BufferUsageFlagBits::eStorageBuffer, "SampleTable");
     buffer.write(bytes);

@@ -9,6 +9,10 @@
 
 namespace iblkit::kernels {
 
+// The table's samples at `mip` for `samples` at mip 1: twice the mip below's, to the loop limit
+// (a mip has a quarter of the texels and a wider lobe, whose error falls about as 1 / samples).
+uint32_t tableSamplesAt(uint32_t samples, uint32_t mip);
+
 // The sample-table method: per mip, the samples' directions, weights and lods computed on the
 // host in double (reference::prefilterSampleTable) and shared by every texel of the mip. Throws
 // std::invalid_argument for 0 samples or more than the loop limit (the shader's loop runs once

@@ -95,6 +95,21 @@ TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
     EXPECT_GT(summary["steps"][2]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
 }
 
+// The table's count doubles per mip; the manifest says what each mip took, and both kit
+// methods that read the source's mips bake.
+TEST_F(BakeCli, TheTableAndFilteredMethodsBakeAndRecordTheirCounts) {
+    ASSERT_EQ(iblkit(small({"bake", "-o", at("table"), "--method", "table", "--mips", "3"})).exitCode, 0);
+    const auto table = nlohmann::json::parse(readFile(scratch.path() / "table" / "manifest.json"))["specular"];
+    EXPECT_EQ(table["method"], "table");
+    EXPECT_EQ(table["samples_of_mip"], nlohmann::json::parse("[16, 32]")) << "16² down to 4²: mips 1 and 2";
+    EXPECT_EQ(table["shader"], "hlsl/PrefilterTableCS.hlsl");
+    ASSERT_EQ(iblkit(small({"bake", "-o", at("filtered"), "--method", "filtered"})).exitCode, 0);
+    const auto filtered = nlohmann::json::parse(readFile(scratch.path() / "filtered" / "manifest.json"))["specular"];
+    EXPECT_EQ(filtered["samples"], 16);
+    EXPECT_EQ(filtered["shader"], "hlsl/PrefilterFilteredCS.hlsl");
+    expectFailure({"bake", "-o", at("out"), "--method", "table", "--samples", "65536"}, "--samples 65536 is out of range (1 to 65535)");
+}
+
 TEST_F(BakeCli, PanoramaFacesAndCubeInputsBake) {
     scratch.write("sky.hdr", radianceHdr(32, 16, 129));
     ASSERT_EQ(iblkit(small({"bake", at("sky.hdr"), "-o", at("from-hdr")})).exitCode, 0);
