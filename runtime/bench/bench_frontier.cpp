@@ -37,15 +37,15 @@ std::string frontierRow(const std::string& name, const std::vector<const BenchRe
     return fmt::format("| {} | {} | {} |\n", name, points, documentBudgets.empty() ? "none" : documentBudgets);
 }
 
-std::vector<const BenchResult*> ofOutput(const BenchRun& run, BenchOutput output, const std::string& environment) {
+} // namespace
+
+std::vector<const BenchResult*> resultsOf(const BenchRun& run, BenchOutput output, const std::string& environment) {
     std::vector<const BenchResult*> chosen;
     for (const auto& result : run.results)
         if (result.output == output && (output != BenchOutput::Specular || result.environment == environment))
             chosen.push_back(&result);
     return chosen;
 }
-
-} // namespace
 
 std::vector<const BenchResult*> timeErrorFrontier(std::vector<const BenchResult*> results,
                                                   double (*error)(const BenchResult&)) {
@@ -67,9 +67,9 @@ std::string frontierTable(const BenchRun& run, const std::vector<std::string>& e
     std::string text = "| output | fastest first, each more accurate than every faster configuration (device s, error) "
                        "| budgets where the documents' estimator is the lowest error |\n|---|---|---|\n";
     for (const auto& environment : environments)
-        text += frontierRow(environment, timeErrorFrontier(ofOutput(run, BenchOutput::Specular, environment), rmsError),
+        text += frontierRow(environment, timeErrorFrontier(resultsOf(run, BenchOutput::Specular, environment), rmsError),
                             rmsError, true);
-    if (const auto lut = ofOutput(run, BenchOutput::Lut, {}); !lut.empty())
+    if (const auto lut = resultsOf(run, BenchOutput::Lut, {}); !lut.empty())
         text += frontierRow("LUT (max)", timeErrorFrontier(lut, maxError), maxError, false);
     return text;
 }

@@ -7,6 +7,9 @@
 
 namespace iblkit::bench {
 
+// The results of `output` (on `environment`, for the specular output), in run order.
+std::vector<const BenchResult*> resultsOf(const BenchRun& run, BenchOutput output, const std::string& environment);
+
 // The configurations more accurate than every faster one (device time; `error` of each), fastest
 // first: the lowest error reached within each time budget.
 std::vector<const BenchResult*> timeErrorFrontier(std::vector<const BenchResult*> results,

@@ -23,14 +23,6 @@ std::string percent(double value) {
 
 std::string seconds(double milliseconds) { return fmt::format("{:.3g}", milliseconds / 1e3); }
 
-std::vector<const BenchResult*> select(const BenchRun& run, BenchOutput output, const std::string& environment) {
-    std::vector<const BenchResult*> chosen;
-    for (const auto& result : run.results)
-        if (result.output == output && (output != BenchOutput::Specular || result.environment == environment))
-            chosen.push_back(&result);
-    return chosen;
-}
-
 std::vector<std::string> environmentsOf(const BenchRun& run) {
     std::vector<std::string> names;
     for (const auto& result : run.results)
@@ -70,7 +62,7 @@ std::string targetTable(const BenchRun& run, const std::vector<std::string>& env
     for (const auto& environment : environments)
         for (const auto& method : methods) {
             const BenchResult *fastest = nullptr, *best = nullptr;
-            for (const auto* result : select(run, BenchOutput::Specular, environment)) {
+            for (const auto* result : resultsOf(run, BenchOutput::Specular, environment)) {
                 if (result->method != method) continue;
                 if (!best || result->errorRms < best->errorRms) best = result;
                 const bool meets = result->errorRms <= kTargetRms && result->errorMax <= kTargetMax;
@@ -88,7 +80,7 @@ std::string targetTable(const BenchRun& run, const std::vector<std::string>& env
 std::string lutTable(const BenchRun& run) {
     std::string text = "| method | samples (nodes per panel) | device s | wall s | max abs error | RMS abs error | RG16F: "
                        "furthest texel, half steps |\n|---|---:|---:|---:|---:|---:|---:|\n";
-    for (const auto* result : select(run, BenchOutput::Lut, {}))
+    for (const auto* result : resultsOf(run, BenchOutput::Lut, {}))
         text += fmt::format("| {} | {} | {} | {} | {:.2e} | {:.2e} | {} |\n", result->method, result->samples,
                             seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds), result->errorMax,
                             result->errorRms, result->halfSteps);
@@ -97,7 +89,7 @@ std::string lutTable(const BenchRun& run) {
 
 std::string irradianceTable(const BenchRun& run) {
     std::string text = "| environment | method | device s | wall s | RMS | max |\n|---|---|---:|---:|---:|---:|\n";
-    for (const auto* result : select(run, BenchOutput::Irradiance, {}))
+    for (const auto* result : resultsOf(run, BenchOutput::Irradiance, {}))
         text += fmt::format("| {} | {} | {} | {} | {} | {} |\n", result->environment, result->method,
                             seconds(result->deviceMilliseconds), seconds(result->wallMilliseconds),
                             percent(result->errorRms), percent(result->errorMax));
@@ -146,11 +138,11 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
     for (const auto& environment : environments) {
         text += fmt::format("### {}\n\n", environment);
         text += images(plots, "specular_" + environment + ".", relativeFolder);
-        text += specularTable(select(run, BenchOutput::Specular, environment)) + "\n";
+        text += specularTable(resultsOf(run, BenchOutput::Specular, environment)) + "\n";
     }
-    if (!select(run, BenchOutput::Lut, {}).empty())
+    if (!resultsOf(run, BenchOutput::Lut, {}).empty())
         text += "## BRDF LUT\n\n" + images(plots, "lut", relativeFolder) + lutTable(run) + "\n";
-    if (!select(run, BenchOutput::Irradiance, {}).empty())
+    if (!resultsOf(run, BenchOutput::Irradiance, {}).empty())
         text += "## Irradiance\n\n" + images(plots, "irradiance", relativeFolder) + irradianceTable(run);
     return text;
 }
