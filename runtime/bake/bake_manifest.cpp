@@ -91,6 +91,12 @@ json prefilterJson(const BakeSettings& settings, uint32_t mips) {
 json lutMethodJson(const BakeSettings& settings) {
     const uint32_t samples = resolvedLutSamples(settings);
     const auto& method = settings.lutMethod;
+    if (method == kernels::kQuadratureGridLutMethod)
+        return {{"method", method},
+                {"grid_nodes_per_side", samples},
+                {"nodes_per_panel", kernels::kDefaultQuadratureNodes},
+                {"shaders", {kernels::kernelFor(kernels::KernelRole::BrdfLutGrid, method).options.source.generic_string(),
+                             kernels::kernelFor(kernels::KernelRole::BrdfLutResample, method).options.source.generic_string()}}};
     if (method == kernels::kQuadratureLutMethod)
         return {{"method", method},
                 {"nodes_per_panel", samples},

@@ -41,6 +41,7 @@ void requireLutMethod(const std::string& method) {
 
 uint32_t resolvedLutSamples(const BakeSettings& settings) {
     if (settings.lutSamples) return *settings.lutSamples;
+    if (settings.lutMethod == kernels::kQuadratureGridLutMethod) return kDefaultLutGrid;
     return settings.lutMethod == kernels::kQuadratureLutMethod ? kernels::kDefaultQuadratureNodes : kDocumentSamples;
 }
 
@@ -76,7 +77,8 @@ void validateSettings(const BakeSettings& settings) {
     requireSpecularMethod(settings.specularMethod);
     if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
     requireLutMethod(settings.lutMethod);
-    if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, 1, kernels::maxLutSamplesOf(settings.lutMethod));
+    if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, kernels::minLutSamplesOf(settings.lutMethod),
+                     kernels::maxLutSamplesOf(settings.lutMethod));
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
     if (settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");

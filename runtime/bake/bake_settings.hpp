@@ -24,6 +24,9 @@ inline constexpr uint32_t kDocumentSamples = 1024; // the documents' SAMPLE_COUN
 // converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in about
 // a quarter of its time (docs/bench.md).
 inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureLutMethod;
+// The quadrature grid's nodes per side unless told otherwise: within 1e-4 of the converged LUT
+// at 512² (RG32F's target), at a tenth of the full quadrature's time (docs/bench.md).
+inline constexpr uint32_t kDefaultLutGrid = 128;
 
 struct BakeSettings {
     std::optional<std::filesystem::path> environment; // empty: the built-in environment
@@ -34,7 +37,7 @@ struct BakeSettings {
     std::optional<uint32_t> samples; // samples (budget of terms, for the convolution); default by method
     uint32_t lutSize = 512;
     std::string lutMethod = kDefaultLutMethod; // a LUT method of the kernel table
-    std::optional<uint32_t> lutSamples; // samples (nodes per panel, for the quadrature); default by method
+    std::optional<uint32_t> lutSamples; // samples (nodes per panel, for the quadrature; per side, for its grid); default by method
     LutFormat lutFormat = LutFormat::Rg16Float;
     uint32_t irradianceSize = 32;
     bool dds = false;

@@ -106,7 +106,7 @@ vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Im
 vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, const std::string& method, uint32_t samples,
                                BakeProgress& progress) {
     progress.begin("brdf lut");
-    kernels::BrdfLutMethod integrator(context, method, samples);
+    kernels::LutMethod integrator(context, method, samples);
     vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
     integrator.run(lut);
     progress.addDeviceTime(integrator.takeTotals().deviceMilliseconds);

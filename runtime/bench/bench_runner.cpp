@@ -57,8 +57,10 @@ std::vector<uint32_t> countsBeyond(const std::vector<uint32_t>& samples, const s
     return beyond;
 }
 
-// The counts a LUT method is measured at: the quadrature's nodes per panel, or the sample counts.
+// The counts a LUT method is measured at: the quadrature's nodes per panel, the quadrature grid's
+// nodes per side, or the sample counts.
 const std::vector<uint32_t>& lutCounts(const BenchOptions& options, const std::string& method) {
+    if (method == kernels::kQuadratureGridLutMethod) return options.lutGrids;
     return method == kernels::kQuadratureLutMethod ? options.quadratureNodes : options.samples;
 }
 
@@ -119,6 +121,10 @@ OutputMethods validate(const BenchOptions& options) {
         if (nodes == 0 || nodes > kernels::kMaxQuadratureNodes)
             throw BenchError(fmt::format("the LUT quadrature takes 1 to {} nodes per panel, not {}",
                                          kernels::kMaxQuadratureNodes, nodes));
+    for (const uint32_t grid : options.lutGrids)
+        if (grid < kernels::kMinLutGrid || grid > kernels::kMaxLutGrid)
+            throw BenchError(fmt::format("the LUT quadrature grid takes {} to {} nodes per side, not {}", kernels::kMinLutGrid,
+                                         kernels::kMaxLutGrid, grid));
     if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
     if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
     if (options.irradianceSize == 0 || options.irradianceSize > 1024)

@@ -1,7 +1,7 @@
 #include "measurements.hpp"
 
 #include "converged_lut.hpp"
-#include "kernels/sampled_methods.hpp"
+#include "kernels/lut_methods.hpp"
 
 #include <fmt/core.h>
 #include <glm/gtc/packing.hpp>
@@ -20,7 +20,7 @@ LutBench::LutBench(const vulkan::VulkanContext& context, const BenchOptions& opt
 }
 
 BenchResult LutBench::measure(const std::string& method, uint32_t samples) {
-    kernels::BrdfLutMethod integrator(context_, method, samples, 0, options_.shaderFiles);
+    kernels::LutMethod integrator(context_, method, samples, options_.shaderFiles);
     const uint32_t size = options_.lutSize;
     vulkan::Image lut(context_, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
     const auto timing = timeRepeated(options_.repeat, [&] {

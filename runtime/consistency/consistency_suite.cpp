@@ -25,7 +25,8 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
         if (isSampled(kernel.role)) shader.defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
         if (kernel.method == kernels::kQuadratureLutMethod)
             shader.defines["SAMPLE_COUNT"] = std::to_string(kernels::kDefaultQuadratureNodes);
-        if (kernel.role == kernels::KernelRole::BrdfLut) shader.imageFormats["Precomputed"] = "rg32f";
+        if (kernel.role == kernels::KernelRole::BrdfLut || kernel.role == kernels::KernelRole::BrdfLutResample)
+            shader.imageFormats["Precomputed"] = "rg32f";
         if (kernel.role == kernels::KernelRole::BrdfLutChunk)
             shader.imageFormats = {{"Precomputed", "rg32f"}, {"Accumulated", "rg32f"}};
         options.shaders.emplace(kernel.name, std::move(shader));
@@ -40,6 +41,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     SuiteRun run(context, gl, options);
     addSampledOutputs(run);
     addQuadratureLutOutput(run);
+    addGridLutOutputs(run);
     addChunkedOutputs(run);
     addCubeOutputs(run);
     addConvolutionOutputs(run);

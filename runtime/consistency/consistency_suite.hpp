@@ -13,7 +13,8 @@ namespace iblkit::consistency {
 struct SuiteOptions {
     // PrecomputedBrdfCS and PrefilterSpecularCS (the documents' shaders).
     std::vector<uint32_t> lutSizes{512, 32};
-    uint32_t quadratureLutSize = 128; // BrdfLutQuadratureCS, at its default nodes per panel
+    uint32_t quadratureLutSize = 128; // BrdfLutQuadratureCS, at its default nodes per panel, and BrdfLutResampleCS
+    uint32_t lutGridSize = 32;        // BrdfLutGridCS's nodes per side
     uint32_t prefilterSize = 32;
     uint32_t environmentSize = 64;
     std::vector<float> roughnesses{0.0f, 0.25f, 0.5f, 1.0f};
@@ -81,6 +82,8 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
 // The bounds of each output, and why each is those numbers (boundsRationale).
 Bounds lutBounds(uint32_t size);
 Bounds quadratureLutBounds();
+Bounds lutGridBounds();
+Bounds lutResampleBounds();
 Bounds prefilterBounds();
 Bounds lutChunkBounds();
 Bounds prefilterChunkBounds();

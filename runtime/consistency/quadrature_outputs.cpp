@@ -1,5 +1,8 @@
-// The quadrature LUT (BrdfLutQuadratureCS) against its C++ twin, in float and in double.
+// The quadrature LUT (BrdfLutQuadratureCS) and the quadrature grid's two kernels
+// (BrdfLutGridCS, BrdfLutResampleCS) against their C++ twins, in float and in double.
 #include "gpu_bake.hpp"
+#include "grid_lut_bake.hpp"
+#include "lut_grid.hpp"
 #include "kernels/lut_methods.hpp"
 #include "lut_quadrature.hpp"
 #include "suite_run.hpp"
@@ -14,6 +17,25 @@ void addQuadratureLutOutput(SuiteRun& run) {
               {reference::brdfLutQuadrature<float>(size, nodes), reference::brdfLutQuadrature<double>(size, nodes)},
               [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
               [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
+}
+
+void addGridLutOutputs(SuiteRun& run) {
+    const uint32_t gridSize = run.options.lutGridSize, size = run.options.quadratureLutSize;
+    const uint32_t nodes = kernels::kDefaultQuadratureNodes;
+    addOutput(run, {"BrdfLutGridCS", fmt::format("LUT grid {}², {} nodes per panel", gridSize, nodes), lutGridBounds()},
+              {reference::brdfLutGridNodes<float>(gridSize, nodes), reference::brdfLutGridNodes<double>(gridSize, nodes)},
+              [&](const PathProgram& program) { return gpuBrdfLutGrid(run.vulkan, program, gridSize); },
+              [&](const OpenGlForm& form) { return glBrdfLutGrid(run.gl, form, gridSize); });
+    // Every path resamples the same grid (the double nodes, rounded to float), so that the row
+    // measures the interpolation alone.
+    const auto nodesInDouble = reference::brdfLutGridNodes<double>(gridSize, nodes);
+    const std::vector<float> grid(nodesInDouble.begin(), nodesInDouble.end());
+    const std::vector<double> gridInDouble(grid.begin(), grid.end());
+    addOutput(run, {"BrdfLutResampleCS", fmt::format("LUT {}² from a {}² grid", size, gridSize), lutResampleBounds()},
+              {reference::resampleBrdfLutGrid<float>(grid, gridSize, size),
+               reference::resampleBrdfLutGrid<double>(gridInDouble, gridSize, size)},
+              [&](const PathProgram& program) { return gpuBrdfLutResample(run.vulkan, program, grid, gridSize, size); },
+              [&](const OpenGlForm& form) { return glBrdfLutResample(run.gl, form, grid, gridSize, size); });
 }
 
 } // namespace iblkit::consistency

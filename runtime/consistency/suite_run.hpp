@@ -63,6 +63,7 @@ void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun&
 // convolution_outputs.cpp, filtered_outputs.cpp).
 void addSampledOutputs(SuiteRun& run);
 void addQuadratureLutOutput(SuiteRun& run);
+void addGridLutOutputs(SuiteRun& run);
 void addChunkedOutputs(SuiteRun& run);
 void addCubeOutputs(SuiteRun& run);
 void addConvolutionOutputs(SuiteRun& run);

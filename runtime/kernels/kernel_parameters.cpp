@@ -13,6 +13,8 @@ NamedValues PrefilterChunkParameters::members() const {
 
 NamedValues PrefilterTableParameters::members() const { return {{"SampleCount", {double(sampleCount)}}}; }
 
+NamedValues LutGridParameters::members() const { return {{"GridSize", {double(gridSize)}}}; }
+
 NamedValues ClusterParameters::members() const { return {{"Level", {double(level)}}}; }
 
 NamedValues PrefilterConvolutionParameters::members() const {

@@ -29,6 +29,12 @@ struct PrefilterTableParameters {
     NamedValues members() const;
 };
 
+// BrdfLutGrid and BrdfLutResample: the quadrature grid's nodes per side.
+struct LutGridParameters {
+    uint32_t gridSize = 0;
+    NamedValues members() const;
+};
+
 struct ClusterParameters {
     uint32_t level = 0;
     NamedValues members() const;

@@ -111,6 +111,19 @@ void runBrdfLutChunked(Kernel& kernel, vulkan::Image& lut, uint32_t samples, uin
     });
 }
 
+void runBrdfLutGrid(Kernel& kernel, const vulkan::Buffer& grid, uint32_t gridSize) {
+    kernel.program().bind("Grid", grid);
+    kernel.setParameters(LutGridParameters{gridSize}.members());
+    kernel.run({gridSize, gridSize, 1});
+}
+
+void runBrdfLutResample(Kernel& kernel, const vulkan::Buffer& grid, uint32_t gridSize, vulkan::Image& lut) {
+    kernel.program().bind("Grid", grid);
+    kernel.program().bind("Precomputed", lut);
+    kernel.setParameters(LutGridParameters{gridSize}.members());
+    kernel.run({lut.desc().width, lut.desc().height, 1});
+}
+
 ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip) {
     const uint32_t size = source.mipWidth(mip), groupsPerSide = (size + 7) / 8;
     const uint32_t groups = groupsPerSide * groupsPerSide * 6;

@@ -31,6 +31,11 @@ void forEachChunk(uint32_t samples, uint32_t chunk, const Run& run) {
 // which threads. The kernel may come from any form of its shader (the bake's, or a
 // consistency path's); every command runs its GPU steps through these.
 
+// BrdfLutGrid: the quadrature at every node of a gridSize² grid, into `grid` (2 floats a node).
+void runBrdfLutGrid(Kernel& kernel, const vulkan::Buffer& grid, uint32_t gridSize);
+// BrdfLutResample: every texel of `lut` interpolated from `grid`.
+void runBrdfLutResample(Kernel& kernel, const vulkan::Buffer& grid, uint32_t gridSize, vulkan::Image& lut);
+
 // SkyCube: the built-in environment into mip 0 of a cube.
 void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SupersampleParameters& parameters);
 // EquirectToCube: a 2D panorama into mip 0 of a cube.

@@ -11,6 +11,8 @@ namespace {
 constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"brdf-lut", KernelRole::BrdfLut},
     {"brdf-lut-chunk", KernelRole::BrdfLutChunk},
+    {"brdf-lut-grid", KernelRole::BrdfLutGrid},
+    {"brdf-lut-resample", KernelRole::BrdfLutResample},
     {"prefilter", KernelRole::Prefilter},
     {"prefilter-chunk", KernelRole::PrefilterChunk},
     {"prefilter-table", KernelRole::PrefilterTable},

@@ -16,6 +16,8 @@ namespace iblkit::kernels {
 enum class KernelRole {
     BrdfLut,        // RWTexture2D Precomputed; SAMPLE_COUNT
     BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
+    BrdfLutGrid,    // RWTexture2D Grid (the nodes of Common/LutGrid.fxh); SAMPLE_COUNT
+    BrdfLutResample, // Texture2D Grid -> RWTexture2D Precomputed
     Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
     PrefilterTable, // EnvMap + EnvMapSampler + SampleTable -> Prefiltered (one mip); PrefilterTableParameters

@@ -1,8 +1,10 @@
 #pragma once
 
+#include "kernels/grid_lut_method.hpp"
 #include "kernels/sampled_methods.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,18 +12,41 @@ namespace iblkit::kernels {
 
 // The LUT methods differ in what their count means: the document's estimator takes samples per
 // texel; the quadrature (BrdfLutQuadratureCS) takes Gauss–Legendre nodes per panel, a
-// compile-time count of at most kMaxQuadratureNodes.
+// compile-time count of at most kMaxQuadratureNodes; the quadrature grid (BrdfLutGridCS, then
+// BrdfLutResampleCS) takes its grid's nodes per side, each integrated at kDefaultQuadratureNodes.
 inline constexpr const char* kQuadratureLutMethod = "quadrature";
+inline constexpr const char* kQuadratureGridLutMethod = "quadrature-grid";
 inline constexpr uint32_t kMaxQuadratureNodes = 16;
 // 7 nodes: within 6e-6 of the converged LUT at 512² on lavapipe, every texel of an RG16F LUT the
 // converged value's nearest half or its neighbour (6 leaves two a step further; docs/bench.md).
 inline constexpr uint32_t kDefaultQuadratureNodes = 7;
+// Catmull-Rom with quadratic end neighbours needs three nodes on either side of an interval's
+// ends; a grid as fine as the LUT gains nothing over the plain quadrature.
+inline constexpr uint32_t kMinLutGrid = 4;
+inline constexpr uint32_t kMaxLutGrid = 1024;
 
 // Every method with a LUT kernel, in table order.
 std::vector<std::string> lutMethods();
-// The largest count `method` takes. Throws std::out_of_range for a method with no LUT kernel.
+// The least and the largest count `method` takes. Throw std::out_of_range for a method with no
+// LUT kernel.
+uint32_t minLutSamplesOf(const std::string& method);
 uint32_t maxLutSamplesOf(const std::string& method);
 // What `method`'s count counts, for messages and the manifest.
 std::string lutCountName(const std::string& method);
+
+// A LUT method by name, whichever kernels implement it, at its count.
+class LutMethod {
+public:
+    LutMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t count,
+              const ShaderFiles& files = embeddedShaderFiles());
+    // Writes `lut` (R32G32_SFLOAT, storage) whole.
+    void run(vulkan::Image& lut);
+    DispatchTotals takeTotals();
+    uint32_t chunkSamples() const; // 0: one dispatch of the sampled estimator
+
+private:
+    std::optional<BrdfLutMethod> sampled_;
+    std::optional<GridLut> grid_;
+};
 
 } // namespace iblkit::kernels

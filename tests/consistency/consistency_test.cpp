@@ -51,11 +51,11 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 24u * 6u + 5u)
-        << "LUT 512² and 32², the quadrature LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
+    ASSERT_EQ(rows.size(), 26u * 6u + 5u)
+        << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered and table prefilters at "
            "four roughnesses: the float reference and five paths each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 25)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 27)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -118,10 +118,26 @@ TEST_F(BrokenVariant, SwappedCubeFaceFailsThePrefilter) {
     expectEveryPathFails(rows, "PrefilterSpecularCS");
 }
 
-// The visible arc's length from llvmpipe's atan (2e-5 off) instead of the shader's own.
+// The visible arc's length from llvmpipe's atan (2e-5 off) instead of the quadrature's own: both
+// LUT kernels that integrate fail.
 TEST_F(BrokenVariant, ImpreciseArcFailsTheQuadratureLut) {
-    const auto rows = run(broken("BrdfLutQuadratureCS.hlsl", "S[0] = 2.f * PreciseAtan( tanHalfArc );", "S[0] = 2.f * atan( tanHalfArc );"));
+    const auto rows = run(broken("Common/BrdfQuadrature.fxh", "S[0] = 2.f * PreciseAtan( tanHalfArc );", "S[0] = 2.f * atan( tanHalfArc );"));
     expectEveryPathFails(rows, "BrdfLutQuadratureCS");
+    expectEveryPathFails(rows, "BrdfLutGridCS");
+}
+
+// The grid's N.V at u² instead of u³: nodes where the interpolation does not look for them.
+TEST_F(BrokenVariant, SquareRootGridFailsTheGridNodes) {
+    const auto rows = run(broken("Common/LutGrid.fxh", "return float2( u * u * u,", "return float2( u * u,"));
+    expectEveryPathFails(rows, "BrdfLutGridCS");
+}
+
+// The edge node repeated past the grid's last node instead of extrapolated (the first interval
+// holds no texel of a 32² LUT: it ends at N.V = 1/31³).
+TEST_F(BrokenVariant, RepeatedEdgeNodeFailsTheResampling) {
+    const auto rows = run(broken("BrdfLutResampleCS.hlsl", "if ( cell == last - 1 ) after = 3.f * end - 3.f * start + before;",
+                                 "if ( cell == last - 1 ) after = end;"));
+    expectEveryPathFails(rows, "BrdfLutResampleCS");
 }
 
 // The kit's cube geometry: +Y's direction swapped for -Y's in Cube.fxh.

@@ -33,9 +33,10 @@ std::string invocation(const bench::BenchOptions& options, const std::vector<std
     std::string text = "iblkit bench";
     for (const auto& environment : options.environments) text += " " + word(environment);
     if (!options.methods.empty()) text += fmt::format(" --method {}", word(fmt::format("{}", fmt::join(options.methods, ","))));
-    text += fmt::format(" --samples {} --lut-nodes {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} "
+    text += fmt::format(" --samples {} --lut-nodes {} --lut-grid {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} "
                         "--repeat {} --outputs {}",
-                        fmt::join(options.samples, ","), fmt::join(options.quadratureNodes, ","), options.size,
+                        fmt::join(options.samples, ","), fmt::join(options.quadratureNodes, ","),
+                        fmt::join(options.lutGrids, ","), options.size,
                         options.lutSize, options.irradianceSize,
                         options.texelsPerMip, options.seed, options.repeat, fmt::join(outputs, ","));
     if (!options.context.device.empty()) text += " --device " + word(options.context.device);
@@ -65,6 +66,9 @@ void addBenchCommand(CLI::App& app) {
         ->delimiter(',');
     command->add_option("--lut-nodes", o.quadratureNodes,
                         "The LUT quadrature's Gauss-Legendre nodes per panel, 1 to 16 (default 3,4,5,6,7,8)")
+        ->delimiter(',');
+    command->add_option("--lut-grid", o.lutGrids,
+                        "The LUT quadrature grid's nodes per side, 4 to 1024 (default 8,16,32,64,128)")
         ->delimiter(',');
     command->add_option("--size", o.size, "Source cube face size, a power of two (default 256)");
     command->add_option("--lut-size", o.lutSize, "BRDF LUT size (default 512)");
