@@ -54,138 +54,148 @@ struct LutGridParameter
     uint GridSize;
 };
 
-kernel void main0(constant LutGridParameter& _209 [[buffer(0)]], const device Grid& Grid_1 [[buffer(1)]], texture2d<float, access::write> Precomputed [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant LutGridParameter& _228 [[buffer(0)]], const device Grid& Grid_1 [[buffer(1)]], texture2d<float, access::write> Precomputed [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint2 _385 = uint2(0u);
-        uint2 _386 = uint2(Precomputed.get_width(), Precomputed.get_height());
-        _385.x = _386.x;
-        _385.y = _386.y;
-        if (any(gl_GlobalInvocationID.xy >= _385))
+        uint2 _367 = uint2(0u);
+        uint2 _368 = uint2(Precomputed.get_width(), Precomputed.get_height());
+        _367.x = _368.x;
+        _367.y = _368.y;
+        if (any(gl_GlobalInvocationID.xy >= _367))
         {
             break;
         }
-        int2 _425 = int2(int(_209.GridSize));
-        int2 _387 = _425 - int2(1);
-        float2 _452 = float2(pow((float(param.x) + 0.5) / float(_385.x), 0.3333333432674407958984375) * float(uint(_387.x)), pow((float(param.y) + 0.5) / float(_385.y), 0.3333333432674407958984375) * float(uint(_387.y)));
-        float2 _388 = _452;
-        int2 _393 = min(int2(_452), (_425 - int2(2)));
-        float _464 = _388.x - float(_393.x);
-        float _581 = _464 * _464;
-        float _584 = _581 * _464;
-        float4 _609 = float4(fma(-_581, _464, fma(2.0, _581, -_464)), fma(3.0, _584, fma(-5.0, _581, 2.0)), fma(-3.0, _584, fma(4.0, _581, _464)), fma(_581, _464, -_581)) * 0.5;
-        float _471 = _388.y - float(_393.y);
-        float _616 = _471 * _471;
-        float _619 = _616 * _471;
-        float4 _396 = float4(fma(-_616, _471, fma(2.0, _616, -_471)), fma(3.0, _619, fma(-5.0, _616, 2.0)), fma(-3.0, _619, fma(4.0, _616, _471)), fma(_616, _471, -_616)) * 0.5;
-        float4 _403 = _609;
-        int _655 = clamp(_393.y - 1, 0, _387.y) * (_387.x + 1);
-        int _665 = _655 + _393.x;
-        int _671 = (_655 + _393.x) + 1;
-        int _679 = _655 + min((_393.x + 2), _387.x);
-        float2 _726;
-        if (_393.x == 0)
+        int2 _414 = int2(int(_228.GridSize));
+        int2 _369 = _414 - int2(1);
+        float2 _441 = float2(pow((float(param.x) + 0.5) / float(_367.x), 0.3333333432674407958984375) * float(uint(_369.x)), pow((float(param.y) + 0.5) / float(_367.y), 0.3333333432674407958984375) * float(uint(_369.y)));
+        float2 _370 = _441;
+        int2 _375 = min(int2(_441), (_414 - int2(2)));
+        float _453 = _370.x - float(_375.x);
+        float _526 = _453 * _453;
+        float _529 = _526 * _453;
+        float4 _554 = float4(fma(-_526, _453, fma(2.0, _526, -_453)), fma(3.0, _529, fma(-5.0, _526, 2.0)), fma(-3.0, _529, fma(4.0, _526, _453)), fma(_526, _453, -_526)) * 0.5;
+        float _460 = _370.y - float(_375.y);
+        float _561 = _460 * _460;
+        float _564 = _561 * _460;
+        int _603 = clamp(_375.y - 1, 0, _369.y) * (_369.x + 1);
+        int _611 = _603 + _375.x;
+        int _615 = (_603 + _375.x) + 1;
+        int _621 = _603 + min((_375.x + 2), _369.x);
+        float4 _597 = _554;
+        float2 _729;
+        if (_375.x == 0)
         {
-            _726 = ((Grid_1._data[_665] * 3.0) - (Grid_1._data[_671] * 3.0)) + Grid_1._data[_679];
+            _729 = ((Grid_1._data[_611] * 3.0) - (Grid_1._data[_615] * 3.0)) + Grid_1._data[_621];
         }
         else
         {
-            _726 = Grid_1._data[_655 + max((_393.x - 1), 0)];
+            _729 = Grid_1._data[_603 + max((_375.x - 1), 0)];
         }
-        float2 _728;
-        if (_393.x == (_387.x - 1))
+        float2 _731;
+        if (_375.x == (_369.x - 1))
         {
-            _728 = ((Grid_1._data[_671] * 3.0) - (Grid_1._data[_665] * 3.0)) + _726;
+            _731 = ((Grid_1._data[_615] * 3.0) - (Grid_1._data[_611] * 3.0)) + _729;
         }
         else
         {
-            _728 = Grid_1._data[_679];
+            _731 = Grid_1._data[_621];
         }
-        spvUnsafeArray<float2, 4> _399;
-        _399[0] = (((_726 * _403.x) + (Grid_1._data[_665] * _403.y)) + (Grid_1._data[_671] * _403.z)) + (_728 * _403.w);
-        _403 = _609;
-        int _751 = clamp(_393.y, 0, _387.y) * (_387.x + 1);
-        int _757 = _751 + _393.x;
-        int _761 = (_751 + _393.x) + 1;
-        int _766 = _751 + min((_393.x + 2), _387.x);
-        float2 _776;
-        if (_393.x == 0)
+        spvUnsafeArray<float2, 4> _381;
+        _381[0] = (((_729 * _597.x) + (Grid_1._data[_611] * _597.y)) + (Grid_1._data[_615] * _597.z)) + (_731 * _597.w);
+        int _754 = clamp(_375.y, 0, _369.y) * (_369.x + 1);
+        int _758 = _754 + _375.x;
+        int _760 = (_754 + _375.x) + 1;
+        int _763 = _754 + min((_375.x + 2), _369.x);
+        _597 = _554;
+        float2 _779;
+        if (_375.x == 0)
         {
-            _776 = ((Grid_1._data[_757] * 3.0) - (Grid_1._data[_761] * 3.0)) + Grid_1._data[_766];
+            _779 = ((Grid_1._data[_758] * 3.0) - (Grid_1._data[_760] * 3.0)) + Grid_1._data[_763];
         }
         else
         {
-            _776 = Grid_1._data[_751 + max((_393.x - 1), 0)];
+            _779 = Grid_1._data[_754 + max((_375.x - 1), 0)];
         }
-        float2 _785;
-        if (_393.x == (_387.x - 1))
+        float2 _788;
+        if (_375.x == (_369.x - 1))
         {
-            _785 = ((Grid_1._data[_761] * 3.0) - (Grid_1._data[_757] * 3.0)) + _776;
+            _788 = ((Grid_1._data[_760] * 3.0) - (Grid_1._data[_758] * 3.0)) + _779;
         }
         else
         {
-            _785 = Grid_1._data[_766];
+            _788 = Grid_1._data[_763];
         }
-        _399[1] = (((_776 * _403.x) + (Grid_1._data[_757] * _403.y)) + (Grid_1._data[_761] * _403.z)) + (_785 * _403.w);
-        _403 = _609;
-        int _821 = clamp(_393.y + 1, 0, _387.y) * (_387.x + 1);
-        int _827 = _821 + _393.x;
-        int _831 = (_821 + _393.x) + 1;
-        int _836 = _821 + min((_393.x + 2), _387.x);
-        float2 _846;
-        if (_393.x == 0)
+        _381[1] = (((_779 * _597.x) + (Grid_1._data[_758] * _597.y)) + (Grid_1._data[_760] * _597.z)) + (_788 * _597.w);
+        int _824 = clamp(_375.y + 1, 0, _369.y) * (_369.x + 1);
+        int _828 = _824 + _375.x;
+        int _830 = (_824 + _375.x) + 1;
+        int _833 = _824 + min((_375.x + 2), _369.x);
+        _597 = _554;
+        float2 _849;
+        if (_375.x == 0)
         {
-            _846 = ((Grid_1._data[_827] * 3.0) - (Grid_1._data[_831] * 3.0)) + Grid_1._data[_836];
+            _849 = ((Grid_1._data[_828] * 3.0) - (Grid_1._data[_830] * 3.0)) + Grid_1._data[_833];
         }
         else
         {
-            _846 = Grid_1._data[_821 + max((_393.x - 1), 0)];
+            _849 = Grid_1._data[_824 + max((_375.x - 1), 0)];
         }
-        float2 _855;
-        if (_393.x == (_387.x - 1))
+        float2 _858;
+        if (_375.x == (_369.x - 1))
         {
-            _855 = ((Grid_1._data[_831] * 3.0) - (Grid_1._data[_827] * 3.0)) + _846;
+            _858 = ((Grid_1._data[_830] * 3.0) - (Grid_1._data[_828] * 3.0)) + _849;
         }
         else
         {
-            _855 = Grid_1._data[_836];
+            _858 = Grid_1._data[_833];
         }
-        _399[2] = (((_846 * _403.x) + (Grid_1._data[_827] * _403.y)) + (Grid_1._data[_831] * _403.z)) + (_855 * _403.w);
-        _403 = _609;
-        int _891 = clamp(_393.y + 2, 0, _387.y) * (_387.x + 1);
-        int _897 = _891 + _393.x;
-        int _901 = (_891 + _393.x) + 1;
-        int _906 = _891 + min((_393.x + 2), _387.x);
-        float2 _916;
-        if (_393.x == 0)
+        _381[2] = (((_849 * _597.x) + (Grid_1._data[_828] * _597.y)) + (Grid_1._data[_830] * _597.z)) + (_858 * _597.w);
+        int _894 = clamp(_375.y + 2, 0, _369.y) * (_369.x + 1);
+        int _898 = _894 + _375.x;
+        int _900 = (_894 + _375.x) + 1;
+        int _903 = _894 + min((_375.x + 2), _369.x);
+        _597 = _554;
+        float2 _919;
+        if (_375.x == 0)
         {
-            _916 = ((Grid_1._data[_897] * 3.0) - (Grid_1._data[_901] * 3.0)) + Grid_1._data[_906];
+            _919 = ((Grid_1._data[_898] * 3.0) - (Grid_1._data[_900] * 3.0)) + Grid_1._data[_903];
         }
         else
         {
-            _916 = Grid_1._data[_891 + max((_393.x - 1), 0)];
+            _919 = Grid_1._data[_894 + max((_375.x - 1), 0)];
         }
-        float2 _925;
-        if (_393.x == (_387.x - 1))
+        float2 _928;
+        if (_375.x == (_369.x - 1))
         {
-            _925 = ((Grid_1._data[_901] * 3.0) - (Grid_1._data[_897] * 3.0)) + _916;
+            _928 = ((Grid_1._data[_900] * 3.0) - (Grid_1._data[_898] * 3.0)) + _919;
         }
         else
         {
-            _925 = Grid_1._data[_906];
+            _928 = Grid_1._data[_903];
         }
-        _399[3] = (((_916 * _403.x) + (Grid_1._data[_897] * _403.y)) + (Grid_1._data[_901] * _403.z)) + (_925 * _403.w);
-        if (_393.y == 0)
+        _381[3] = (((_919 * _597.x) + (Grid_1._data[_898] * _597.y)) + (Grid_1._data[_900] * _597.z)) + (_928 * _597.w);
+        float4 _393 = float4(fma(-_561, _460, fma(2.0, _561, -_460)), fma(3.0, _564, fma(-5.0, _561, 2.0)), fma(-3.0, _564, fma(4.0, _561, _460)), fma(_561, _460, -_561)) * 0.5;
+        float2 _725;
+        if (_375.y == 0)
         {
-            _399[0] = ((_399[1] * 3.0) - (_399[2] * 3.0)) + _399[3];
+            _725 = ((_381[1] * 3.0) - (_381[2] * 3.0)) + _381[3];
         }
-        if (_393.y == (_387.y - 1))
+        else
         {
-            _399[3] = ((_399[2] * 3.0) - (_399[1] * 3.0)) + _399[0];
+            _725 = _381[0];
         }
-        Precomputed.write(((((_399[0] * _396.x) + (_399[1] * _396.y)) + (_399[2] * _396.z)) + (_399[3] * _396.w)).xyyy, uint2(gl_GlobalInvocationID.xy));
+        float2 _727;
+        if (_375.y == (_369.y - 1))
+        {
+            _727 = ((_381[2] * 3.0) - (_381[1] * 3.0)) + _725;
+        }
+        else
+        {
+            _727 = _381[3];
+        }
+        Precomputed.write(((((_725 * _393.x) + (_381[1] * _393.y)) + (_381[2] * _393.z)) + (_727 * _393.w)).xyyy, uint2(gl_GlobalInvocationID.xy));
         break;
     } while(false);
 }

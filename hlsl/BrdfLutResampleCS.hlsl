@@ -2,7 +2,7 @@
 // (y + 0.5) / height) by bicubic Catmull-Rom interpolation of BrdfLutGridCS's nodes, in the
 // grid's coordinates (Common/LutGrid.fxh). Past the grid's first and last nodes, the missing
 // neighbour is extrapolated by the quadratic through the three nearest nodes: a repeated edge
-// node would make the end intervals first-order (1e-3 off at a 128² grid's N.V = 1 corner).
+// node would make the end intervals first-order (1.8e-3 off at a 128² grid's N.V = 1 corner).
 #include "Common/LutGrid.fxh"
 
 cbuffer LutGridParameter : register( b0 )
@@ -10,23 +10,25 @@ cbuffer LutGridParameter : register( b0 )
     uint GridSize; // nodes per side, at least 4
 };
 
-// A buffer, not a texture: llvmpipe loads a buffer as plain memory, and a texel fetch through
-// its sampling path (16 a texel here) cost as much as the rest of the kernel.
 StructuredBuffer<float2> Grid; // node (i, j) at j * GridSize + i
 RWTexture2D<float2> Precomputed;
 
-// Along a row of the grid: the four nodes around interval `cell` (0 to last - 1), weighted.
-float2 RowInterpolation( int row, int cell, int last, float4 weights )
+// Catmull-Rom through the four nodes around interval `cell` (0 to last - 1) of one axis. At the
+// first and last intervals, the neighbour outside the grid (passed as any node) is replaced by the
+// quadratic through the three nearest.
+float2 CatmullRom( float2 before, float2 start, float2 end, float2 after, int cell, int last, float4 weights )
 {
-    // Loads stay inside the grid's row.
-    int first = row * ( last + 1 );
-    float2 before = Grid[first + max( cell - 1, 0 )];
-    float2 start = Grid[first + cell];
-    float2 end = Grid[first + cell + 1];
-    float2 after = Grid[first + min( cell + 2, last )];
     if ( cell == 0 ) before = 3.f * start - 3.f * end + after;
     if ( cell == last - 1 ) after = 3.f * end - 3.f * start + before;
     return weights.x * before + weights.y * start + weights.z * end + weights.w * after;
+}
+
+// Along a row of the grid; loads stay inside the row.
+float2 RowInterpolation( int row, int cell, int last, float4 weights )
+{
+    int first = row * ( last + 1 );
+    return CatmullRom( Grid[first + max( cell - 1, 0 )], Grid[first + cell], Grid[first + cell + 1],
+                       Grid[first + min( cell + 2, last )], cell, last, weights );
 }
 
 [numthreads(8, 8, 1)]
@@ -44,7 +46,5 @@ void main( uint3 DTid : SV_DispatchThreadId )
     float2 rows[4];
     [unroll] for ( int k = 0; k < 4; ++k )
         rows[k] = RowInterpolation( clamp( cell.y - 1 + k, 0, last.y ), cell.x, last.x, across );
-    if ( cell.y == 0 ) rows[0] = 3.f * rows[1] - 3.f * rows[2] + rows[3];
-    if ( cell.y == last.y - 1 ) rows[3] = 3.f * rows[2] - 3.f * rows[1] + rows[0];
-    Precomputed[DTid.xy] = down.x * rows[0] + down.y * rows[1] + down.z * rows[2] + down.w * rows[3];
+    Precomputed[DTid.xy] = CatmullRom( rows[0], rows[1], rows[2], rows[3], cell.y, last.y, down );
 }

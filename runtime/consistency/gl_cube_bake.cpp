@@ -72,8 +72,7 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
     const auto source = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
     glpath::bindTexture(context, form, "Source", source);
     const uint32_t groupsPerSide = (cube.mipSize(mip) + 7) / 8, groups = groupsPerSide * groupsPerSide * 6;
-    const auto partials = glpath::storageBuffer(context, size_t(groups) * 9 * 16);
-    context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "Partials"), partials.name());
+    const auto partials = glpath::bindStorageBuffer(context, form, "Partials", size_t(groups) * 9 * 16);
     const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip}.members());
     glpath::dispatch(context, program, form, {groupsPerSide * 8, groupsPerSide * 8, 6});
     return kernels::sumShPartials(glpath::readBuffer(context, partials, size_t(groups) * 9 * 4), groups);
@@ -107,9 +106,7 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
     const auto program = glpath::program(context, form);
     const auto envMap = bindMippedEnvironment(context, form, cube);
     const auto bytes = std::as_bytes(table);
-    const auto samples = opengl::createBuffer(context);
-    context.gl().NamedBufferData(samples.name(), GLsizeiptr(bytes.size()), bytes.data(), GL_STATIC_DRAW);
-    context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "SampleTable"), samples.name());
+    const auto samples = glpath::bindStorageBuffer(context, form, "SampleTable", bytes.size(), bytes);
     const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
     glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
     const auto parameters =

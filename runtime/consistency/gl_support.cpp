@@ -4,6 +4,7 @@
 #include "gl_error.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace iblkit::consistency::glpath {
 namespace {
@@ -101,9 +102,16 @@ opengl::GlObject linearClampSampler(const opengl::EglContext& context) {
     return sampler;
 }
 
-opengl::GlObject storageBuffer(const opengl::EglContext& context, size_t bytes) {
+opengl::GlObject bindStorageBuffer(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                                   size_t bytes, std::span<const std::byte> contents) {
+    if (!contents.empty() && contents.size() != bytes)
+        throw std::invalid_argument("storage buffer " + resource + ": contents of " + std::to_string(contents.size()) +
+                                    " bytes for a buffer of " + std::to_string(bytes));
     auto buffer = opengl::createBuffer(context);
-    context.gl().NamedBufferData(buffer.name(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_READ);
+    context.gl().NamedBufferData(buffer.name(), GLsizeiptr(bytes), contents.empty() ? nullptr : contents.data(),
+                                 GL_DYNAMIC_READ);
+    context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, slotOf(form, resource), buffer.name());
+    context.check("binding a storage buffer");
     return buffer;
 }
 

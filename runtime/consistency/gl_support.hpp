@@ -42,7 +42,11 @@ opengl::GlObject texture2D(const opengl::EglContext& context, GLenum internalFor
                            uint32_t height, std::span<const float> texels = {});
 // Linear in and between mips, clamped to the edge: vulkan::Sampler's defaults.
 opengl::GlObject linearClampSampler(const opengl::EglContext& context);
-opengl::GlObject storageBuffer(const opengl::EglContext& context, size_t bytes);
+// A storage buffer of `bytes`, holding `contents` (exactly `bytes` of them; throws
+// std::invalid_argument otherwise) or left undefined when there are none, bound at the slot of
+// `resource`.
+opengl::GlObject bindStorageBuffer(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+                                   size_t bytes, std::span<const std::byte> contents = {});
 
 std::vector<float> readTexture(const opengl::EglContext& context, const opengl::GlObject& texture, uint32_t level,
                                GLenum format, size_t count);

@@ -14,12 +14,7 @@ vulkan::Buffer gridBuffer(const vulkan::VulkanContext& context, uint32_t gridSiz
 
 opengl::GlObject bindGrid(const opengl::EglContext& context, const OpenGlForm& form, uint32_t gridSize,
                           std::span<const float> values = {}) {
-    auto buffer = glpath::storageBuffer(context, gridValues(gridSize) * sizeof(float));
-    if (!values.empty())
-        context.gl().NamedBufferData(buffer.name(), GLsizeiptr(values.size_bytes()), values.data(), GL_DYNAMIC_READ);
-    context.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, glpath::slotOf(form, "Grid"), buffer.name());
-    context.check("binding the grid");
-    return buffer;
+    return glpath::bindStorageBuffer(context, form, "Grid", gridValues(gridSize) * sizeof(float), std::as_bytes(values));
 }
 
 } // namespace

@@ -33,16 +33,20 @@ glm::vec<4, T> CatmullRomWeights(T t) {
 }
 
 template <typename T>
+Pair<T> CatmullRom(Pair<T> before, Pair<T> start, Pair<T> end, Pair<T> after, int cell, int last, glm::vec<4, T> weights) {
+    if (cell == 0) before = T(3) * start - T(3) * end + after;
+    if (cell == last - 1) after = T(3) * end - T(3) * start + before;
+    return weights.x * before + weights.y * start + weights.z * end + weights.w * after;
+}
+
+template <typename T>
 Pair<T> RowInterpolation(std::span<const T> grid, int row, int cell, int last, glm::vec<4, T> weights) {
     const auto node = [&](int i) {
         const size_t at = (size_t(row) * size_t(last + 1) + size_t(i)) * 2;
         return Pair<T>(grid[at], grid[at + 1]);
     };
-    Pair<T> before = node(std::max(cell - 1, 0)), start = node(cell), end = node(cell + 1),
-            after = node(std::min(cell + 2, last));
-    if (cell == 0) before = T(3) * start - T(3) * end + after;
-    if (cell == last - 1) after = T(3) * end - T(3) * start + before;
-    return weights.x * before + weights.y * start + weights.z * end + weights.w * after;
+    return CatmullRom(node(std::max(cell - 1, 0)), node(cell), node(cell + 1), node(std::min(cell + 2, last)), cell, last,
+                      weights);
 }
 
 template <typename T>
@@ -52,9 +56,7 @@ Pair<T> ResampleTexel(std::span<const T> grid, int last, T ndotv, T roughness) {
     const auto across = CatmullRomWeights(position.x - T(cell.x)), down = CatmullRomWeights(position.y - T(cell.y));
     std::array<Pair<T>, 4> rows;
     for (int k = 0; k < 4; ++k) rows[k] = RowInterpolation(grid, std::clamp(cell.y - 1 + k, 0, last), cell.x, last, across);
-    if (cell.y == 0) rows[0] = T(3) * rows[1] - T(3) * rows[2] + rows[3];
-    if (cell.y == last - 1) rows[3] = T(3) * rows[2] - T(3) * rows[1] + rows[0];
-    return down.x * rows[0] + down.y * rows[1] + down.z * rows[2] + down.w * rows[3];
+    return CatmullRom(rows[0], rows[1], rows[2], rows[3], cell.y, last, down);
 }
 
 } // namespace

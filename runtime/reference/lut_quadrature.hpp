@@ -7,7 +7,7 @@
 
 namespace iblkit::reference {
 
-// hlsl/BrdfLutQuadratureCS.hlsl in C++, function by function (the same names, constants and
+// hlsl/Common/BrdfQuadrature.fxh (BrdfLutQuadratureCS's functions) in C++, function by function (the same names, constants and
 // order of operations): T = float follows the shader's arithmetic, T = double shows what the
 // method itself is worth. (scale, bias) at one (N.V, roughness) with `nodes` Gauss–Legendre
 // nodes per panel (1 to 16); N.V in [0, 1] and 1 - N.V, given apart for its precision near N.V = 1.
