@@ -62,7 +62,8 @@ uint32_t samplesPerDispatch(uint32_t samples) {
 }
 
 // How the prefilter method computed the mips: a sampled estimator's count and shader, a sample
-// table's count at each mip, or the convolution's budget of terms per texel and its two shaders.
+// table's count at each mip, the pyramid's reads per texel, or the convolution's budget of terms
+// per texel and its two shaders.
 json prefilterJson(const BakeSettings& settings, uint32_t mips) {
     const uint32_t samples = resolvedSamples(settings);
     const auto& method = settings.specularMethod;
@@ -75,6 +76,10 @@ json prefilterJson(const BakeSettings& settings, uint32_t mips) {
                 {"samples_of_mip", perMip},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterTable, method).options.source.generic_string()}};
     }
+    if (kind == kernels::SpecularKind::Pyramid)
+        return {{"method", method},
+                {"reads_per_texel", samples},
+                {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterPyramid, method).options.source.generic_string()}};
     if (kind == kernels::SpecularKind::Convolution)
         return {{"method", method},
                 {"terms_per_texel", samples},

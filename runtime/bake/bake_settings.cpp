@@ -47,7 +47,11 @@ uint32_t resolvedLutSamples(const BakeSettings& settings) {
 
 uint32_t resolvedSamples(const BakeSettings& settings) {
     if (settings.samples) return *settings.samples;
-    return kernels::isConvolutionMethod(settings.specularMethod) ? kDefaultConvolutionBudget : kDocumentSamples;
+    switch (kernels::specularKindOf(settings.specularMethod)) {
+    case kernels::SpecularKind::Convolution: return kDefaultConvolutionBudget;
+    case kernels::SpecularKind::Pyramid: return kDefaultPyramidReads;
+    default: return kDocumentSamples;
+    }
 }
 
 uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize) {

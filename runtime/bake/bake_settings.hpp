@@ -19,6 +19,7 @@ enum class LutFormat { Rg16Float, Rg32Float };
 // estimator at 1024 samples is off by tens of percent.
 inline constexpr const char* kDefaultSpecularMethod = "convolution";
 inline constexpr uint32_t kDefaultConvolutionBudget = 128;
+inline constexpr uint32_t kDefaultPyramidReads = 1;
 inline constexpr uint32_t kDocumentSamples = 1024; // the documents' SAMPLE_COUNT
 // The LUT method the bake runs unless told otherwise: the quadrature is within 6e-6 of the
 // converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in about

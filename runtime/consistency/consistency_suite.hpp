@@ -96,6 +96,7 @@ Bounds clusterBounds();
 Bounds convolutionBounds();
 Bounds filteredBounds();
 Bounds tableBounds();
+Bounds pyramidBounds();
 Bounds previewBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.

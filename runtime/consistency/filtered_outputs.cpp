@@ -1,8 +1,10 @@
-// The prefilter methods that read the source's mips: filtered importance sampling and its
-// host sample table, over the test environment with its whole chain.
+// The prefilter methods that read the source's mips: filtered importance sampling, its host
+// sample table, and the pyramid's reads along the normal, over the test environment with its
+// whole chain.
 #include "filtered_prefilter.hpp"
 #include "gl_cube_bake.hpp"
 #include "gpu_cube_bake.hpp"
+#include "kernels/pyramid_method.hpp"
 #include "prefilter_sample_table.hpp"
 #include "suite_run.hpp"
 
@@ -11,6 +13,11 @@
 #include <fmt/core.h>
 
 namespace iblkit::consistency {
+namespace {
+
+constexpr uint32_t kSuitePyramidReads = 2; // READ_COUNT in hlsl/shaders.json
+
+} // namespace
 
 void addFilteredOutputs(SuiteRun& run) {
     const auto& options = run.options;
@@ -31,6 +38,14 @@ void addFilteredOutputs(SuiteRun& run) {
                    reference::referenceTablePrefilter<double>(source, table, size)},
                   [&](const PathProgram& program) { return gpuTablePrefilter(run.vulkan, program, cube, table, size); },
                   [&](const OpenGlForm& form) { return glTablePrefilter(run.gl, form, cube, table, size); });
+        const auto reads = reference::fitPyramidReads(roughness, kSuitePyramidReads, cube.size);
+        const auto parameters = kernels::pyramidParameters(reads, kSuitePyramidReads);
+        addOutput(run, {"PrefilterPyramidCS", fmt::format("prefilter {}² r={}, {} pyramid reads", size, roughness, reads.size()),
+                        pyramidBounds()},
+                  {reference::referencePyramidPrefilter<float>(source, reads, size),
+                   reference::referencePyramidPrefilter<double>(source, reads, size)},
+                  [&](const PathProgram& program) { return gpuPyramidPrefilter(run.vulkan, program, cube, parameters, size); },
+                  [&](const OpenGlForm& form) { return glPyramidPrefilter(run.gl, form, cube, parameters, size); });
     }
 }
 

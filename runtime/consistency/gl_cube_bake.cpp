@@ -115,6 +115,17 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
     return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }
 
+std::vector<float> glPyramidPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                      const kernels::PrefilterPyramidParameters& reads, uint32_t size) {
+    const auto program = glpath::program(context, form);
+    const auto envMap = bindMippedEnvironment(context, form, cube);
+    const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
+    glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
+    const auto parameters = glpath::bindParameters(context, form, reads.members());
+    glpath::dispatch(context, program, form, {size, size, 6});
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+}
+
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
     const auto program = glpath::program(context, form);
     const auto cubeMap = [&](const MippedCube& cube) {

@@ -26,6 +26,8 @@ std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const Op
                                      float roughness, uint32_t size);
 std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                     std::span<const glm::vec4> table, uint32_t size);
+std::vector<float> glPyramidPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
+                                      const kernels::PrefilterPyramidParameters& reads, uint32_t size);
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
 
 } // namespace iblkit::consistency

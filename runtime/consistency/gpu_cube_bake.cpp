@@ -83,6 +83,17 @@ std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const
     return prefiltered.download(context);
 }
 
+std::vector<float> gpuPyramidPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                       const MippedCube& cube, const kernels::PrefilterPyramidParameters& reads,
+                                       uint32_t size) {
+    kernels::Kernel kernel(context, program);
+    auto envMap = uploadCube(context, "EnvMap", cube);
+    const vulkan::Sampler linear(context, {});
+    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    kernels::runPrefilterPyramid(kernel, envMap, linear, prefiltered, 0, reads);
+    return prefiltered.download(context);
+}
+
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs) {
     kernels::Kernel kernel(context, program);

@@ -41,6 +41,10 @@ std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, cons
 // PrefilterTable: the same, each texel summing `table`'s samples.
 std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size);
+// PrefilterPyramid: the same, each texel reading the chain along its normal at `reads`' lods.
+std::vector<float> gpuPyramidPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
+                                       const MippedCube& cube, const kernels::PrefilterPyramidParameters& reads,
+                                       uint32_t size);
 // Preview: the RGBA image, row by row.
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs);

@@ -1,5 +1,7 @@
 #include "kernels/kernel_parameters.hpp"
 
+#include <stdexcept>
+
 namespace iblkit::kernels {
 
 NamedValues PrefilterParameters::members() const { return {{"Roughness", {roughness}}}; }
@@ -12,6 +14,17 @@ NamedValues PrefilterChunkParameters::members() const {
 }
 
 NamedValues PrefilterTableParameters::members() const { return {{"SampleCount", {double(sampleCount)}}}; }
+
+NamedValues PrefilterPyramidParameters::members() const {
+    if (lods.size() != weights.size() || lods.empty() || lods.size() > 4)
+        throw std::invalid_argument("PrefilterPyramidCS takes 1 to 4 reads, each a lod and a weight");
+    std::vector<double> lodsOf(4, 0.0), weightsOf(4, 0.0);
+    for (size_t i = 0; i < lods.size(); ++i) {
+        lodsOf[i] = lods[i];
+        weightsOf[i] = weights[i];
+    }
+    return {{"ReadLods", lodsOf}, {"ReadWeights", weightsOf}};
+}
 
 NamedValues LutGridParameters::members() const { return {{"GridSize", {double(gridSize)}}}; }
 

@@ -29,6 +29,13 @@ struct PrefilterTableParameters {
     NamedValues members() const;
 };
 
+// reference::fitPyramidReads's reads: 1 to 4 lods and as many weights (members() throws
+// std::invalid_argument otherwise).
+struct PrefilterPyramidParameters {
+    std::vector<float> lods, weights;
+    NamedValues members() const;
+};
+
 // BrdfLutGrid and BrdfLutResample: the quadrature grid's nodes per side.
 struct LutGridParameters {
     uint32_t gridSize = 0;

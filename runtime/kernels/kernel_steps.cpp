@@ -65,6 +65,15 @@ void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
     kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
 }
 
+void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                         uint32_t mip, const PrefilterPyramidParameters& reads) {
+    kernel.program().bind("EnvMap", source);
+    kernel.program().bind("EnvMapSampler", sampler);
+    kernel.program().bind("Prefiltered", target, mip);
+    kernel.setParameters(reads.members());
+    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
 void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid) {
     kernel.program().bind("Source", source);
     kernel.program().bind("EnergyIn", pyramid.energy);

@@ -62,6 +62,11 @@ void runPrefilterChunked(Kernel& kernel, vulkan::Image& source, const vulkan::Sa
 void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, const vulkan::Buffer& table,
                        uint32_t entries, vulkan::Image& target, uint32_t mip);
 
+// PrefilterPyramid: one mip of `target`, each texel reading `source` along its normal at the
+// reads' lods.
+void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                         uint32_t mip, const PrefilterPyramidParameters& reads);
+
 // ClusterCubeCS's three pyramids: RGBA32F cubes the size of the source, with a full mip chain,
 // sampled and storage.
 struct EnergyPyramid {

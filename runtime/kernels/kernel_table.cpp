@@ -16,6 +16,7 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"prefilter", KernelRole::Prefilter},
     {"prefilter-chunk", KernelRole::PrefilterChunk},
     {"prefilter-table", KernelRole::PrefilterTable},
+    {"prefilter-pyramid", KernelRole::PrefilterPyramid},
     {"cluster-cube", KernelRole::ClusterCube},
     {"prefilter-convolution", KernelRole::PrefilterConvolution},
     {"sky-cube", KernelRole::SkyCube},

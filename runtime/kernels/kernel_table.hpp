@@ -16,11 +16,12 @@ namespace iblkit::kernels {
 enum class KernelRole {
     BrdfLut,        // RWTexture2D Precomputed; SAMPLE_COUNT
     BrdfLutChunk,   // + Accumulated; BrdfChunkParameters
-    BrdfLutGrid,    // RWTexture2D Grid (the nodes of Common/LutGrid.fxh); SAMPLE_COUNT
-    BrdfLutResample, // Texture2D Grid -> RWTexture2D Precomputed
+    BrdfLutGrid,    // RWStructuredBuffer Grid (the nodes of Common/LutGrid.fxh); LutGridParameters; SAMPLE_COUNT
+    BrdfLutResample, // StructuredBuffer Grid -> RWTexture2D Precomputed; LutGridParameters
     Prefilter,      // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterParameters
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
     PrefilterTable, // EnvMap + EnvMapSampler + SampleTable -> Prefiltered (one mip); PrefilterTableParameters
+    PrefilterPyramid, // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterPyramidParameters; READ_COUNT
     ClusterCube,    // Source -> Energy + Centroid + Geometry (one pyramid level); ClusterParameters
     PrefilterConvolution, // Energy + Centroid + Geometry -> Prefiltered (one mip); PrefilterConvolutionParameters
     SkyCube,        // the built-in environment into mip 0 of a cube; SupersampleParameters

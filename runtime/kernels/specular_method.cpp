@@ -1,5 +1,7 @@
 #include "kernels/specular_method.hpp"
 
+#include "pyramid_fit.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -16,6 +18,7 @@ bool hasKernel(KernelRole role, const std::string& method) {
 SpecularKind specularKindOf(const std::string& method) {
     if (hasKernel(KernelRole::PrefilterConvolution, method)) return SpecularKind::Convolution;
     if (hasKernel(KernelRole::PrefilterTable, method)) return SpecularKind::Table;
+    if (hasKernel(KernelRole::PrefilterPyramid, method)) return SpecularKind::Pyramid;
     kernelFor(KernelRole::Prefilter, method); // throws for a method with none
     return SpecularKind::Sampled;
 }
@@ -24,7 +27,7 @@ bool isConvolutionMethod(const std::string& method) { return specularKindOf(meth
 
 std::vector<std::string> specularMethods() {
     auto methods = methodsOf(KernelRole::Prefilter);
-    for (const auto role : {KernelRole::PrefilterTable, KernelRole::PrefilterConvolution})
+    for (const auto role : {KernelRole::PrefilterTable, KernelRole::PrefilterPyramid, KernelRole::PrefilterConvolution})
         for (const auto& method : methodsOf(role)) methods.push_back(method);
     return methods;
 }
@@ -33,6 +36,7 @@ uint32_t maxSamplesOf(const std::string& method) {
     switch (specularKindOf(method)) {
     case SpecularKind::Convolution: return kMaxConvolutionBudget;
     case SpecularKind::Table: return kLoopLimit;
+    case SpecularKind::Pyramid: return reference::kMaxPyramidReads;
     case SpecularKind::Sampled: break;
     }
     return hasKernel(KernelRole::PrefilterChunk, method) ? kMaxSamples : kLoopLimit;
@@ -43,6 +47,7 @@ SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::
     switch (specularKindOf(method)) {
     case SpecularKind::Convolution: convolution_.emplace(context, method, samples, files); break;
     case SpecularKind::Table: table_.emplace(context, method, samples, files); break;
+    case SpecularKind::Pyramid: pyramid_.emplace(context, method, samples, files); break;
     case SpecularKind::Sampled: sampled_.emplace(context, method, samples, 0, files); break;
     }
 }
@@ -51,11 +56,13 @@ void SpecularMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, 
                          float roughness) {
     if (convolution_) return convolution_->run(source, target, mip, roughness);
     if (table_) return table_->run(source, sampler, target, mip, roughness);
+    if (pyramid_) return pyramid_->run(source, sampler, target, mip, roughness);
     sampled_->run(source, sampler, target, mip, roughness);
 }
 
 DispatchTotals SpecularMethod::takeTotals() {
     if (convolution_) return convolution_->takeTotals();
+    if (pyramid_) return pyramid_->takeTotals();
     return table_ ? table_->takeTotals() : sampled_->takeTotals();
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "kernels/convolution_method.hpp"
+#include "kernels/pyramid_method.hpp"
+#include "kernels/pyramid_method.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "kernels/table_method.hpp"
 
@@ -11,24 +13,26 @@
 namespace iblkit::kernels {
 
 // How a prefilter method's kernels compute a mip: a sampled estimator with its per-sample work
-// on the GPU (Prefilter, PrefilterChunk), a host sample table (PrefilterTable), or the
-// convolution (ClusterCube + PrefilterConvolution). Throws std::out_of_range for a method with
-// none of them.
-enum class SpecularKind { Sampled, Table, Convolution };
+// on the GPU (Prefilter, PrefilterChunk), a host sample table (PrefilterTable), reads of the
+// source's mip chain along the normal (PrefilterPyramid), or the convolution (ClusterCube +
+// PrefilterConvolution). Throws std::out_of_range for a method with none of them.
+enum class SpecularKind { Sampled, Table, Pyramid, Convolution };
 SpecularKind specularKindOf(const std::string& method);
 bool isConvolutionMethod(const std::string& method);
 
-// Every method with a prefilter kernel: the sampled ones, the tables, then the convolutions, in
-// table order.
+// Every method with a prefilter kernel: the sampled ones, the tables, the pyramids, then the
+// convolutions, in table order.
 std::vector<std::string> specularMethods();
 
-// The largest sample count (budget, for the convolution) `method`'s prefilter takes: a sampled
-// method without a chunked twin, and a table, stop at the driver's loop limit. Throws
+// The largest sample count (budget, for the convolution; reads, for the pyramid) `method`'s
+// prefilter takes: a sampled method without a chunked twin, and a table, stop at the driver's
+// loop limit. Throws
 // std::out_of_range for a method with no prefilter kernel.
 uint32_t maxSamplesOf(const std::string& method);
 
 // A prefilter method by name, whichever kernels implement it. `samples` is the sample count of
-// a sampled method, and the budget of terms per output texel of the convolution.
+// a sampled method, the reads per texel of the pyramid, and the budget of terms per output texel
+// of the convolution.
 class SpecularMethod {
 public:
     SpecularMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
@@ -42,6 +46,7 @@ public:
 private:
     std::optional<PrefilterMethod> sampled_;
     std::optional<TablePrefilter> table_;
+    std::optional<PyramidPrefilter> pyramid_;
     std::optional<ConvolutionPrefilter> convolution_;
 };
 

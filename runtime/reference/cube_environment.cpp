@@ -76,7 +76,14 @@ CubeEnvironment CubeEnvironment::testEnvironment(uint32_t size) {
 
 glm::dvec3 CubeEnvironment::texel(uint32_t face, int column, int row) const {
     const int n = static_cast<int>(size_);
-    if (column < 0 || row < 0 || column >= n || row >= n) {
+    const bool outsideColumns = column < 0 || column >= n, outsideRows = row < 0 || row >= n;
+    if (outsideColumns && outsideRows) {
+        // Beyond a corner no face has the texel: the mean of the three around the corner, as
+        // llvmpipe reads it (taking one of the three put a single read 4 % off at a corner).
+        const int edgeColumn = std::clamp(column, 0, n - 1), edgeRow = std::clamp(row, 0, n - 1);
+        return (texel(face, edgeColumn, edgeRow) + texel(face, column, edgeRow) + texel(face, edgeColumn, row)) / 3.0;
+    }
+    if (outsideColumns || outsideRows) {
         // Beyond an edge: the texel of the neighbouring face that the extrapolated direction
         // reaches, as seamless cube filtering reads it.
         const auto other = cubeTexelOf(cubeTexelDirection(face, column, row, size_), size_);

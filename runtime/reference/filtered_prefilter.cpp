@@ -85,10 +85,26 @@ std::vector<T> referenceTablePrefilter(const MippedEnvironment& source, const st
     });
 }
 
+template <typename T>
+std::vector<T> referencePyramidPrefilter(const MippedEnvironment& source, const std::vector<PyramidRead>& reads, uint32_t size) {
+    return prefilterFaces<T>(size, [&](vec3<T> normal) {
+        const T lodShift = -T(0.5) * std::log2(majorAxisCube(normal));
+        vec3<T> color(0);
+        for (const auto& read : reads)
+            color += vec3<T>(source.sampleLevel(glm::dvec3(normal), double(std::max(T(read.lod) + lodShift, T(0))))) *
+                     T(read.weight);
+        return color;
+    });
+}
+
 template std::vector<float> referenceFilteredPrefilter<float>(const MippedEnvironment&, float, uint32_t, uint32_t);
 template std::vector<double> referenceFilteredPrefilter<double>(const MippedEnvironment&, double, uint32_t, uint32_t);
 template std::vector<float> referenceTablePrefilter<float>(const MippedEnvironment&, const std::vector<glm::vec4>&, uint32_t);
 template std::vector<double> referenceTablePrefilter<double>(const MippedEnvironment&, const std::vector<glm::vec4>&,
                                                              uint32_t);
+template std::vector<float> referencePyramidPrefilter<float>(const MippedEnvironment&, const std::vector<PyramidRead>&,
+                                                            uint32_t);
+template std::vector<double> referencePyramidPrefilter<double>(const MippedEnvironment&, const std::vector<PyramidRead>&,
+                                                              uint32_t);
 
 } // namespace iblkit::reference

@@ -2,6 +2,7 @@
 
 #include "cube_environment.hpp"
 #include "mipped_cube.hpp"
+#include "pyramid_fit.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -31,5 +32,9 @@ std::vector<T> referenceFilteredPrefilter(const MippedEnvironment& source, T rou
 // PrefilterTableCS over size x size faces with the table it is given (prefilterSampleTable's).
 template <typename T>
 std::vector<T> referenceTablePrefilter(const MippedEnvironment& source, const std::vector<glm::vec4>& table, uint32_t size);
+
+// PrefilterPyramidCS over size x size faces with the reads it is given (fitPyramidReads's).
+template <typename T>
+std::vector<T> referencePyramidPrefilter(const MippedEnvironment& source, const std::vector<PyramidRead>& reads, uint32_t size);
 
 } // namespace iblkit::reference

@@ -42,6 +42,8 @@ TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
     auto settings = settingsWithOutput();
     EXPECT_EQ(settings.specularMethod, "convolution");
     EXPECT_EQ(resolvedSamples(settings), kDefaultConvolutionBudget);
+    settings.specularMethod = "pyramid";
+    EXPECT_EQ(resolvedSamples(settings), kDefaultPyramidReads);
     settings.specularMethod = "document";
     EXPECT_EQ(resolvedSamples(settings), 1024u);
     settings.samples = 64;
@@ -68,7 +70,11 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.size = 32768; }, "--size");
     refused([](BakeSettings& s) { s.samples = 0; }, "--samples");
     refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 32768)");
-    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, filtered, table, convolution)");
+    refused([](BakeSettings& s) {
+        s.specularMethod = "pyramid";
+        s.samples = 5;
+    }, "--samples 5 is out of range (1 to 4)");
+    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, filtered, table, pyramid, convolution)");
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
     refused([](BakeSettings& s) { s.lutMethod = "quadrature-grid"; s.lutSamples = 3; },
             "--lut-samples 3 is out of range (4 to 1024)");

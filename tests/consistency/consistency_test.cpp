@@ -51,11 +51,12 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 26u * 6u + 5u)
+    ASSERT_EQ(rows.size(), 30u * 6u + 5u)
         << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
-           "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered and table prefilters at "
-           "four roughnesses: the float reference and five paths each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 27)
+           "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered, table and pyramid "
+           "prefilters at four roughnesses: the float reference and five paths each; the preview: path a as the "
+           "reference and four paths";
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 31)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -145,7 +146,7 @@ TEST_F(BrokenVariant, SwappedCubeFaceFailsEveryKernelOfCubeFxh) {
     const auto rows = run(broken("Common/Cube.fxh", "direction = float3( uv.x, 1.f, -uv.y );", "direction = float3( uv.x, -1.f, uv.y );"));
     for (const char* kernel : {"PrefilterSpecularChunkCS", "EquirectToCubeCS", "ShProjectCS", "IrradianceCubeCS",
                                "ClusterCubeCS", "PrefilterConvolutionCS", "SkyCubeCS", "PrefilterFilteredCS",
-                               "PrefilterTableCS"})
+                               "PrefilterTableCS", "PrefilterPyramidCS"})
         expectEveryPathFails(rows, kernel);
 }
 
@@ -167,6 +168,12 @@ TEST_F(BrokenVariant, NaturalLogLodFailsTheFilteredPrefilter) {
 TEST_F(BrokenVariant, UnweightedSamplesFailTheTablePrefilter) {
     const auto rows = run(broken("PrefilterTableCS.hlsl", ".rgb * entry.z;", ".rgb;"));
     expectEveryPathFails(rows, "PrefilterTableCS");
+}
+
+// The lod shift for a texel's smaller solid angle towards the corners, turned the wrong way.
+TEST_F(BrokenVariant, CornerShiftTheWrongWayFailsThePyramidPrefilter) {
+    const auto rows = run(broken("PrefilterPyramidCS.hlsl", "float lodShift = -0.5f * log2(", "float lodShift = 0.5f * log2("));
+    expectEveryPathFails(rows, "PrefilterPyramidCS");
 }
 
 // A wrong 2x2 weight: texel (1, 0) read twice, (1, 1) never.

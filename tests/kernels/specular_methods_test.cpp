@@ -13,11 +13,13 @@ TEST(SpecularMethods, KindsAndLimitsFollowTheKernelTable) {
     EXPECT_EQ(specularKindOf("document"), SpecularKind::Sampled);
     EXPECT_EQ(specularKindOf("filtered"), SpecularKind::Sampled);
     EXPECT_EQ(specularKindOf("table"), SpecularKind::Table);
+    EXPECT_EQ(specularKindOf("pyramid"), SpecularKind::Pyramid);
     EXPECT_EQ(specularKindOf("convolution"), SpecularKind::Convolution);
     EXPECT_THROW(specularKindOf("nope"), std::out_of_range);
     EXPECT_EQ(maxSamplesOf("document"), kMaxSamples) << "its chunked twin splits the loop";
     EXPECT_EQ(maxSamplesOf("filtered"), kLoopLimit);
     EXPECT_EQ(maxSamplesOf("table"), kLoopLimit);
+    EXPECT_EQ(maxSamplesOf("pyramid"), 4u);
 }
 
 class SpecularMethodLimits : public iblkit::testing::VulkanTest {};
@@ -31,6 +33,8 @@ TEST_F(SpecularMethodLimits, CountsPastTheLoopLimitAreRefusedByName) {
     }
     EXPECT_THROW(SpecularMethod(context(), "table", kLoopLimit + 1), std::invalid_argument);
     EXPECT_THROW(SpecularMethod(context(), "table", 0), std::invalid_argument);
+    EXPECT_THROW(SpecularMethod(context(), "pyramid", 5), std::invalid_argument);
+    EXPECT_THROW(SpecularMethod(context(), "pyramid", 0), std::invalid_argument);
 }
 
 } // namespace

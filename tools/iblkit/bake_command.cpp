@@ -59,10 +59,12 @@ void addBakeCommand(CLI::App& app) {
     command->add_option("--method", s.specularMethod,
                         "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
                         "table (filtered importance sampling from a host sample table), filtered (the same, per "
-                        "sample on the GPU) or document (the documents' importance sampling)");
+                        "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
+                        "the lobe) or document (the documents' importance sampling)");
     command->add_option("--samples", s.samples,
-                        "Prefilter samples per texel (for table, mip 1's, doubling per mip), or for the convolution "
-                        "its budget of terms per texel (default 1024, 128 for convolution)");
+                        "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
+                        "texel, 1 to 4), or for the convolution its budget of terms per texel (default 1024, 128 for "
+                        "convolution, 1 for pyramid)");
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-method", s.lutMethod,
                         "BRDF LUT method: quadrature (default; a deterministic quadrature, exact in azimuth), "
