@@ -102,6 +102,10 @@ json lutMethodJson(const BakeSettings& settings) {
                 {"nodes_per_panel", kernels::kDefaultQuadratureNodes},
                 {"shaders", {kernels::kernelFor(kernels::KernelRole::BrdfLutGrid, method).options.source.generic_string(),
                              kernels::kernelFor(kernels::KernelRole::BrdfLutResample, method).options.source.generic_string()}}};
+    if (method == kernels::kFitLutMethod)
+        return {{"method", method},
+                {"polynomial_degree", samples},
+                {"shader", kernels::kernelFor(kernels::KernelRole::BrdfLut, method).options.source.generic_string()}};
     if (method == kernels::kQuadratureLutMethod)
         return {{"method", method},
                 {"nodes_per_panel", samples},

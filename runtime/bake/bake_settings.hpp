@@ -28,6 +28,8 @@ inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureLutMethod;
 // The quadrature grid's nodes per side unless told otherwise: within 1e-4 of the converged LUT
 // at 512² (RG32F's target), at a tenth of the full quadrature's time (docs/bench.md).
 inline constexpr uint32_t kDefaultLutGrid = 128;
+// The polynomial's degree unless told otherwise: 6.5e-2 from the converged LUT (tests/reference).
+inline constexpr uint32_t kDefaultLutFitDegree = 5;
 
 struct BakeSettings {
     std::optional<std::filesystem::path> environment; // empty: the built-in environment

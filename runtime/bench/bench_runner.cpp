@@ -58,9 +58,10 @@ std::vector<uint32_t> countsBeyond(const std::vector<uint32_t>& samples, const s
 }
 
 // The counts a LUT method is measured at: the quadrature's nodes per panel, the quadrature grid's
-// nodes per side, or the sample counts.
+// nodes per side, the polynomial's degree, or the sample counts.
 const std::vector<uint32_t>& lutCounts(const BenchOptions& options, const std::string& method) {
     if (method == kernels::kQuadratureGridLutMethod) return options.lutGrids;
+    if (method == kernels::kFitLutMethod) return options.lutDegrees;
     return method == kernels::kQuadratureLutMethod ? options.quadratureNodes : options.samples;
 }
 
@@ -125,6 +126,9 @@ OutputMethods validate(const BenchOptions& options) {
         if (grid < kernels::kMinLutGrid || grid > kernels::kMaxLutGrid)
             throw BenchError(fmt::format("the LUT quadrature grid takes {} to {} nodes per side, not {}", kernels::kMinLutGrid,
                                          kernels::kMaxLutGrid, grid));
+    for (const uint32_t degree : options.lutDegrees)
+        if (degree == 0 || degree > kernels::kMaxLutFitDegree)
+            throw BenchError(fmt::format("the polynomial LUT takes degrees 1 to {}, not {}", kernels::kMaxLutFitDegree, degree));
     if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
     if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
     if (options.irradianceSize == 0 || options.irradianceSize > 1024)

@@ -25,6 +25,7 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
         if (isSampled(kernel.role)) shader.defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
         if (kernel.method == kernels::kQuadratureLutMethod)
             shader.defines["SAMPLE_COUNT"] = std::to_string(kernels::kDefaultQuadratureNodes);
+        if (kernel.method == kernels::kFitLutMethod) shader.defines["SAMPLE_COUNT"] = std::to_string(kSuiteLutFitDegree);
         if (kernel.role == kernels::KernelRole::BrdfLut || kernel.role == kernels::KernelRole::BrdfLutResample)
             shader.imageFormats["Precomputed"] = "rg32f";
         if (kernel.role == kernels::KernelRole::BrdfLutChunk)
@@ -42,6 +43,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     addSampledOutputs(run);
     addQuadratureLutOutput(run);
     addGridLutOutputs(run);
+    addFitLutOutput(run);
     addChunkedOutputs(run);
     addCubeOutputs(run);
     addConvolutionOutputs(run);

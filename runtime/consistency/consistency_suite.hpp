@@ -10,10 +10,12 @@
 
 namespace iblkit::consistency {
 
+inline constexpr uint32_t kSuiteLutFitDegree = 5; // BrdfLutFitCS's SAMPLE_COUNT in the suite
+
 struct SuiteOptions {
     // PrecomputedBrdfCS and PrefilterSpecularCS (the documents' shaders).
     std::vector<uint32_t> lutSizes{512, 32};
-    uint32_t quadratureLutSize = 128; // BrdfLutQuadratureCS, at its default nodes per panel, and BrdfLutResampleCS
+    uint32_t quadratureLutSize = 128; // BrdfLutQuadratureCS at its default nodes per panel, BrdfLutResampleCS, BrdfLutFitCS
     uint32_t lutGridSize = 32;        // BrdfLutGridCS's nodes per side
     uint32_t prefilterSize = 32;
     uint32_t environmentSize = 64;
@@ -84,6 +86,7 @@ Bounds lutBounds(uint32_t size);
 Bounds quadratureLutBounds();
 Bounds lutGridBounds();
 Bounds lutResampleBounds();
+Bounds lutFitBounds();
 Bounds prefilterBounds();
 Bounds lutChunkBounds();
 Bounds prefilterChunkBounds();

@@ -1,7 +1,9 @@
-// The quadrature LUT (BrdfLutQuadratureCS) and the quadrature grid's two kernels
-// (BrdfLutGridCS, BrdfLutResampleCS) against their C++ twins, in float and in double.
+// The quadrature LUT (BrdfLutQuadratureCS), the quadrature grid's two kernels (BrdfLutGridCS,
+// BrdfLutResampleCS) and the polynomial LUT (BrdfLutFitCS) against their C++ twins, in float
+// and in double.
 #include "gpu_bake.hpp"
 #include "grid_lut_bake.hpp"
+#include "lut_fit.hpp"
 #include "lut_grid.hpp"
 #include "kernels/lut_methods.hpp"
 #include "lut_quadrature.hpp"
@@ -15,6 +17,22 @@ void addQuadratureLutOutput(SuiteRun& run) {
     const uint32_t size = run.options.quadratureLutSize, nodes = kernels::kDefaultQuadratureNodes;
     addOutput(run, {"BrdfLutQuadratureCS", fmt::format("LUT {}², {} nodes per panel", size, nodes), quadratureLutBounds()},
               {reference::brdfLutQuadrature<float>(size, nodes), reference::brdfLutQuadrature<double>(size, nodes)},
+              [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
+              [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
+}
+
+void addFitLutOutput(SuiteRun& run) {
+    const uint32_t size = run.options.quadratureLutSize, degree = kSuiteLutFitDegree;
+    // Both references evaluate the coefficients the shader holds, the fit's rounded to float.
+    std::vector<glm::vec2> coefficients;
+    std::vector<glm::dvec2> coefficientsInDouble;
+    for (const auto& c : reference::fitBrdfLut(degree)) {
+        coefficients.emplace_back(c);
+        coefficientsInDouble.emplace_back(coefficients.back());
+    }
+    addOutput(run, {"BrdfLutFitCS", fmt::format("LUT {}², a polynomial of degree {}", size, degree), lutFitBounds()},
+              {reference::brdfLutFromFit<float>(size, coefficients),
+               reference::brdfLutFromFit<double>(size, coefficientsInDouble)},
               [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
               [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
 }

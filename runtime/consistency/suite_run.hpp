@@ -64,6 +64,7 @@ void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun&
 void addSampledOutputs(SuiteRun& run);
 void addQuadratureLutOutput(SuiteRun& run);
 void addGridLutOutputs(SuiteRun& run);
+void addFitLutOutput(SuiteRun& run);
 void addChunkedOutputs(SuiteRun& run);
 void addCubeOutputs(SuiteRun& run);
 void addConvolutionOutputs(SuiteRun& run);

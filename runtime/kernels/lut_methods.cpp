@@ -19,11 +19,13 @@ uint32_t maxLutSamplesOf(const std::string& method) {
         return kMaxLutGrid;
     }
     kernelFor(KernelRole::BrdfLut, method); // throws for a method with no LUT kernel
+    if (method == kFitLutMethod) return kMaxLutFitDegree;
     return method == kQuadratureLutMethod ? kMaxQuadratureNodes : kMaxSamples;
 }
 
 std::string lutCountName(const std::string& method) {
     if (method == kQuadratureGridLutMethod) return "grid nodes per side";
+    if (method == kFitLutMethod) return "polynomial degree";
     return method == kQuadratureLutMethod ? "nodes per panel" : "samples";
 }
 

@@ -11,11 +11,14 @@
 namespace iblkit::kernels {
 
 // The LUT methods differ in what their count means: the document's estimator takes samples per
-// texel; the quadrature (BrdfLutQuadratureCS) takes Gauss–Legendre nodes per panel, a
+// texel; the polynomial (BrdfLutFitCS) its degree; the quadrature (BrdfLutQuadratureCS) takes Gauss–Legendre nodes per panel, a
 // compile-time count of at most kMaxQuadratureNodes; the quadrature grid (BrdfLutGridCS, then
 // BrdfLutResampleCS) takes its grid's nodes per side, each integrated at kDefaultQuadratureNodes.
 inline constexpr const char* kQuadratureLutMethod = "quadrature";
 inline constexpr const char* kQuadratureGridLutMethod = "quadrature-grid";
+// The polynomial LUT (BrdfLutFitCS) takes its degree, 1 to 9 (reference::kMaxLutFitDegree).
+inline constexpr const char* kFitLutMethod = "fit";
+inline constexpr uint32_t kMaxLutFitDegree = 9;
 inline constexpr uint32_t kMaxQuadratureNodes = 16;
 // 7 nodes: within 6e-6 of the converged LUT at 512² on lavapipe, every texel of an RG16F LUT the
 // converged value's nearest half or its neighbour (6 leaves two a step further; docs/bench.md).

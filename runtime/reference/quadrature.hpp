@@ -27,7 +27,10 @@ void forEachGradedPanel(double length, double scale, const Visit& visit) {
         visit(0.0, length);
         return;
     }
-    for (double near = 0, far = scale; near < length; near = far, far *= 4) visit(near, std::min(far, length));
+    // A scale of 0 (or a denormal) would never reach the length: the first panel is at least a
+    // double's resolution of it.
+    const double first = std::max(scale, length * 1e-16);
+    for (double near = 0, far = first; near < length; near = far, far *= 4) visit(near, std::min(far, length));
 }
 
 } // namespace iblkit::reference

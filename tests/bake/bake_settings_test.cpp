@@ -78,7 +78,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
     refused([](BakeSettings& s) { s.lutMethod = "quadrature-grid"; s.lutSamples = 3; },
             "--lut-samples 3 is out of range (4 to 1024)");
-    refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature, quadrature-grid)");
+    refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature, fit, quadrature-grid)");
     refused([](BakeSettings& s) { s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
     auto settings = settingsWithOutput();

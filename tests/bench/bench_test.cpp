@@ -23,6 +23,7 @@ protected:
         options.repeat = 1;
         options.quadratureNodes = {2, 7};
         options.lutGrids = {4, 16};
+        options.lutDegrees = {1, 5};
         options.cacheDir = scratch.path();
         options.log = nullptr;
         return options;
@@ -40,9 +41,10 @@ protected:
 
 TEST_F(Bench, MeasuresEveryOutputAndErrorsFallWithSamples) {
     const auto run = runBench(tiny({"sky"}));
-    EXPECT_EQ(run.results.size(), 2u + 2u + 2u + 4u * 2u + 1u)
-        << "LUT by the document's method, the quadrature and its grid at two counts each, specular by the document's, filtered, "
-           "table and convolution methods at two counts, irradiance once";
+    EXPECT_EQ(run.results.size(), 2u + 2u + 2u + 2u + 4u * 2u + 1u)
+        << "LUT by the document's method, the quadrature, its grid and the polynomial at two counts each, specular by the "
+           "document's, filtered, table and convolution methods at two counts (the pyramid takes at most 4 reads), "
+           "irradiance once";
     const auto& few = find(run, BenchOutput::Specular, "sky", 16);
     const auto& many = find(run, BenchOutput::Specular, "sky", 1024);
     ASSERT_EQ(few.mips.size(), 2u);

@@ -32,18 +32,18 @@ protected:
 };
 
 TEST_F(BenchCli, WritesResultsPlotsAndReport) {
-    const auto result = iblkit({"bench", "sky", "sun", "--samples", "16,256", "--lut-nodes", "7", "--lut-grid", "16", "--out", at("bench"), "--markdown",
+    const auto result = iblkit({"bench", "sky", "sun", "--samples", "16,256", "--lut-nodes", "7", "--lut-grid", "16", "--lut-degree", "3", "--out", at("bench"), "--markdown",
                                 at("bench.md")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
     EXPECT_NE(result.err.find("bench  specular"), std::string::npos) << "progress goes to stderr";
     const auto json = nlohmann::json::parse(readFile(scratch.path() / "bench" / "results.json"));
-    EXPECT_EQ(json.at("results").size(), 4u + 2u * 4u * 2u + 2u)
-        << "LUT x4 (document x2, quadrature x1, quadrature grid x1), specular x2 per method (document, filtered, table, convolution) per "
+    EXPECT_EQ(json.at("results").size(), 5u + 2u * 4u * 2u + 2u)
+        << "LUT x5 (document x2, quadrature x1, quadrature grid x1, polynomial x1), specular x2 per method (document, filtered, table, convolution) per "
            "environment, irradiance x2";
     EXPECT_EQ(json.at("device").get<std::string>().find("llvmpipe"), 0u);
     const auto csv = readFile(scratch.path() / "bench" / "results.csv");
     EXPECT_EQ(csv.rfind("output,environment,method,samples", 0), 0u);
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 22 + 2 * 4 * 2 * 2) << "a row per result and per specular mip";
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 23 + 2 * 4 * 2 * 2) << "a row per result and per specular mip";
     for (const char* plot : {"specular_sky.png", "specular_sun.png", "specular_summary.png", "lut.png", "irradiance.png"}) {
         const auto png = readFile(scratch.path() / "bench" / plot);
         EXPECT_EQ(png.substr(1, 3), "PNG") << plot;

@@ -145,7 +145,8 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
                              "ShProjectCS",            "IrradianceCubeCS",    "PreviewCS",
                              "ClusterCubeCS",          "PrefilterConvolutionCS", "SkyCubeCS",
                              "BrdfLutQuadratureCS",    "PrefilterFilteredCS", "PrefilterTableCS",
-                             "BrdfLutGridCS",          "BrdfLutResampleCS",   "PrefilterPyramidCS"};
+                             "BrdfLutGridCS",          "BrdfLutResampleCS",   "PrefilterPyramidCS",
+                             "BrdfLutFitCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;
@@ -157,6 +158,12 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
 TEST_F(Cli, CompileAllRejectsAnUnknownForm) {
     expectFailure({"compile-all", "hlsl/shaders.json", "-o", at("all"), "--only", "glsl,spirv-asm"},
                   "--only: unknown form 'spirv-asm'");
+}
+
+TEST_F(Cli, LutFitWritesTheCommittedInclude) {
+    const auto result = iblkit({"lut-fit", "-o", at("BrdfLutFit.fxh")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(readFile(at("BrdfLutFit.fxh")), readFile("hlsl/Common/BrdfLutFit.fxh"));
 }
 
 } // namespace

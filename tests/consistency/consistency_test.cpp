@@ -51,12 +51,12 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 30u * 6u + 5u)
-        << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
+    ASSERT_EQ(rows.size(), 31u * 6u + 5u)
+        << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, the polynomial LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered, table and pyramid "
            "prefilters at four roughnesses: the float reference and five paths each; the preview: path a as the "
            "reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 31)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 32)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -174,6 +174,12 @@ TEST_F(BrokenVariant, UnweightedSamplesFailTheTablePrefilter) {
 TEST_F(BrokenVariant, CornerShiftTheWrongWayFailsThePyramidPrefilter) {
     const auto rows = run(broken("PrefilterPyramidCS.hlsl", "float lodShift = -0.5f * log2(", "float lodShift = 0.5f * log2("));
     expectEveryPathFails(rows, "PrefilterPyramidCS");
+}
+
+// The polynomial's N.V axis at the square root instead of the fourth root it was fitted in.
+TEST_F(BrokenVariant, SquareRootAxisFailsThePolynomialLut) {
+    const auto rows = run(broken("BrdfLutFitCS.hlsl", "Chebyshev( sqrt( sqrt( ndotv ) ), tu );", "Chebyshev( sqrt( ndotv ), tu );"));
+    expectEveryPathFails(rows, "BrdfLutFitCS");
 }
 
 // A wrong 2x2 weight: texel (1, 0) read twice, (1, 1) never.

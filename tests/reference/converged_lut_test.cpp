@@ -141,4 +141,17 @@ TEST(ConvergedLut, AgreesWithTheDocumentsEstimatorAtAMillionSamples) {
 }
 
 } // namespace
+// N.V of 1e-9 once graded a panel towards a scale that rounded to 0 and never ended; it must
+// return, and agree with N.V = 0, where G(N.V) / N.V is finite (differences of order N.V / k).
+TEST(ConvergedLut, TinyNdotVReturnsTheGrazingValue) {
+    for (double roughness : {0.1, 0.5, 1.0}) {
+        const auto atZero = convergedBrdf(0.0, roughness);
+        for (double ndotv : {1e-9, 1.2e-8, 1e-300}) {
+            const auto value = convergedBrdf(ndotv, roughness);
+            EXPECT_NEAR(value.x, atZero.x, 1e-6) << ndotv << ", " << roughness;
+            EXPECT_NEAR(value.y, atZero.y, 1e-6) << ndotv << ", " << roughness;
+        }
+    }
+}
+
 } // namespace iblkit::reference

@@ -68,12 +68,12 @@ void addBakeCommand(CLI::App& app) {
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-method", s.lutMethod,
                         "BRDF LUT method: quadrature (default; a deterministic quadrature, exact in azimuth), "
-                        "quadrature-grid (the quadrature on a small grid, interpolated) or document (the documents' "
-                        "importance sampling)");
+                        "quadrature-grid (the quadrature on a small grid, interpolated), fit (a polynomial fitted to "
+                        "the converged LUT) or document (the documents' importance sampling)");
     command->add_option("--lut-samples", s.lutSamples,
                         "BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, for the "
-                        "quadrature grid its nodes per side (default 1024 for document, 7 for quadrature, 128 for "
-                        "quadrature-grid)");
+                        "quadrature grid its nodes per side, for the fit its degree (default 1024 for document, 7 for "
+                        "quadrature, 128 for quadrature-grid, 5 for fit)");
     command->add_option("--lut-format", arguments->lutFormat, "rg16f (default) or rg32f")
         ->check(CLI::IsMember({"rg16f", "rg32f"}));
     command->add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");

@@ -33,10 +33,10 @@ std::string invocation(const bench::BenchOptions& options, const std::vector<std
     std::string text = "iblkit bench";
     for (const auto& environment : options.environments) text += " " + word(environment);
     if (!options.methods.empty()) text += fmt::format(" --method {}", word(fmt::format("{}", fmt::join(options.methods, ","))));
-    text += fmt::format(" --samples {} --lut-nodes {} --lut-grid {} --size {} --lut-size {} --irradiance-size {} --texels {} --seed {} "
-                        "--repeat {} --outputs {}",
+    text += fmt::format(" --samples {} --lut-nodes {} --lut-grid {} --lut-degree {} --size {} --lut-size {} "
+                        "--irradiance-size {} --texels {} --seed {} --repeat {} --outputs {}",
                         fmt::join(options.samples, ","), fmt::join(options.quadratureNodes, ","),
-                        fmt::join(options.lutGrids, ","), options.size,
+                        fmt::join(options.lutGrids, ","), fmt::join(options.lutDegrees, ","), options.size,
                         options.lutSize, options.irradianceSize,
                         options.texelsPerMip, options.seed, options.repeat, fmt::join(outputs, ","));
     if (!options.context.device.empty()) text += " --device " + word(options.context.device);
@@ -69,6 +69,8 @@ void addBenchCommand(CLI::App& app) {
         ->delimiter(',');
     command->add_option("--lut-grid", o.lutGrids,
                         "The LUT quadrature grid's nodes per side, 4 to 1024 (default 8,16,32,64,128)")
+        ->delimiter(',');
+    command->add_option("--lut-degree", o.lutDegrees, "The polynomial LUT's degrees, 1 to 9 (default 1,3,5,7,9)")
         ->delimiter(',');
     command->add_option("--size", o.size, "Source cube face size, a power of two (default 256)");
     command->add_option("--lut-size", o.lutSize, "BRDF LUT size (default 512)");

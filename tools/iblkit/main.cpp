@@ -5,6 +5,7 @@
 #include "compile_command.hpp"
 #include "consistency_command.hpp"
 #include "devices_command.hpp"
+#include "lut_fit_command.hpp"
 #include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addConsistencyCommand(app);
     iblkit::cli::addBakeCommand(app);
     iblkit::cli::addBenchCommand(app);
+    iblkit::cli::addLutFitCommand(app);
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {
