@@ -122,12 +122,15 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
             "(the exact sum over the source cube's texels with their solid angles) at seeded texels of each mip; the "
             "error is the relative error of luminance, RMS and max per mip. A configuration's error is its worst mip's. "
             "The estimators read the source through bilinear filtering where the reference takes each texel as "
-            "constant: a floor of about 8e-4 relative on a smooth 64² cube (tests/reference), far below the 1 % target.\n"
+            "constant: a floor of about 8e-4 relative on a smooth 64² cube (tests/reference), far below the 1 % target. "
+            "A count is samples per texel, except for the table (mip 1's samples, doubling per mip), the pyramid (reads "
+            "per texel, at most 4) and the convolution (its budget of terms per texel).\n"
             "- Seams: the largest relative jump of luminance between texels facing each other across a face edge "
             "(4 pairs per edge and mip, over the mips), beside the same jump of the converged integral at the same "
             "texels: a jump well above the converged one is a visible seam.\n"
-            "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error. For the "
-            "quadrature method the count is its Gauss-Legendre nodes per panel. The RG16F column rounds both to half "
+            "- LUT: every texel of the grid, scale and bias, against the converged quadrature; absolute error. A count is "
+            "samples per texel, except for the quadrature (Gauss-Legendre nodes per panel), the quadrature grid (nodes "
+            "per side) and the fit (the polynomial's degree). The RG16F column rounds both to half "
             "floats: 0 or 1 steps apart is the target (the converged value's nearest half, or its neighbour).\n"
             "- Irradiance: every texel against the exact sum over the source cube; relative error of luminance.\n\n";
     text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
