@@ -110,6 +110,31 @@ TEST_F(BakeCli, TheTableAndFilteredMethodsBakeAndRecordTheirCounts) {
     expectFailure({"bake", "-o", at("out"), "--method", "table", "--samples", "65536"}, "--samples 65536 is out of range (1 to 65535)");
 }
 
+TEST_F(BakeCli, ThePyramidAndTheFastLutMethodsBakeAndRecordTheirCounts) {
+    const auto bake = [&](const std::string& folder, std::vector<std::string> settings) {
+        std::vector<std::string> arguments{"bake", "-o", at(folder), "--size", "16", "--lut-size", "8",
+                                           "--irradiance-size", "4", "--quiet"};
+        arguments.insert(arguments.end(), settings.begin(), settings.end());
+        const auto result = iblkit(arguments);
+        EXPECT_EQ(result.exitCode, 0) << result.err;
+        return nlohmann::json::parse(readFile(scratch.path() / folder / "manifest.json"));
+    };
+    const auto fit = bake("fit", {"--method", "pyramid", "--samples", "2", "--lut-method", "fit", "--lut-samples", "3"});
+    EXPECT_EQ(fit["specular"]["method"], "pyramid");
+    EXPECT_EQ(fit["specular"]["reads_per_texel"], 2);
+    EXPECT_EQ(fit["specular"]["shader"], "hlsl/PrefilterPyramidCS.hlsl");
+    EXPECT_EQ(fit["brdf_lut"]["method"], "fit");
+    EXPECT_EQ(fit["brdf_lut"]["polynomial_degree"], 3);
+    EXPECT_EQ(fit["brdf_lut"]["shader"], "hlsl/BrdfLutFitCS.hlsl");
+    const auto grid = bake("grid", {"--lut-method", "quadrature-grid", "--lut-samples", "8"});
+    EXPECT_EQ(grid["brdf_lut"]["grid_nodes_per_side"], 8);
+    EXPECT_EQ(grid["brdf_lut"]["shaders"],
+              nlohmann::json::parse(R"(["hlsl/BrdfLutGridCS.hlsl", "hlsl/BrdfLutResampleCS.hlsl"])"));
+    expectFailure({"bake", "-o", at("out"), "--lut-method", "fit", "--lut-samples", "10"},
+                  "--lut-samples 10 is out of range (1 to 9)");
+    expectFailure({"bake", "-o", at("out"), "--method", "pyramid", "--samples", "5"}, "--samples 5 is out of range (1 to 4)");
+}
+
 TEST_F(BakeCli, PanoramaFacesAndCubeInputsBake) {
     scratch.write("sky.hdr", radianceHdr(32, 16, 129));
     ASSERT_EQ(iblkit(small({"bake", at("sky.hdr"), "-o", at("from-hdr")})).exitCode, 0);
