@@ -66,10 +66,13 @@ std::vector<double> readProfile(double lod, const std::vector<std::vector<double
     return profile;
 }
 
-// Solves the symmetric system in place by Gaussian elimination with partial pivoting; false
-// when it is singular.
-template <size_t N>
-bool solve(std::array<std::array<double, N + 1>, N>& system, size_t n) {
+// The least-squares system of up to kMaxPyramidReads weights and their Lagrange multiplier, each
+// row followed by its right-hand side.
+using ReadSystem = std::array<std::array<double, kMaxPyramidReads + 2>, kMaxPyramidReads + 1>;
+
+// Solves the first n rows in place by Gaussian elimination with partial pivoting, leaving the
+// solution in column n; false when they are singular.
+bool solve(ReadSystem& system, size_t n) {
     for (size_t column = 0; column < n; ++column) {
         size_t pivot = column;
         for (size_t row = column + 1; row < n; ++row)
@@ -101,7 +104,7 @@ struct Fit {
 // kept only if all are non-negative and the fit is better than `best`.
 void tryChoice(const Candidates& candidates, const std::vector<size_t>& chosen, Fit& best) {
     const size_t n = chosen.size();
-    std::array<std::array<double, kMaxPyramidReads + 2>, kMaxPyramidReads + 1> system{};
+    ReadSystem system{};
     for (size_t i = 0; i < n; ++i) {
         for (size_t j = 0; j < n; ++j) system[i][j] = candidates.gram[chosen[i]][chosen[j]];
         system[i][n] = 1;
@@ -109,20 +112,19 @@ void tryChoice(const Candidates& candidates, const std::vector<size_t>& chosen, 
         system[i][n + 1] = candidates.against[chosen[i]];
     }
     system[n][n + 1] = 1;
-    std::array<std::array<double, kMaxPyramidReads + 2>, kMaxPyramidReads + 1> solved = system;
-    if (!solve<kMaxPyramidReads + 1>(solved, n + 1)) return;
+    if (!solve(system, n + 1)) return;
+    const auto weight = [&](size_t i) { return system[i][n + 1]; };
     double residual = 0;
     for (size_t i = 0; i < n; ++i) {
-        const double weight = solved[i][n + 1];
-        if (weight < 0) return;
-        residual -= 2 * weight * candidates.against[chosen[i]];
-        for (size_t j = 0; j < n; ++j) residual += weight * solved[j][n + 1] * candidates.gram[chosen[i]][chosen[j]];
+        if (weight(i) < 0) return;
+        residual -= 2 * weight(i) * candidates.against[chosen[i]];
+        for (size_t j = 0; j < n; ++j) residual += weight(i) * weight(j) * candidates.gram[chosen[i]][chosen[j]];
     }
     if (residual >= best.residual) return;
     best.residual = residual;
     best.reads.clear();
     for (size_t i = 0; i < n; ++i)
-        if (solved[i][n + 1] > 0) best.reads.push_back({float(candidates.lods[chosen[i]]), float(solved[i][n + 1])});
+        if (weight(i) > 0) best.reads.push_back({float(candidates.lods[chosen[i]]), float(weight(i))});
 }
 
 // Every choice of `count` candidates in increasing order.
