@@ -54,148 +54,149 @@ struct LutGridParameter
     uint GridSize;
 };
 
-kernel void main0(constant LutGridParameter& _228 [[buffer(0)]], const device Grid& Grid_1 [[buffer(1)]], texture2d<float, access::write> Precomputed [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant LutGridParameter& _245 [[buffer(0)]], const device Grid& Grid_1 [[buffer(1)]], texture2d<float, access::write> Precomputed [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint2 _367 = uint2(0u);
-        uint2 _368 = uint2(Precomputed.get_width(), Precomputed.get_height());
-        _367.x = _368.x;
-        _367.y = _368.y;
-        if (any(gl_GlobalInvocationID.xy >= _367))
+        uint2 _388 = uint2(0u);
+        uint2 _389 = uint2(Precomputed.get_width(), Precomputed.get_height());
+        _388.x = _389.x;
+        _388.y = _389.y;
+        if (any(gl_GlobalInvocationID.xy >= _388))
         {
             break;
         }
-        int2 _414 = int2(int(_228.GridSize));
-        int2 _369 = _414 - int2(1);
-        float2 _441 = float2(pow((float(param.x) + 0.5) / float(_367.x), 0.3333333432674407958984375) * float(uint(_369.x)), pow((float(param.y) + 0.5) / float(_367.y), 0.3333333432674407958984375) * float(uint(_369.y)));
-        float2 _370 = _441;
-        int2 _375 = min(int2(_441), (_414 - int2(2)));
-        float _453 = _370.x - float(_375.x);
-        float _526 = _453 * _453;
-        float _529 = _526 * _453;
-        float4 _554 = float4(fma(-_526, _453, fma(2.0, _526, -_453)), fma(3.0, _529, fma(-5.0, _526, 2.0)), fma(-3.0, _529, fma(4.0, _526, _453)), fma(_526, _453, -_526)) * 0.5;
-        float _460 = _370.y - float(_375.y);
-        float _561 = _460 * _460;
-        float _564 = _561 * _460;
-        int _603 = clamp(_375.y - 1, 0, _369.y) * (_369.x + 1);
-        int _611 = _603 + _375.x;
-        int _615 = (_603 + _375.x) + 1;
-        int _621 = _603 + min((_375.x + 2), _369.x);
-        float4 _597 = _554;
-        float2 _729;
-        if (_375.x == 0)
+        int2 _435 = int2(int(_245.GridSize));
+        int2 _390 = _435 - int2(1);
+        float _445 = (float(param.x) + 0.5) / float(_388.x);
+        float2 _462 = float2(pow(_445 / (1.0 + sqrt(1.0 - _445)), 0.3333333432674407958984375) * float(uint(_390.x)), pow((float(param.y) + 0.5) / float(_388.y), 0.3333333432674407958984375) * float(uint(_390.y)));
+        float2 _391 = _462;
+        int2 _396 = min(int2(_462), (_435 - int2(2)));
+        float _474 = _391.x - float(_396.x);
+        float _555 = _474 * _474;
+        float _558 = _555 * _474;
+        float4 _583 = float4(fma(-_555, _474, fma(2.0, _555, -_474)), fma(3.0, _558, fma(-5.0, _555, 2.0)), fma(-3.0, _558, fma(4.0, _555, _474)), fma(_555, _474, -_555)) * 0.5;
+        float _481 = _391.y - float(_396.y);
+        float _590 = _481 * _481;
+        float _593 = _590 * _481;
+        int _632 = clamp(_396.y - 1, 0, _390.y) * (_390.x + 1);
+        int _640 = _632 + _396.x;
+        int _644 = (_632 + _396.x) + 1;
+        int _650 = _632 + min((_396.x + 2), _390.x);
+        float4 _626 = _583;
+        float2 _758;
+        if (_396.x == 0)
         {
-            _729 = ((Grid_1._data[_611] * 3.0) - (Grid_1._data[_615] * 3.0)) + Grid_1._data[_621];
+            _758 = ((Grid_1._data[_640] * 3.0) - (Grid_1._data[_644] * 3.0)) + Grid_1._data[_650];
         }
         else
         {
-            _729 = Grid_1._data[_603 + max((_375.x - 1), 0)];
+            _758 = Grid_1._data[_632 + max((_396.x - 1), 0)];
         }
-        float2 _731;
-        if (_375.x == (_369.x - 1))
+        float2 _760;
+        if (_396.x == (_390.x - 1))
         {
-            _731 = ((Grid_1._data[_615] * 3.0) - (Grid_1._data[_611] * 3.0)) + _729;
+            _760 = ((Grid_1._data[_644] * 3.0) - (Grid_1._data[_640] * 3.0)) + _758;
         }
         else
         {
-            _731 = Grid_1._data[_621];
+            _760 = Grid_1._data[_650];
         }
-        spvUnsafeArray<float2, 4> _381;
-        _381[0] = (((_729 * _597.x) + (Grid_1._data[_611] * _597.y)) + (Grid_1._data[_615] * _597.z)) + (_731 * _597.w);
-        int _754 = clamp(_375.y, 0, _369.y) * (_369.x + 1);
-        int _758 = _754 + _375.x;
-        int _760 = (_754 + _375.x) + 1;
-        int _763 = _754 + min((_375.x + 2), _369.x);
-        _597 = _554;
-        float2 _779;
-        if (_375.x == 0)
+        spvUnsafeArray<float2, 4> _402;
+        _402[0] = (((_758 * _626.x) + (Grid_1._data[_640] * _626.y)) + (Grid_1._data[_644] * _626.z)) + (_760 * _626.w);
+        int _785 = clamp(_396.y, 0, _390.y) * (_390.x + 1);
+        int _789 = _785 + _396.x;
+        int _791 = (_785 + _396.x) + 1;
+        int _794 = _785 + min((_396.x + 2), _390.x);
+        _626 = _583;
+        float2 _810;
+        if (_396.x == 0)
         {
-            _779 = ((Grid_1._data[_758] * 3.0) - (Grid_1._data[_760] * 3.0)) + Grid_1._data[_763];
+            _810 = ((Grid_1._data[_789] * 3.0) - (Grid_1._data[_791] * 3.0)) + Grid_1._data[_794];
         }
         else
         {
-            _779 = Grid_1._data[_754 + max((_375.x - 1), 0)];
+            _810 = Grid_1._data[_785 + max((_396.x - 1), 0)];
         }
-        float2 _788;
-        if (_375.x == (_369.x - 1))
+        float2 _819;
+        if (_396.x == (_390.x - 1))
         {
-            _788 = ((Grid_1._data[_760] * 3.0) - (Grid_1._data[_758] * 3.0)) + _779;
+            _819 = ((Grid_1._data[_791] * 3.0) - (Grid_1._data[_789] * 3.0)) + _810;
         }
         else
         {
-            _788 = Grid_1._data[_763];
+            _819 = Grid_1._data[_794];
         }
-        _381[1] = (((_779 * _597.x) + (Grid_1._data[_758] * _597.y)) + (Grid_1._data[_760] * _597.z)) + (_788 * _597.w);
-        int _824 = clamp(_375.y + 1, 0, _369.y) * (_369.x + 1);
-        int _828 = _824 + _375.x;
-        int _830 = (_824 + _375.x) + 1;
-        int _833 = _824 + min((_375.x + 2), _369.x);
-        _597 = _554;
-        float2 _849;
-        if (_375.x == 0)
+        _402[1] = (((_810 * _626.x) + (Grid_1._data[_789] * _626.y)) + (Grid_1._data[_791] * _626.z)) + (_819 * _626.w);
+        int _855 = clamp(_396.y + 1, 0, _390.y) * (_390.x + 1);
+        int _859 = _855 + _396.x;
+        int _861 = (_855 + _396.x) + 1;
+        int _864 = _855 + min((_396.x + 2), _390.x);
+        _626 = _583;
+        float2 _880;
+        if (_396.x == 0)
         {
-            _849 = ((Grid_1._data[_828] * 3.0) - (Grid_1._data[_830] * 3.0)) + Grid_1._data[_833];
+            _880 = ((Grid_1._data[_859] * 3.0) - (Grid_1._data[_861] * 3.0)) + Grid_1._data[_864];
         }
         else
         {
-            _849 = Grid_1._data[_824 + max((_375.x - 1), 0)];
+            _880 = Grid_1._data[_855 + max((_396.x - 1), 0)];
         }
-        float2 _858;
-        if (_375.x == (_369.x - 1))
+        float2 _889;
+        if (_396.x == (_390.x - 1))
         {
-            _858 = ((Grid_1._data[_830] * 3.0) - (Grid_1._data[_828] * 3.0)) + _849;
+            _889 = ((Grid_1._data[_861] * 3.0) - (Grid_1._data[_859] * 3.0)) + _880;
         }
         else
         {
-            _858 = Grid_1._data[_833];
+            _889 = Grid_1._data[_864];
         }
-        _381[2] = (((_849 * _597.x) + (Grid_1._data[_828] * _597.y)) + (Grid_1._data[_830] * _597.z)) + (_858 * _597.w);
-        int _894 = clamp(_375.y + 2, 0, _369.y) * (_369.x + 1);
-        int _898 = _894 + _375.x;
-        int _900 = (_894 + _375.x) + 1;
-        int _903 = _894 + min((_375.x + 2), _369.x);
-        _597 = _554;
-        float2 _919;
-        if (_375.x == 0)
+        _402[2] = (((_880 * _626.x) + (Grid_1._data[_859] * _626.y)) + (Grid_1._data[_861] * _626.z)) + (_889 * _626.w);
+        int _925 = clamp(_396.y + 2, 0, _390.y) * (_390.x + 1);
+        int _929 = _925 + _396.x;
+        int _931 = (_925 + _396.x) + 1;
+        int _934 = _925 + min((_396.x + 2), _390.x);
+        _626 = _583;
+        float2 _950;
+        if (_396.x == 0)
         {
-            _919 = ((Grid_1._data[_898] * 3.0) - (Grid_1._data[_900] * 3.0)) + Grid_1._data[_903];
+            _950 = ((Grid_1._data[_929] * 3.0) - (Grid_1._data[_931] * 3.0)) + Grid_1._data[_934];
         }
         else
         {
-            _919 = Grid_1._data[_894 + max((_375.x - 1), 0)];
+            _950 = Grid_1._data[_925 + max((_396.x - 1), 0)];
         }
-        float2 _928;
-        if (_375.x == (_369.x - 1))
+        float2 _959;
+        if (_396.x == (_390.x - 1))
         {
-            _928 = ((Grid_1._data[_900] * 3.0) - (Grid_1._data[_898] * 3.0)) + _919;
+            _959 = ((Grid_1._data[_931] * 3.0) - (Grid_1._data[_929] * 3.0)) + _950;
         }
         else
         {
-            _928 = Grid_1._data[_903];
+            _959 = Grid_1._data[_934];
         }
-        _381[3] = (((_919 * _597.x) + (Grid_1._data[_898] * _597.y)) + (Grid_1._data[_900] * _597.z)) + (_928 * _597.w);
-        float4 _393 = float4(fma(-_561, _460, fma(2.0, _561, -_460)), fma(3.0, _564, fma(-5.0, _561, 2.0)), fma(-3.0, _564, fma(4.0, _561, _460)), fma(_561, _460, -_561)) * 0.5;
-        float2 _725;
-        if (_375.y == 0)
+        _402[3] = (((_950 * _626.x) + (Grid_1._data[_929] * _626.y)) + (Grid_1._data[_931] * _626.z)) + (_959 * _626.w);
+        float4 _414 = float4(fma(-_590, _481, fma(2.0, _590, -_481)), fma(3.0, _593, fma(-5.0, _590, 2.0)), fma(-3.0, _593, fma(4.0, _590, _481)), fma(_590, _481, -_590)) * 0.5;
+        float2 _754;
+        if (_396.y == 0)
         {
-            _725 = ((_381[1] * 3.0) - (_381[2] * 3.0)) + _381[3];
+            _754 = ((_402[1] * 3.0) - (_402[2] * 3.0)) + _402[3];
         }
         else
         {
-            _725 = _381[0];
+            _754 = _402[0];
         }
-        float2 _727;
-        if (_375.y == (_369.y - 1))
+        float2 _756;
+        if (_396.y == (_390.y - 1))
         {
-            _727 = ((_381[2] * 3.0) - (_381[1] * 3.0)) + _725;
+            _756 = ((_402[2] * 3.0) - (_402[1] * 3.0)) + _754;
         }
         else
         {
-            _727 = _381[3];
+            _756 = _402[3];
         }
-        Precomputed.write(((((_725 * _393.x) + (_381[1] * _393.y)) + (_381[2] * _393.z)) + (_727 * _393.w)).xyyy, uint2(gl_GlobalInvocationID.xy));
+        Precomputed.write(fast::clamp((((_754 * _414.x) + (_402[1] * _414.y)) + (_402[2] * _414.z)) + (_756 * _414.w), float2(0.0), float2(1.0)).xyyy, uint2(gl_GlobalInvocationID.xy));
         break;
     } while(false);
 }

@@ -18,7 +18,7 @@ void main( uint3 DTid : SV_DispatchThreadId )
     if ( any( DTid.xy >= GridSize ) )
         return;
     BuildGaussLegendre();
-    float2 ndotv = GridNodeValue( (float)DTid.x / (float)( GridSize - 1 ) );
-    float roughness = GridNodeValue( (float)DTid.y / (float)( GridSize - 1 ) ).x;
+    float2 ndotv = NdotvGridNodeValue( (float)DTid.x / (float)( GridSize - 1 ) );
+    float roughness = RoughnessGridNodeValue( (float)DTid.y / (float)( GridSize - 1 ) );
     Grid[DTid.y * GridSize + DTid.x] = IntegrateBrdfQuadrature( ndotv.x, ndotv.y, roughness );
 }

@@ -3,6 +3,8 @@
 // grid's coordinates (Common/LutGrid.fxh). Past the grid's first and last nodes, the missing
 // neighbour is extrapolated by the quadratic through the three nearest nodes: a repeated edge
 // node would make the end intervals first-order (1.8e-3 off at a 128² grid's N.V = 1 corner).
+// The LUT lies in [0, 1]: saturate keeps the interpolation's undershoot of a bias near 0 from
+// turning negative, which an RG16F LUT would store as a half of the other sign.
 #include "Common/LutGrid.fxh"
 
 cbuffer LutGridParameter : register( b0 )
@@ -39,12 +41,12 @@ void main( uint3 DTid : SV_DispatchThreadId )
     if ( any( DTid.xy >= dims ) )
         return;
     int2 last = (int2)GridSize - 1;
-    float2 position = float2( GridPosition( ( (float)DTid.x + 0.5f ) / dims.x, last.x ),
-                              GridPosition( ( (float)DTid.y + 0.5f ) / dims.y, last.y ) );
+    float2 position = float2( NdotvGridPosition( ( (float)DTid.x + 0.5f ) / dims.x, last.x ),
+                              RoughnessGridPosition( ( (float)DTid.y + 0.5f ) / dims.y, last.y ) );
     int2 cell = min( (int2)position, last - 1 );
     float4 across = CatmullRomWeights( position.x - cell.x ), down = CatmullRomWeights( position.y - cell.y );
     float2 rows[4];
     [unroll] for ( int k = 0; k < 4; ++k )
         rows[k] = RowInterpolation( clamp( cell.y - 1 + k, 0, last.y ), cell.x, last.x, across );
-    Precomputed[DTid.xy] = CatmullRom( rows[0], rows[1], rows[2], rows[3], cell.y, last.y, down );
+    Precomputed[DTid.xy] = saturate( CatmullRom( rows[0], rows[1], rows[2], rows[3], cell.y, last.y, down ) );
 }

@@ -1,22 +1,38 @@
 // The node grid of the quadrature-grid LUT (BrdfLutGridCS writes it, BrdfLutResampleCS reads
-// it): node (i, j) of a g x g grid sits at N.V = u³, roughness = w³ with u = i / (g - 1),
-// w = j / (g - 1), both ends included. The LUT turns fastest near N.V = 0 at low roughness
-// (Schlick-GGX's G1(V) = N.V / (N.V (1 - k) + k) switches on over N.V ~ k = roughness² / 2), and
-// the cube roots crowd the nodes there: at g = 64, a cube-root grid is 9e-4 off at worst where
-// square roots are 2.4e-3 and a uniform grid 0.21 (Catmull-Rom, against the converged LUT at 512²).
+// it): node (i, j) of a g x g grid sits at u = i / (g - 1), w = j / (g - 1), both ends included.
+// Roughness = w³. N.V = s (2 - s) with s = u³, so that 1 - N.V = (1 - s)².
+// The LUT turns fastest near N.V = 0 at low roughness (Schlick-GGX's G1(V) = N.V / (N.V (1 - k) + k)
+// switches on over N.V ~ k = roughness² / 2), and the cube roots crowd the nodes there: at g = 64,
+// a cube-root grid is 9e-4 off at worst where square roots are 2.4e-3 and a uniform grid 0.21
+// (Catmull-Rom, against the converged LUT at 512²). Near N.V = 1 the bias is small (2e-5) and an
+// RG16F LUT needs it to 1e-3 of itself: s (2 - s) crowds the nodes there too, which took a 128²
+// grid's furthest half from 5 steps to 2 (the C++ twin, runtime/reference/lut_grid.cpp).
 #ifndef LUT_GRID_FXH
 #define LUT_GRID_FXH
 
-// A LUT coordinate in [0, 1] (N.V or roughness) in grid units of a grid whose last node is `last`.
-float GridPosition( float x, uint last )
+// Roughness in [0, 1] in grid units of a grid whose last node is `last`.
+float RoughnessGridPosition( float roughness, uint last )
 {
-    return pow( x, 1.f / 3.f ) * (float)last;
+    return pow( roughness, 1.f / 3.f ) * (float)last;
 }
 
-// u³, and 1 - u³ = (1 - u)(1 + u + u²), formed apart so that it keeps its precision near u = 1.
-float2 GridNodeValue( float u )
+// N.V in [0, 1] in grid units: u = cbrt(1 - sqrt(1 - N.V)), written without the cancellation.
+float NdotvGridPosition( float ndotv, uint last )
 {
-    return float2( u * u * u, ( 1.f - u ) * ( 1.f + u + u * u ) );
+    return pow( ndotv / ( 1.f + sqrt( 1.f - ndotv ) ), 1.f / 3.f ) * (float)last;
+}
+
+// The roughness of the node at w.
+float RoughnessGridNodeValue( float w )
+{
+    return w * w * w;
+}
+
+// N.V and 1 - N.V of the node at u; 1 - s = (1 - u)(1 + u + u²) keeps its precision near u = 1.
+float2 NdotvGridNodeValue( float u )
+{
+    float s = u * u * u, rest = ( 1.f - u ) * ( 1.f + u + u * u );
+    return float2( s * ( 2.f - s ), rest * rest );
 }
 
 // Catmull-Rom's weights of four nodes around a point t in [0, 1] of the middle interval.

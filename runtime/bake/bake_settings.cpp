@@ -41,7 +41,7 @@ void requireLutMethod(const std::string& method) {
 
 uint32_t resolvedLutSamples(const BakeSettings& settings) {
     if (settings.lutSamples) return *settings.lutSamples;
-    if (settings.lutMethod == kernels::kQuadratureGridLutMethod) return kDefaultLutGrid;
+    if (settings.lutMethod == kernels::kQuadratureGridLutMethod) return kernels::kDefaultLutGrid;
     if (settings.lutMethod == kernels::kFitLutMethod) return kDefaultLutFitDegree;
     return settings.lutMethod == kernels::kQuadratureLutMethod ? kernels::kDefaultQuadratureNodes : kDocumentSamples;
 }

@@ -21,13 +21,10 @@ inline constexpr const char* kDefaultSpecularMethod = "convolution";
 inline constexpr uint32_t kDefaultConvolutionBudget = 128;
 inline constexpr uint32_t kDefaultPyramidReads = 1;
 inline constexpr uint32_t kDocumentSamples = 1024; // the documents' SAMPLE_COUNT
-// The LUT method the bake runs unless told otherwise: the quadrature is within 6e-6 of the
-// converged LUT at 512², where the documents' estimator at 1024 samples is 1e-2 off, in about
-// a quarter of its time (docs/bench.md).
-inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureLutMethod;
-// The quadrature grid's nodes per side unless told otherwise: within 1e-4 of the converged LUT
-// at 512² (RG32F's target), at a tenth of the full quadrature's time (docs/bench.md).
-inline constexpr uint32_t kDefaultLutGrid = 128;
+// The LUT method the bake runs unless told otherwise: the quadrature grid meets both LUT targets
+// at 512² (docs/bench.md) in a sixth of the full quadrature's time, where the documents'
+// estimator at 1024 samples is 1e-2 off.
+inline constexpr const char* kDefaultLutMethod = kernels::kQuadratureGridLutMethod;
 // The polynomial's degree unless told otherwise: 6.5e-2 from the converged LUT (tests/reference).
 inline constexpr uint32_t kDefaultLutFitDegree = 5;
 

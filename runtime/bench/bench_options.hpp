@@ -19,7 +19,7 @@ struct BenchOptions {
     std::vector<std::string> methods;             // prefilter and LUT methods; empty: every one in the table
     std::vector<uint32_t> samples{16, 64, 256, 1024, 4096, 16384, 65536};
     std::vector<uint32_t> quadratureNodes{3, 4, 5, 6, 7, 8}; // the LUT quadrature's counts, nodes per panel
-    std::vector<uint32_t> lutGrids{8, 16, 32, 64, 128};      // the LUT quadrature grid's counts, nodes per side
+    std::vector<uint32_t> lutGrids{8, 16, 32, 64, 128, 192, 256};      // the LUT quadrature grid's counts, nodes per side
     std::vector<uint32_t> lutDegrees{1, 3, 5, 7, 9};         // the polynomial LUT's counts, its degree
     uint32_t size = 256;          // source cube face; specular mips down to 8x8, as the bake makes them
     uint32_t lutSize = 512;

@@ -27,6 +27,12 @@ inline constexpr uint32_t kDefaultQuadratureNodes = 7;
 // ends; a grid as fine as the LUT gains nothing over the plain quadrature.
 inline constexpr uint32_t kMinLutGrid = 4;
 inline constexpr uint32_t kMaxLutGrid = 1024;
+// The quadrature grid's nodes per side unless told otherwise. Measured on lavapipe at 512²: 192
+// is 1.6e-5 from the converged LUT (RG32F's target is 1e-4) with every RG16F texel the converged
+// value's nearest half or its neighbour, in 32 ms; 160 is 5.4e-5 off, 144 1.3e-4 (the grazing
+// column of low roughness) and 128 leaves RG16F texels two steps off. The C++ twin measures 192
+// at 6.4e-6 for a 128² LUT and 4.8e-5 for a 1024² one, both within a half step.
+inline constexpr uint32_t kDefaultLutGrid = 192;
 
 // Every method with a LUT kernel, in table order.
 std::vector<std::string> lutMethods();

@@ -3,6 +3,7 @@
 #include "lut_quadrature.hpp"
 #include "parallel_rows.hpp"
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -17,13 +18,24 @@ namespace {
 template <typename T> using Pair = glm::vec<2, T>;
 
 template <typename T>
-T GridPosition(T x, int last) {
-    return std::pow(x, T(1) / T(3)) * T(last);
+T RoughnessGridPosition(T roughness, int last) {
+    return std::pow(roughness, T(1) / T(3)) * T(last);
 }
 
 template <typename T>
-Pair<T> GridNodeValue(T u) {
-    return {u * u * u, (T(1) - u) * (T(1) + u + u * u)};
+T NdotvGridPosition(T ndotv, int last) {
+    return std::pow(ndotv / (T(1) + std::sqrt(T(1) - ndotv)), T(1) / T(3)) * T(last);
+}
+
+template <typename T>
+T RoughnessGridNodeValue(T w) {
+    return w * w * w;
+}
+
+template <typename T>
+Pair<T> NdotvGridNodeValue(T u) {
+    const T s = u * u * u, rest = (T(1) - u) * (T(1) + u + u * u);
+    return {s * (T(2) - s), rest * rest};
 }
 
 template <typename T>
@@ -51,12 +63,12 @@ Pair<T> RowInterpolation(std::span<const T> grid, int row, int cell, int last, g
 
 template <typename T>
 Pair<T> ResampleTexel(std::span<const T> grid, int last, T ndotv, T roughness) {
-    const Pair<T> position(GridPosition(ndotv, last), GridPosition(roughness, last));
+    const Pair<T> position(NdotvGridPosition(ndotv, last), RoughnessGridPosition(roughness, last));
     const glm::ivec2 cell(std::min(int(position.x), last - 1), std::min(int(position.y), last - 1));
     const auto across = CatmullRomWeights(position.x - T(cell.x)), down = CatmullRomWeights(position.y - T(cell.y));
     std::array<Pair<T>, 4> rows;
     for (int k = 0; k < 4; ++k) rows[k] = RowInterpolation(grid, std::clamp(cell.y - 1 + k, 0, last), cell.x, last, across);
-    return CatmullRom(rows[0], rows[1], rows[2], rows[3], cell.y, last, down);
+    return glm::clamp(CatmullRom(rows[0], rows[1], rows[2], rows[3], cell.y, last, down), T(0), T(1));
 }
 
 } // namespace
@@ -66,9 +78,9 @@ std::vector<T> brdfLutGridNodes(uint32_t gridSize, uint32_t nodes) {
     if (gridSize < 2) throw std::invalid_argument("a LUT grid needs at least 2 nodes per side");
     std::vector<T> grid(size_t(gridSize) * gridSize * 2);
     forEachRow(gridSize, [&](uint32_t y) {
-        const T roughness = GridNodeValue(T(y) / T(gridSize - 1)).x;
+        const T roughness = RoughnessGridNodeValue(T(y) / T(gridSize - 1));
         for (uint32_t x = 0; x < gridSize; ++x) {
-            const auto ndotv = GridNodeValue(T(x) / T(gridSize - 1));
+            const auto ndotv = NdotvGridNodeValue(T(x) / T(gridSize - 1));
             const auto scaleBias = IntegrateBrdfQuadrature(ndotv.x, ndotv.y, roughness, nodes);
             grid[(size_t(y) * gridSize + x) * 2] = scaleBias.x;
             grid[(size_t(y) * gridSize + x) * 2 + 1] = scaleBias.y;

@@ -74,7 +74,7 @@ protected:
         settings.specularMethod = "document"; // the convolution has its own suite below
         settings.samples = 256;
         settings.lutSize = 32;
-        settings.lutMethod = "document"; // the quadrature is checked against the converged LUT below
+        settings.lutMethod = "document"; // tests/kernels checks the default LUT against the converged one
         settings.lutSamples = 256;
         settings.irradianceSize = 16;
         settings.dds = settings.exr = true;

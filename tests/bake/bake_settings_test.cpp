@@ -48,7 +48,9 @@ TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
     EXPECT_EQ(resolvedSamples(settings), 1024u);
     settings.samples = 64;
     EXPECT_EQ(resolvedSamples(settings), 64u);
-    EXPECT_EQ(settings.lutMethod, "quadrature");
+    EXPECT_EQ(settings.lutMethod, "quadrature-grid");
+    EXPECT_EQ(resolvedLutSamples(settings), kernels::kDefaultLutGrid);
+    settings.lutMethod = "quadrature";
     EXPECT_EQ(resolvedLutSamples(settings), kernels::kDefaultQuadratureNodes);
     settings.lutMethod = "document";
     EXPECT_EQ(resolvedLutSamples(settings), 1024u);
@@ -79,7 +81,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.lutMethod = "quadrature-grid"; s.lutSamples = 3; },
             "--lut-samples 3 is out of range (4 to 1024)");
     refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature, fit, quadrature-grid)");
-    refused([](BakeSettings& s) { s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
+    refused([](BakeSettings& s) { s.lutMethod = "quadrature"; s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
     auto settings = settingsWithOutput();
     settings.specularMethod = "document";

@@ -127,9 +127,10 @@ TEST_F(BrokenVariant, ImpreciseArcFailsTheQuadratureLut) {
     expectEveryPathFails(rows, "BrdfLutGridCS");
 }
 
-// The grid's N.V at u² instead of u³: nodes where the interpolation does not look for them.
-TEST_F(BrokenVariant, SquareRootGridFailsTheGridNodes) {
-    const auto rows = run(broken("Common/LutGrid.fxh", "return float2( u * u * u,", "return float2( u * u,"));
+// The grid's N.V at u³ instead of s (2 - s), s = u³: nodes where the interpolation does not look
+// for them.
+TEST_F(BrokenVariant, CubeRootGridFailsTheGridNodes) {
+    const auto rows = run(broken("Common/LutGrid.fxh", "return float2( s * ( 2.f - s ), rest * rest );", "return float2( s, rest );"));
     expectEveryPathFails(rows, "BrdfLutGridCS");
 }
 

@@ -68,7 +68,7 @@ void addBenchCommand(CLI::App& app) {
                         "The LUT quadrature's Gauss-Legendre nodes per panel, 1 to 16 (default 3,4,5,6,7,8)")
         ->delimiter(',');
     command->add_option("--lut-grid", o.lutGrids,
-                        "The LUT quadrature grid's nodes per side, 4 to 1024 (default 8,16,32,64,128)")
+                        "The LUT quadrature grid's nodes per side, 4 to 1024 (default 8,16,32,64,128,192,256)")
         ->delimiter(',');
     command->add_option("--lut-degree", o.lutDegrees, "The polynomial LUT's degrees, 1 to 9 (default 1,3,5,7,9)")
         ->delimiter(',');
