@@ -3,6 +3,7 @@
 #include "kernels/specular_method.hpp"
 
 #include "bake_directory.hpp"
+#include "bake_kernels.hpp"
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
 #include "environment_input.hpp"
@@ -84,21 +85,22 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     BakeDirectory directory(settings.outputDir);
 
     progress.begin("load");
+    const vulkan::VulkanContext context(settings.context);
+    BakeKernels kernels(context, settings);
     const auto input = loadEnvironment(settings.environment, settings.sanitize);
     const uint32_t size = resolvedSize(settings, input.cubeSize);
     if (!std::has_single_bit(size))
         throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));
     const uint32_t mips = resolvedMips(settings, size);
-    const vulkan::VulkanContext context(settings.context);
     checkMemory(context, settings, input, size);
     progress.end();
 
     auto source = buildSourceCube(context, input, size, progress);
-    auto specular = prefilterSpecular(context, source, mips, settings.specularMethod, resolvedSamples(settings), progress);
-    auto lut = integrateBrdfLut(context, settings.lutSize, settings.lutMethod, resolvedLutSamples(settings), progress);
-    auto irradiance = computeIrradiance(context, source, settings.irradianceSize, progress);
+    auto specular = prefilterSpecular(context, source, mips, kernels.specular(), progress);
+    auto lut = integrateBrdfLut(context, settings.lutSize, kernels.lut(), progress);
+    auto irradiance = computeIrradiance(context, kernels.irradiance(), source, settings.irradianceSize, progress);
     const float exposure = previewExposure(irradiance);
-    const auto preview = renderPreview(context, specular, irradiance.cube, lut, exposure, progress);
+    const auto preview = renderPreview(context, kernels.preview(), specular, irradiance.cube, lut, exposure, progress);
 
     progress.begin("write");
     const auto lutFormat =

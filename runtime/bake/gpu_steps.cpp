@@ -84,12 +84,11 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
 }
 
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                const std::string& method, uint32_t samples, BakeProgress& progress) {
+                                kernels::SpecularMethod& prefilter, BakeProgress& progress) {
     progress.begin("prefilter");
     const uint32_t size = source.desc().width;
     auto specular = makeCube(context, "Specular", size, mips);
     specular.copyMipFrom(context, source, 0);
-    kernels::SpecularMethod prefilter(context, method, samples);
     const vulkan::Sampler linear(context, {});
     double work = 0, done = 0; // texels still to convolve, for the percentage
     for (uint32_t mip = 1; mip < mips; ++mip) work += std::pow(double(specular.mipWidth(mip)), 2);
@@ -103,10 +102,9 @@ vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Im
     return specular;
 }
 
-vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, const std::string& method, uint32_t samples,
+vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, kernels::LutMethod& integrator,
                                BakeProgress& progress) {
     progress.begin("brdf lut");
-    kernels::LutMethod integrator(context, method, samples);
     vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), size, size, 1, 1, false, true});
     integrator.run(lut);
     progress.addDeviceTime(integrator.takeTotals().deviceMilliseconds);
@@ -116,12 +114,6 @@ vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t si
 
 IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
     : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
-
-Irradiance computeIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t size,
-                             BakeProgress& progress) {
-    IrradianceKernels steps(context);
-    return computeIrradiance(context, steps, source, size, progress);
-}
 
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
                              uint32_t size, BakeProgress& progress) {
@@ -142,14 +134,13 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     return result;
 }
 
-Preview renderPreview(const vulkan::VulkanContext& context, vulkan::Image& specular, vulkan::Image& irradiance,
-                      vulkan::Image& brdfLut, float exposure, BakeProgress& progress) {
+Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& specular,
+                      vulkan::Image& irradiance, vulkan::Image& brdfLut, float exposure, BakeProgress& progress) {
     progress.begin("preview");
     const uint32_t width = kPreviewColumns * kPreviewCellSize, mips = specular.desc().mips;
     const uint32_t panelWidth = width / mips, height = kPreviewRows * kPreviewCellSize + panelWidth / 2;
     vulkan::Image image(context, {"Preview", &rgba32(), width, height, 1, 1, false, true});
     const vulkan::Sampler linear(context, {});
-    auto kernel = makeKernel(context, KernelRole::Preview);
     kernels::runPreview(kernel, specular, irradiance, brdfLut, linear, image,
                         {kPreviewColumns, kPreviewRows, kPreviewCellSize, mips, panelWidth, exposure});
     report(kernel, progress);

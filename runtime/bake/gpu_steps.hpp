@@ -4,6 +4,8 @@
 #include "environment_input.hpp"
 #include "image.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/lut_methods.hpp"
+#include "kernels/specular_method.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -18,14 +20,13 @@ namespace iblkit::bake {
 vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
                               BakeProgress& progress);
 
-// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by the prefilter method
-// `method` (kernels::SpecularMethod) at roughnessOfMip(m, mips) with `samples` samples (terms
-// per texel, for the convolution).
+// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by `prefilter` at
+// roughnessOfMip(m, mips).
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                const std::string& method, uint32_t samples, BakeProgress& progress);
+                                kernels::SpecularMethod& prefilter, BakeProgress& progress);
 
-// PrecomputedBrdfCS over size x size, stored as R32G32_SFLOAT (the host rounds to 16 bits).
-vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, const std::string& method, uint32_t samples,
+// The LUT over size x size by `integrator`, stored as R32G32_SFLOAT (the host rounds to 16 bits).
+vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, kernels::LutMethod& integrator,
                                BakeProgress& progress);
 
 struct Irradiance {
@@ -43,14 +44,12 @@ uint32_t firstMipAtMost(uint32_t size, uint32_t limit);
 inline constexpr uint32_t kShSourceLimit = 64;
 inline constexpr uint32_t kIrradianceSourceLimit = 32;
 
-// The two kernels of the irradiance step, compiled once for repeated runs.
+// The two kernels of the irradiance step, compiled once for repeated runs or ahead of the step.
 struct IrradianceKernels {
     explicit IrradianceKernels(const vulkan::VulkanContext& context);
     kernels::Kernel project, cube;
 };
 
-Irradiance computeIrradiance(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t size,
-                             BakeProgress& progress);
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
                              uint32_t size, BakeProgress& progress);
 
@@ -63,7 +62,8 @@ inline constexpr uint32_t kPreviewColumns = 7;   // roughness 0, 1/6, ..., 1
 inline constexpr uint32_t kPreviewRows = 3;      // metalness 0, 0.5, 1
 inline constexpr uint32_t kPreviewCellSize = 128;
 
-Preview renderPreview(const vulkan::VulkanContext& context, vulkan::Image& specular, vulkan::Image& irradiance,
-                      vulkan::Image& brdfLut, float exposure, BakeProgress& progress);
+// `kernel`: PreviewCS (kernels::KernelRole::Preview).
+Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& specular,
+                      vulkan::Image& irradiance, vulkan::Image& brdfLut, float exposure, BakeProgress& progress);
 
 } // namespace iblkit::bake
