@@ -100,6 +100,7 @@ Bounds convolutionBounds();
 Bounds filteredBounds();
 Bounds tableBounds();
 Bounds pyramidBounds();
+Bounds ringBounds();
 Bounds previewBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.

@@ -1,6 +1,6 @@
 // The prefilter methods that read the source's mips: filtered importance sampling, its host
-// sample table, and the pyramid's reads along the normal, over the test environment with its
-// whole chain.
+// sample table, and the pyramid's reads along the normal and around its ring, over the test
+// environment with its whole chain.
 #include "filtered_prefilter.hpp"
 #include "gl_cube_bake.hpp"
 #include "gpu_cube_bake.hpp"
@@ -16,6 +16,24 @@ namespace iblkit::consistency {
 namespace {
 
 constexpr uint32_t kSuitePyramidReads = 2; // READ_COUNT in hlsl/shaders.json
+constexpr uint32_t kSuiteRingReads = 8;    // RING_COUNT in hlsl/shaders.json
+
+void addRingOutput(SuiteRun& run, const MippedCube& cube, const reference::MippedEnvironment& source,
+                   const reference::PyramidRing& ring, float roughness) {
+    const uint32_t size = run.options.prefilterSize;
+    const auto parameters = kernels::ringParameters(ring);
+    addOutput(run, {"PrefilterRingCS", fmt::format("prefilter {}² r={}, a read along N and {} around it", size, roughness,
+                                                   kSuiteRingReads),
+                    ringBounds()},
+              {reference::referenceRingPrefilter<float>(source, ring, kSuiteRingReads, size),
+               reference::referenceRingPrefilter<double>(source, ring, kSuiteRingReads, size)},
+              [&](const PathProgram& program) {
+                  return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
+                      kernels::runPrefilterRing(kernel, envMap, sampler, out, 0, parameters);
+                  });
+              },
+              [&](const OpenGlForm& form) { return glMippedPrefilter(run.gl, form, cube, parameters.members(), size); });
+}
 
 } // namespace
 
@@ -29,8 +47,14 @@ void addFilteredOutputs(SuiteRun& run) {
                         filteredBounds()},
                   {reference::referenceFilteredPrefilter<float>(source, roughness, size, samples),
                    reference::referenceFilteredPrefilter<double>(source, double(roughness), size, samples)},
-                  [&](const PathProgram& program) { return gpuMippedPrefilter(run.vulkan, program, cube, roughness, size); },
-                  [&](const OpenGlForm& form) { return glMippedPrefilter(run.gl, form, cube, roughness, size); });
+                  [&](const PathProgram& program) {
+                      return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
+                          kernels::runPrefilter(kernel, envMap, sampler, out, 0, {roughness});
+                      });
+                  },
+                  [&](const OpenGlForm& form) {
+                      return glMippedPrefilter(run.gl, form, cube, kernels::PrefilterParameters{roughness}.members(), size);
+                  });
         const auto table = reference::prefilterSampleTable(roughness, samples, cube.size);
         addOutput(run, {"PrefilterTableCS", fmt::format("prefilter {}² r={}, {} table samples", size, roughness, table.size()),
                         tableBounds()},
@@ -44,8 +68,13 @@ void addFilteredOutputs(SuiteRun& run) {
                         pyramidBounds()},
                   {reference::referencePyramidPrefilter<float>(source, reads, size),
                    reference::referencePyramidPrefilter<double>(source, reads, size)},
-                  [&](const PathProgram& program) { return gpuPyramidPrefilter(run.vulkan, program, cube, parameters, size); },
-                  [&](const OpenGlForm& form) { return glPyramidPrefilter(run.gl, form, cube, parameters, size); });
+                  [&](const PathProgram& program) {
+                      return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
+                          kernels::runPrefilterPyramid(kernel, envMap, sampler, out, 0, parameters);
+                      });
+                  },
+                  [&](const OpenGlForm& form) { return glMippedPrefilter(run.gl, form, cube, parameters.members(), size); });
+        if (const auto ring = reference::pyramidRing(roughness, cube.size)) addRingOutput(run, cube, source, *ring, roughness);
     }
 }
 

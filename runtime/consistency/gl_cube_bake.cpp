@@ -91,12 +91,12 @@ std::vector<float> glIrradianceCube(const opengl::EglContext& context, const Ope
 }
 
 std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                     float roughness, uint32_t size) {
+                                     const kernels::NamedValues& values, uint32_t size) {
     const auto program = glpath::program(context, form);
     const auto envMap = bindMippedEnvironment(context, form, cube);
     const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
     glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
-    const auto parameters = glpath::bindParameters(context, form, kernels::PrefilterParameters{roughness}.members());
+    const auto parameters = glpath::bindParameters(context, form, values);
     glpath::dispatch(context, program, form, {size, size, 6});
     return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }
@@ -111,17 +111,6 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
     glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
     const auto parameters =
         glpath::bindParameters(context, form, kernels::PrefilterTableParameters{uint32_t(table.size())}.members());
-    glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
-}
-
-std::vector<float> glPyramidPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                      const kernels::PrefilterPyramidParameters& reads, uint32_t size) {
-    const auto program = glpath::program(context, form);
-    const auto envMap = bindMippedEnvironment(context, form, cube);
-    const auto prefiltered = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, size, 1);
-    glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
-    const auto parameters = glpath::bindParameters(context, form, reads.members());
     glpath::dispatch(context, program, form, {size, size, 6});
     return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }

@@ -22,12 +22,12 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
                                   uint32_t mip);
 std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                     uint32_t mip, uint32_t outSize);
+// A prefilter that reads `cube`'s whole chain (PrefilterFilteredCS, PrefilterPyramidCS,
+// PrefilterRingCS), its cbuffer set to `parameters`.
 std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                     float roughness, uint32_t size);
+                                     const kernels::NamedValues& parameters, uint32_t size);
 std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                     std::span<const glm::vec4> table, uint32_t size);
-std::vector<float> glPyramidPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                      const kernels::PrefilterPyramidParameters& reads, uint32_t size);
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
 
 } // namespace iblkit::consistency

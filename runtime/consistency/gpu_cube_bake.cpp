@@ -61,12 +61,12 @@ std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const
 }
 
 std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
-                                      const MippedCube& cube, float roughness, uint32_t size) {
+                                      const MippedCube& cube, uint32_t size, const MippedDispatch& dispatch) {
     kernels::Kernel kernel(context, program);
     auto envMap = uploadCube(context, "EnvMap", cube);
     const vulkan::Sampler linear(context, {});
     vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
-    kernels::runPrefilter(kernel, envMap, linear, prefiltered, 0, {roughness});
+    dispatch(kernel, envMap, linear, prefiltered);
     return prefiltered.download(context);
 }
 
@@ -80,17 +80,6 @@ std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const
     samples.write(bytes);
     vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
     kernels::runPrefilterTable(kernel, envMap, linear, samples, uint32_t(table.size()), prefiltered, 0);
-    return prefiltered.download(context);
-}
-
-std::vector<float> gpuPyramidPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
-                                       const MippedCube& cube, const kernels::PrefilterPyramidParameters& reads,
-                                       uint32_t size) {
-    kernels::Kernel kernel(context, program);
-    auto envMap = uploadCube(context, "EnvMap", cube);
-    const vulkan::Sampler linear(context, {});
-    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
-    kernels::runPrefilterPyramid(kernel, envMap, linear, prefiltered, 0, reads);
     return prefiltered.download(context);
 }
 

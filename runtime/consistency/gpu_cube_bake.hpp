@@ -7,6 +7,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -34,17 +35,16 @@ kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const P
 std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const MippedCube& cube, uint32_t mip, uint32_t outSize);
 
-// Prefilter of a method that reads the source's mips (PrefilterFilteredCS): `cube` with its
-// whole chain as EnvMap, read through a trilinear sampler, into size x size faces.
+// Prefilter of a method that reads the source's mips (PrefilterFilteredCS, PrefilterPyramidCS,
+// PrefilterRingCS): `cube` with its whole chain as EnvMap, read through a trilinear sampler,
+// into size x size faces; `dispatch` runs the kernel's step (kernel_steps.hpp) into mip 0.
+using MippedDispatch = std::function<void(kernels::Kernel& kernel, vulkan::Image& envMap, const vulkan::Sampler& sampler,
+                                          vulkan::Image& prefiltered)>;
 std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
-                                      const MippedCube& cube, float roughness, uint32_t size);
+                                      const MippedCube& cube, uint32_t size, const MippedDispatch& dispatch);
 // PrefilterTable: the same, each texel summing `table`'s samples.
 std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size);
-// PrefilterPyramid: the same, each texel reading the chain along its normal at `reads`' lods.
-std::vector<float> gpuPyramidPrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
-                                       const MippedCube& cube, const kernels::PrefilterPyramidParameters& reads,
-                                       uint32_t size);
 // Preview: the RGBA image, row by row.
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs);

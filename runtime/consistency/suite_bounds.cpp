@@ -28,6 +28,7 @@ Bounds convolutionBounds() { return {1.4e-5, 1.1e-6, 1.4e-5, 1.5e-6}; }
 Bounds filteredBounds() { return {1.4e-3, 1.1e-5, 1e-3, 6e-5}; }
 Bounds tableBounds() { return {1.8e-4, 1.7e-6, 1e-3, 6e-5}; }
 Bounds pyramidBounds() { return {1.6e-5, 5e-7, 1.7e-5, 5.3e-7}; }
+Bounds ringBounds() { return {3.8e-6, 2.7e-7, 4.8e-6, 3e-7}; }
 
 std::string knownDivergence(const std::string& kernel, const std::string& path) {
     if (kernel == "PrefilterConvolutionCS" && path.starts_with("b."))
@@ -99,11 +100,14 @@ std::string boundsRationale() {
            "roughnesses, the largest on any path: PrefilterFiltered 6.8e-4, RMS 5.2e-6, against float and 4.9e-4, RMS "
            "2.9e-5, against double (bounds 1.4e-3 / 1.1e-5 and 1e-3 / 6e-5); PrefilterTable 8.8e-5, RMS 8.4e-7, and "
            "the same against double (bounds 1.8e-4 / 1.7e-6 and 1e-3 / 6e-5); PrefilterPyramid 7.6e-6, RMS 2.5e-7, "
-           "and 8.3e-6, RMS 2.6e-7 (bounds 1.6e-5 / 5e-7 and 1.7e-5 / 5.3e-7). The largest are at roughness 0, where "
+           "and 8.3e-6, RMS 2.6e-7 (bounds 1.6e-5 / 5e-7 and 1.7e-5 / 5.3e-7); PrefilterRing, at the roughnesses that "
+           "take it (0.5 and 1), 1.9e-6, RMS 1.3e-7, and 2.4e-6, RMS 1.5e-7 (bounds 3.8e-6 / 2.7e-7 and 4.8e-6 / "
+           "3e-7). The largest are at roughness 0, where "
            "every sample reads mip 0 along a direction rounded differently in float: the float reference is 4.9e-4 from "
            "the double one there and 4e-6 to 4e-5 elsewhere. Reading the lod with the natural log instead of log2 "
            "fails every path of the sampled kernels; a table summed without its N.L weights too; the pyramid's lod "
-           "shift towards the corners with its sign turned fails every path of its kernel.\n"
+           "shift towards the corners with its sign turned fails every path of its kernel, and the ring's reads at the "
+           "complement of their angle every path of the ring's.\n"
            "- **DownsampleCube** (max 8e-6, RMS 4e-7, against both): the GPU is the float reference bit for bit (the "
            "same four additions and one multiplication); against the double means it is 3.8e-6 off at most (2 ULPs "
            "at radiance ~40), RMS 1.8e-7. The bound against float is the double one, so that a path that added in "

@@ -26,6 +26,10 @@ NamedValues PrefilterPyramidParameters::members() const {
     return {{"ReadLods", lodsOf}, {"ReadWeights", weightsOf}};
 }
 
+NamedValues PrefilterRingParameters::members() const {
+    return {{"Ring", {centreLod, ringLod, cosAngle, centreWeight}}};
+}
+
 NamedValues LutGridParameters::members() const { return {{"GridSize", {double(gridSize)}}}; }
 
 NamedValues ClusterParameters::members() const { return {{"Level", {double(level)}}}; }

@@ -36,6 +36,12 @@ struct PrefilterPyramidParameters {
     NamedValues members() const;
 };
 
+// PrefilterRingCS's Ring (reference::PyramidRing).
+struct PrefilterRingParameters {
+    float centreLod = 0, ringLod = 0, cosAngle = 1, centreWeight = 1;
+    NamedValues members() const;
+};
+
 // BrdfLutGrid and BrdfLutResample: the quadrature grid's nodes per side.
 struct LutGridParameters {
     uint32_t gridSize = 0;

@@ -26,13 +26,24 @@ void runDownsampleChain(Kernel& kernel, vulkan::Image& cube) {
     }
 }
 
-void runPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
-                  uint32_t mip, const PrefilterParameters& parameters) {
+namespace {
+
+// The prefilters that read EnvMap through EnvMapSampler into one mip of Prefiltered, a thread a
+// texel, with nothing else bound.
+void runEnvMapPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                        uint32_t mip, const NamedValues& parameters) {
     kernel.program().bind("EnvMap", source);
     kernel.program().bind("EnvMapSampler", sampler);
     kernel.program().bind("Prefiltered", target, mip);
-    kernel.setParameters(parameters.members());
+    kernel.setParameters(parameters);
     kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+}
+
+} // namespace
+
+void runPrefilter(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                  uint32_t mip, const PrefilterParameters& parameters) {
+    runEnvMapPrefilter(kernel, source, sampler, target, mip, parameters.members());
 }
 
 void runPrefilterChunk(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& accumulator,
@@ -67,11 +78,12 @@ void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
 
 void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                          uint32_t mip, const PrefilterPyramidParameters& reads) {
-    kernel.program().bind("EnvMap", source);
-    kernel.program().bind("EnvMapSampler", sampler);
-    kernel.program().bind("Prefiltered", target, mip);
-    kernel.setParameters(reads.members());
-    kernel.run({target.mipWidth(mip), target.mipWidth(mip), 6});
+    runEnvMapPrefilter(kernel, source, sampler, target, mip, reads.members());
+}
+
+void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                      uint32_t mip, const PrefilterRingParameters& ring) {
+    runEnvMapPrefilter(kernel, source, sampler, target, mip, ring.members());
 }
 
 void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid) {

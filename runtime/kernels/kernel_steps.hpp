@@ -67,6 +67,11 @@ void runPrefilterTable(Kernel& kernel, vulkan::Image& source, const vulkan::Samp
 void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                          uint32_t mip, const PrefilterPyramidParameters& reads);
 
+// PrefilterRing: one mip of `target`, each texel reading `source` along its normal and around a
+// ring about it.
+void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                      uint32_t mip, const PrefilterRingParameters& ring);
+
 // ClusterCubeCS's three pyramids: RGBA32F cubes the size of the source, with a full mip chain,
 // sampled and storage.
 struct EnergyPyramid {

@@ -17,6 +17,7 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"prefilter-chunk", KernelRole::PrefilterChunk},
     {"prefilter-table", KernelRole::PrefilterTable},
     {"prefilter-pyramid", KernelRole::PrefilterPyramid},
+    {"prefilter-ring", KernelRole::PrefilterRing},
     {"cluster-cube", KernelRole::ClusterCube},
     {"prefilter-convolution", KernelRole::PrefilterConvolution},
     {"sky-cube", KernelRole::SkyCube},

@@ -22,6 +22,7 @@ enum class KernelRole {
     PrefilterChunk, // + Accumulated; PrefilterChunkParameters
     PrefilterTable, // EnvMap + EnvMapSampler + SampleTable -> Prefiltered (one mip); PrefilterTableParameters
     PrefilterPyramid, // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterPyramidParameters; READ_COUNT
+    PrefilterRing,  // EnvMap + EnvMapSampler -> Prefiltered (one mip); PrefilterRingParameters; RING_COUNT
     ClusterCube,    // Source -> Energy + Centroid + Geometry (one pyramid level); ClusterParameters
     PrefilterConvolution, // Energy + Centroid + Geometry -> Prefiltered (one mip); PrefilterConvolutionParameters
     SkyCube,        // the built-in environment into mip 0 of a cube; SupersampleParameters

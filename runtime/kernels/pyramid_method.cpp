@@ -2,6 +2,7 @@
 
 #include "kernels/kernel_steps.hpp"
 #include "pyramid_fit.hpp"
+#include "pyramid_ring.hpp"
 
 #include <stdexcept>
 
@@ -29,16 +30,32 @@ PrefilterPyramidParameters pyramidParameters(const std::vector<reference::Pyrami
     return parameters;
 }
 
+PrefilterRingParameters ringParameters(const reference::PyramidRing& ring) {
+    return {ring.centreLod, ring.ringLod, ring.cosAngle, ring.centreWeight};
+}
+
 PyramidPrefilter::PyramidPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t reads,
                                    const ShaderFiles& files)
     : reads_(checkedReads(reads)),
       kernel_(context, compileKernel(kernelFor(KernelRole::PrefilterPyramid, method),
-                                     {{"READ_COUNT", std::to_string(reads)}}, {}, files)) {}
+                                     {{"READ_COUNT", std::to_string(reads)}}, {}, files)),
+      ring_(context, compileKernel(kernelFor(KernelRole::PrefilterRing, method),
+                                   {{"RING_COUNT", std::to_string(reference::kPyramidRingReads)}}, {}, files)) {}
 
 void PyramidPrefilter::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                            float roughness) {
-    runPrefilterPyramid(kernel_, source, sampler, target, mip,
-                        pyramidParameters(reference::fitPyramidReads(roughness, reads_, source.desc().width), reads_));
+    const uint32_t size = source.desc().width;
+    if (const auto ring = reference::pyramidRing(roughness, size))
+        runPrefilterRing(ring_, source, sampler, target, mip, ringParameters(*ring));
+    else
+        runPrefilterPyramid(kernel_, source, sampler, target, mip,
+                            pyramidParameters(reference::fitPyramidReads(roughness, reads_, size), reads_));
+}
+
+DispatchTotals PyramidPrefilter::takeTotals() {
+    const auto axial = kernel_.takeTotals(), ring = ring_.takeTotals();
+    return {axial.deviceMilliseconds + ring.deviceMilliseconds, axial.wallMilliseconds + ring.wallMilliseconds,
+            axial.dispatches + ring.dispatches};
 }
 
 } // namespace iblkit::kernels

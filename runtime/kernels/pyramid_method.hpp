@@ -11,6 +11,7 @@
 
 namespace iblkit::reference {
 struct PyramidRead;
+struct PyramidRing;
 }
 
 namespace iblkit::kernels {
@@ -18,10 +19,14 @@ namespace iblkit::kernels {
 // PrefilterPyramidCS's parameters for `reads` (reference::fitPyramidReads's) in a shader
 // compiled with READ_COUNT = readCount, at least as many.
 PrefilterPyramidParameters pyramidParameters(const std::vector<reference::PyramidRead>& reads, uint32_t readCount);
+// PrefilterRingCS's parameters for `ring`.
+PrefilterRingParameters ringParameters(const reference::PyramidRing& ring);
 
 // The pyramid method: per mip, reads of the source's mip chain along each texel's normal, their
-// lods and weights fitted on the host to the GGX lobe (reference::fitPyramidReads). `reads` is
-// the most reads per texel, 1 to 4; throws std::invalid_argument otherwise.
+// lods and weights fitted on the host to the GGX lobe (reference::fitPyramidReads), or, for a
+// lobe too wide for them (reference::pyramidRing), one read along the normal and a ring of reads
+// around it (PrefilterRingCS). `reads` is the most reads per texel along the normal, 1 to 4;
+// throws std::invalid_argument otherwise.
 class PyramidPrefilter {
 public:
     PyramidPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t reads,
@@ -29,11 +34,11 @@ public:
     // Writes mip `mip` of `target` (RGBA32F, storage) from `source` (with its mip chain, read
     // through `sampler`) at `roughness`.
     void run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip, float roughness);
-    DispatchTotals takeTotals() { return kernel_.takeTotals(); }
+    DispatchTotals takeTotals();
 
 private:
     uint32_t reads_;
-    Kernel kernel_;
+    Kernel kernel_, ring_;
 };
 
 } // namespace iblkit::kernels

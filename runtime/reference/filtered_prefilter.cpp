@@ -97,6 +97,26 @@ std::vector<T> referencePyramidPrefilter(const MippedEnvironment& source, const 
     });
 }
 
+template <typename T>
+std::vector<T> referenceRingPrefilter(const MippedEnvironment& source, const PyramidRing& ring, uint32_t ringReads,
+                                      uint32_t size) {
+    return prefilterFaces<T>(size, [&](vec3<T> normal) {
+        vec3<T> up = std::abs(normal.y) < T(0.999) ? vec3<T>(0, 1, 0) : vec3<T>(0, 0, 1);
+        const vec3<T> right = glm::normalize(glm::cross(up, normal));
+        up = glm::normalize(glm::cross(normal, right));
+        const T cosAngle = T(ring.cosAngle), sinAngle = std::sqrt(std::clamp(T(1) - cosAngle * cosAngle, T(0), T(1)));
+        vec3<T> sum(0);
+        for (uint32_t k = 0; k < ringReads; ++k) {
+            const T phi = T(6.28318530718) * T(k) / T(ringReads);
+            const vec3<T> toLight = cosAngle * normal + sinAngle * (std::cos(phi) * right + std::sin(phi) * up);
+            sum += vec3<T>(source.sampleLevel(glm::dvec3(toLight), double(ring.ringLod)));
+        }
+        const T centreWeight = T(ring.centreWeight);
+        return vec3<T>(source.sampleLevel(glm::dvec3(normal), double(ring.centreLod))) * centreWeight +
+               sum * ((T(1) - centreWeight) / T(ringReads));
+    });
+}
+
 template std::vector<float> referenceFilteredPrefilter<float>(const MippedEnvironment&, float, uint32_t, uint32_t);
 template std::vector<double> referenceFilteredPrefilter<double>(const MippedEnvironment&, double, uint32_t, uint32_t);
 template std::vector<float> referenceTablePrefilter<float>(const MippedEnvironment&, const std::vector<glm::vec4>&, uint32_t);
@@ -106,5 +126,7 @@ template std::vector<float> referencePyramidPrefilter<float>(const MippedEnviron
                                                             uint32_t);
 template std::vector<double> referencePyramidPrefilter<double>(const MippedEnvironment&, const std::vector<PyramidRead>&,
                                                               uint32_t);
+template std::vector<float> referenceRingPrefilter<float>(const MippedEnvironment&, const PyramidRing&, uint32_t, uint32_t);
+template std::vector<double> referenceRingPrefilter<double>(const MippedEnvironment&, const PyramidRing&, uint32_t, uint32_t);
 
 } // namespace iblkit::reference

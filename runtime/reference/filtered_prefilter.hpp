@@ -3,6 +3,7 @@
 #include "cube_environment.hpp"
 #include "mipped_cube.hpp"
 #include "pyramid_fit.hpp"
+#include "pyramid_ring.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -36,5 +37,10 @@ std::vector<T> referenceTablePrefilter(const MippedEnvironment& source, const st
 // PrefilterPyramidCS over size x size faces with the reads it is given (fitPyramidReads's).
 template <typename T>
 std::vector<T> referencePyramidPrefilter(const MippedEnvironment& source, const std::vector<PyramidRead>& reads, uint32_t size);
+
+// PrefilterRingCS over size x size faces with `ring` (pyramidRing's) and ringReads reads on it.
+template <typename T>
+std::vector<T> referenceRingPrefilter(const MippedEnvironment& source, const PyramidRing& ring, uint32_t ringReads,
+                                      uint32_t size);
 
 } // namespace iblkit::reference
