@@ -1,7 +1,5 @@
 #include "bake_kernels.hpp"
 
-#include "kernels/kernel_table.hpp"
-
 namespace iblkit::bake {
 
 BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings) {
@@ -9,8 +7,7 @@ BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSetting
     specularFuture_ = std::async(std::launch::async, [&context, method = settings.specularMethod,
                                                       samples = resolvedSamples(settings)] {
         auto specular = std::make_unique<kernels::SpecularMethod>(context, method, samples);
-        auto preview = std::make_unique<kernels::Kernel>(
-            context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::Preview)));
+        auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
         return Specular{std::move(specular), std::move(preview)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, method = settings.lutMethod,

@@ -24,10 +24,6 @@ vulkan::Image makeCube(const vulkan::VulkanContext& context, const std::string& 
     return vulkan::Image(context, {name, &rgba32(), size, size, 6, mips, true, true});
 }
 
-Kernel makeKernel(const vulkan::VulkanContext& context, KernelRole role) {
-    return Kernel(context, kernels::compileKernel(kernels::kernelFor(role)));
-}
-
 // The kernel's device time so far goes to the progress step.
 void report(Kernel& kernel, BakeProgress& progress) { progress.addDeviceTime(kernel.takeTotals().deviceMilliseconds); }
 
@@ -58,6 +54,10 @@ void uploadFaces(const vulkan::VulkanContext& context, const std::vector<float>&
 }
 
 } // namespace
+
+Kernel makeKernel(const vulkan::VulkanContext& context, KernelRole role) {
+    return Kernel(context, kernels::compileKernel(kernels::kernelFor(role)));
+}
 
 uint32_t firstMipAtMost(uint32_t size, uint32_t limit) {
     uint32_t mip = 0;

@@ -4,6 +4,7 @@
 #include "environment_input.hpp"
 #include "image.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/kernel_table.hpp"
 #include "kernels/lut_methods.hpp"
 #include "kernels/specular_method.hpp"
 
@@ -36,6 +37,9 @@ struct Irradiance {
     uint32_t shSourceSize;            // the source mip each was computed from
     uint32_t cubeSourceSize;
 };
+
+// The kit's kernel for `role` (a role with one kernel), compiled from the built-in hlsl/.
+kernels::Kernel makeKernel(const vulkan::VulkanContext& context, kernels::KernelRole role);
 
 // The first mip of a `size` chain whose faces are at most `limit` across.
 uint32_t firstMipAtMost(uint32_t size, uint32_t limit);

@@ -23,13 +23,6 @@ void requireBudget(uint32_t budget) {
                                                 kMaxConvolutionBudget, budget));
 }
 
-DispatchTotals& operator+=(DispatchTotals& sum, const DispatchTotals& more) {
-    sum.deviceMilliseconds += more.deviceMilliseconds;
-    sum.wallMilliseconds += more.wallMilliseconds;
-    sum.dispatches += more.dispatches;
-    return sum;
-}
-
 } // namespace
 
 ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget) {

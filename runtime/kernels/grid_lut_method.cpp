@@ -39,9 +39,9 @@ void GridLut::run(vulkan::Image& lut) {
 }
 
 DispatchTotals GridLut::takeTotals() {
-    const auto first = nodes_.takeTotals(), second = resample_.takeTotals();
-    return {first.deviceMilliseconds + second.deviceMilliseconds, first.wallMilliseconds + second.wallMilliseconds,
-            first.dispatches + second.dispatches};
+    auto totals = nodes_.takeTotals();
+    totals += resample_.takeTotals();
+    return totals;
 }
 
 } // namespace iblkit::kernels

@@ -16,6 +16,13 @@ struct DispatchTotals {
     double deviceMilliseconds = 0;
     double wallMilliseconds = 0;
     uint32_t dispatches = 0;
+
+    DispatchTotals& operator+=(const DispatchTotals& more) {
+        deviceMilliseconds += more.deviceMilliseconds;
+        wallMilliseconds += more.wallMilliseconds;
+        dispatches += more.dispatches;
+        return *this;
+    }
 };
 
 // One kernel on a Vulkan device: its program, the uniform buffer of its single cbuffer (set

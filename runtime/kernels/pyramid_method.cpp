@@ -53,9 +53,9 @@ void PyramidPrefilter::run(vulkan::Image& source, const vulkan::Sampler& sampler
 }
 
 DispatchTotals PyramidPrefilter::takeTotals() {
-    const auto axial = kernel_.takeTotals(), ring = ring_.takeTotals();
-    return {axial.deviceMilliseconds + ring.deviceMilliseconds, axial.wallMilliseconds + ring.wallMilliseconds,
-            axial.dispatches + ring.dispatches};
+    auto totals = kernel_.takeTotals();
+    totals += ring_.takeTotals();
+    return totals;
 }
 
 } // namespace iblkit::kernels

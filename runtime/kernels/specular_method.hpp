@@ -2,7 +2,6 @@
 
 #include "kernels/convolution_method.hpp"
 #include "kernels/pyramid_method.hpp"
-#include "kernels/pyramid_method.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "kernels/table_method.hpp"
 

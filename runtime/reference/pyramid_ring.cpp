@@ -25,10 +25,8 @@ std::vector<double> cumulativeMass(double roughness) {
     return mass;
 }
 
-} // namespace
-
-double lobeQuantileAngle(double roughness, double fraction) {
-    const auto mass = cumulativeMass(roughness);
+// The angle within which `fraction` of `mass` (cumulativeMass's) lies, linear within a step.
+double quantileAngle(const std::vector<double>& mass, double fraction) {
     const double wanted = fraction * mass.back();
     const auto above = std::lower_bound(mass.begin(), mass.end(), wanted);
     if (above == mass.begin()) return 0;
@@ -37,10 +35,15 @@ double lobeQuantileAngle(double roughness, double fraction) {
     return (double(at - 1) + within) * std::numbers::pi / 2 / kAngleSteps;
 }
 
+} // namespace
+
+double lobeQuantileAngle(double roughness, double fraction) { return quantileAngle(cumulativeMass(roughness), fraction); }
+
 std::optional<PyramidRing> pyramidRing(double roughness, uint32_t sourceSize) {
-    const double capAngle = lobeQuantileAngle(roughness, 0.5);
+    const auto mass = cumulativeMass(roughness);
+    const double capAngle = quantileAngle(mass, 0.5);
     if (capAngle < std::numbers::pi / 8) return std::nullopt;
-    const double ringAngle = lobeQuantileAngle(roughness, 0.75);
+    const double ringAngle = quantileAngle(mass, 0.75);
     const double texel = 2.0 / sourceSize; // a mip-0 texel's width at a face centre
     const double top = std::bit_width(sourceSize) - 1;
     const double spacing = 2 * std::numbers::pi * std::sin(ringAngle) / kPyramidRingReads;

@@ -67,13 +67,15 @@ void addBakeCommand(CLI::App& app) {
                         "convolution, 1 for pyramid)");
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-method", s.lutMethod,
-                        "BRDF LUT method: quadrature (default; a deterministic quadrature, exact in azimuth), "
-                        "quadrature-grid (the quadrature on a small grid, interpolated), fit (a polynomial fitted to "
-                        "the converged LUT) or document (the documents' importance sampling)");
+                        "BRDF LUT method: quadrature-grid (default; the quadrature on a grid of nodes, interpolated), "
+                        "quadrature (a deterministic quadrature at every texel, exact in azimuth), fit (a polynomial "
+                        "fitted to the converged LUT) or document (the documents' importance sampling)");
     command->add_option("--lut-samples", s.lutSamples,
-                        "BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, for the "
-                        "quadrature grid its nodes per side, for the fit its degree (default 1024 for document, 7 for "
-                        "quadrature, 128 for quadrature-grid, 5 for fit)");
+                        fmt::format("BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, "
+                                    "for the quadrature grid its nodes per side, for the fit its degree (default {} for "
+                                    "document, {} for quadrature, {} for quadrature-grid, {} for fit)",
+                                    bake::kDocumentSamples, kernels::kDefaultQuadratureNodes, kernels::kDefaultLutGrid,
+                                    bake::kDefaultLutFitDegree));
     command->add_option("--lut-format", arguments->lutFormat, "rg16f (default) or rg32f")
         ->check(CLI::IsMember({"rg16f", "rg32f"}));
     command->add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
