@@ -61,10 +61,21 @@ uint32_t samplesPerDispatch(uint32_t samples) {
     return chunk ? chunk : samples;
 }
 
+// The mip chain's mips: those copied from the source's own mips, and those the ring computed.
+json mipChainJson(const std::string& method, uint32_t size, uint32_t mips) {
+    json copied = json::array(), ring = json::array();
+    for (uint32_t mip = 1; mip < mips; ++mip)
+        (kernels::mipChainCopies(roughnessOfMip(mip, mips), size) ? copied : ring).push_back(mip);
+    return {{"method", method},
+            {"mips_copied_from_the_source", copied},
+            {"mips_from_the_ring", ring},
+            {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterRing, method).options.source.generic_string()}};
+}
+
 // How the prefilter method computed the mips: a sampled estimator's count and shader, a sample
-// table's count at each mip, the pyramid's reads per texel, or the convolution's budget of terms
-// per texel and its two shaders.
-json prefilterJson(const BakeSettings& settings, uint32_t mips) {
+// table's count at each mip, the pyramid's reads per texel, the mip chain's copied and ring mips,
+// or the convolution's budget of terms per texel and its two shaders.
+json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips) {
     const uint32_t samples = resolvedSamples(settings);
     const auto& method = settings.specularMethod;
     const auto kind = kernels::specularKindOf(method);
@@ -80,6 +91,7 @@ json prefilterJson(const BakeSettings& settings, uint32_t mips) {
         return {{"method", method},
                 {"reads_per_texel", samples},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterPyramid, method).options.source.generic_string()}};
+    if (kind == kernels::SpecularKind::MipChain) return mipChainJson(method, size, mips);
     if (kind == kernels::SpecularKind::Convolution)
         return {{"method", method},
                 {"terms_per_texel", samples},
@@ -134,7 +146,7 @@ json specularJson(const ManifestFacts& facts) {
                      {"mips", facts.mips},
                      {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
                      {"roughness", roughness}};
-    specular.update(prefilterJson(*facts.settings, facts.mips));
+    specular.update(prefilterJson(*facts.settings, facts.size, facts.mips));
     return specular;
 }
 

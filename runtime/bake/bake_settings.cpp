@@ -51,6 +51,7 @@ uint32_t resolvedSamples(const BakeSettings& settings) {
     switch (kernels::specularKindOf(settings.specularMethod)) {
     case kernels::SpecularKind::Convolution: return kDefaultConvolutionBudget;
     case kernels::SpecularKind::Pyramid: return kDefaultPyramidReads;
+    case kernels::SpecularKind::MipChain: return 1;
     default: return kDocumentSamples;
     }
 }

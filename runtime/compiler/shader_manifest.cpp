@@ -13,6 +13,16 @@ T valueOr(const nlohmann::json& object, const char* key, T fallback) {
     return object.contains(key) ? object.at(key).get<T>() : fallback;
 }
 
+// "method" names one method, or lists the methods that share the kernel.
+std::vector<std::string> methodsOf(const nlohmann::json& entry) {
+    if (!entry.contains("method")) return {};
+    const auto& method = entry.at("method");
+    if (method.is_string()) return {method.get<std::string>()};
+    auto methods = method.get<std::vector<std::string>>();
+    if (methods.empty()) throw CompileError("shader " + entry.at("name").get<std::string>() + " lists no method");
+    return methods;
+}
+
 ManifestShader parseShader(const nlohmann::json& entry, const std::filesystem::path& folder) {
     ManifestShader shader;
     shader.name = entry.at("name").get<std::string>();
@@ -29,7 +39,7 @@ ManifestShader parseShader(const nlohmann::json& entry, const std::filesystem::p
     shader.options.defines = valueOr<std::map<std::string, std::string>>(entry, "defines", {});
     shader.options.imageFormats = valueOr<std::map<std::string, std::string>>(entry, "image_formats", {});
     shader.kernel = valueOr<std::string>(entry, "kernel", "");
-    shader.method = valueOr<std::string>(entry, "method", "");
+    shader.methods = methodsOf(entry);
     return shader;
 }
 

@@ -12,7 +12,7 @@ struct ManifestShader {
     std::string name; // the base name of every output form
     CompileOptions options;
     std::string kernel; // the kernel role it plays in a bake ("prefilter", "brdf-lut", ...); empty for none
-    std::string method; // the method it belongs to, for the roles that have several ("document")
+    std::vector<std::string> methods; // the methods it belongs to, for the roles that have several ("document")
 };
 
 // Reads hlsl/shaders.json: every shader the kit compiles with its entry point, defines and

@@ -23,9 +23,9 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
     for (const auto& kernel : kernels::kernelTable()) {
         auto shader = compiler::manifestShaderOptions(manifest, kernel.name);
         if (isSampled(kernel.role)) shader.defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
-        if (kernel.method == kernels::kQuadratureLutMethod)
+        if (kernel.belongsTo(kernels::kQuadratureLutMethod))
             shader.defines["SAMPLE_COUNT"] = std::to_string(kernels::kDefaultQuadratureNodes);
-        if (kernel.method == kernels::kFitLutMethod) shader.defines["SAMPLE_COUNT"] = std::to_string(kSuiteLutFitDegree);
+        if (kernel.belongsTo(kernels::kFitLutMethod)) shader.defines["SAMPLE_COUNT"] = std::to_string(kSuiteLutFitDegree);
         if (kernel.role == kernels::KernelRole::BrdfLut || kernel.role == kernels::KernelRole::BrdfLutResample)
             shader.imageFormats["Precomputed"] = "rg32f";
         if (kernel.role == kernels::KernelRole::BrdfLutChunk)

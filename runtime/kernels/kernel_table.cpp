@@ -3,6 +3,7 @@
 #include "compiler.hpp"
 #include "shader_manifest.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace iblkit::kernels {
@@ -40,13 +41,17 @@ std::vector<KernelEntry> readTable() {
     for (auto& shader : compiler::parseShaderManifest(files.at("hlsl/shaders.json"), "hlsl/shaders.json")) {
         const auto source = shader.options.source.generic_string();
         const bool document = source.starts_with("hlsl/document/");
-        table.push_back({shader.name, parseRole(shader.name, shader.kernel), shader.method, document,
+        table.push_back({shader.name, parseRole(shader.name, shader.kernel), shader.methods, document,
                          std::move(shader.options)});
     }
     return table;
 }
 
 } // namespace
+
+bool KernelEntry::belongsTo(std::string_view method) const {
+    return std::find(methods.begin(), methods.end(), method) != methods.end();
+}
 
 std::string_view roleName(KernelRole role) {
     for (const auto& [text, each] : kRoles)
@@ -67,7 +72,7 @@ const KernelEntry& kernelNamed(std::string_view name) {
 
 const KernelEntry& kernelFor(KernelRole role, std::string_view method) {
     for (const auto& kernel : kernelTable())
-        if (kernel.role == role && (method.empty() || kernel.method == method)) return kernel;
+        if (kernel.role == role && (method.empty() || kernel.belongsTo(method))) return kernel;
     throw std::out_of_range("no " + std::string(roleName(role)) + " kernel" +
                             (method.empty() ? std::string() : " of method '" + std::string(method) + "'") +
                             " in hlsl/shaders.json");
@@ -76,7 +81,7 @@ const KernelEntry& kernelFor(KernelRole role, std::string_view method) {
 std::vector<std::string> methodsOf(KernelRole role) {
     std::vector<std::string> methods;
     for (const auto& kernel : kernelTable())
-        if (kernel.role == role && !kernel.method.empty()) methods.push_back(kernel.method);
+        if (kernel.role == role) methods.insert(methods.end(), kernel.methods.begin(), kernel.methods.end());
     return methods;
 }
 

@@ -38,7 +38,8 @@ std::string_view roleName(KernelRole role);
 struct KernelEntry {
     std::string name; // the shader's name in hlsl/shaders.json
     KernelRole role;
-    std::string method;   // for the LUT and prefilter roles ("document")
+    std::vector<std::string> methods; // for the LUT and prefilter roles ("document"); a kernel may serve several
+    bool belongsTo(std::string_view method) const;
     bool document;        // the documents' faithful transcription (hlsl/document/), frozen
     compiler::CompileOptions options; // as the manifest gives them, reading the built-in hlsl/
 };

@@ -19,6 +19,7 @@ SpecularKind specularKindOf(const std::string& method) {
     if (hasKernel(KernelRole::PrefilterConvolution, method)) return SpecularKind::Convolution;
     if (hasKernel(KernelRole::PrefilterTable, method)) return SpecularKind::Table;
     if (hasKernel(KernelRole::PrefilterPyramid, method)) return SpecularKind::Pyramid;
+    if (hasKernel(KernelRole::PrefilterRing, method)) return SpecularKind::MipChain;
     kernelFor(KernelRole::Prefilter, method); // throws for a method with none
     return SpecularKind::Sampled;
 }
@@ -27,8 +28,10 @@ bool isConvolutionMethod(const std::string& method) { return specularKindOf(meth
 
 std::vector<std::string> specularMethods() {
     auto methods = methodsOf(KernelRole::Prefilter);
-    for (const auto role : {KernelRole::PrefilterTable, KernelRole::PrefilterPyramid, KernelRole::PrefilterConvolution})
-        for (const auto& method : methodsOf(role)) methods.push_back(method);
+    for (const auto role : {KernelRole::PrefilterTable, KernelRole::PrefilterPyramid, KernelRole::PrefilterRing,
+                            KernelRole::PrefilterConvolution})
+        for (const auto& method : methodsOf(role))
+            if (std::find(methods.begin(), methods.end(), method) == methods.end()) methods.push_back(method);
     return methods;
 }
 
@@ -37,6 +40,7 @@ uint32_t maxSamplesOf(const std::string& method) {
     case SpecularKind::Convolution: return kMaxConvolutionBudget;
     case SpecularKind::Table: return kLoopLimit;
     case SpecularKind::Pyramid: return reference::kMaxPyramidReads;
+    case SpecularKind::MipChain: return 1;
     case SpecularKind::Sampled: break;
     }
     return hasKernel(KernelRole::PrefilterChunk, method) ? kMaxSamples : kLoopLimit;
@@ -48,6 +52,10 @@ SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::
     case SpecularKind::Convolution: convolution_.emplace(context, method, samples, files); break;
     case SpecularKind::Table: table_.emplace(context, method, samples, files); break;
     case SpecularKind::Pyramid: pyramid_.emplace(context, method, samples, files); break;
+    case SpecularKind::MipChain:
+        if (samples != 1) throw std::invalid_argument("the " + method + " method takes no sample count (1), not " + std::to_string(samples));
+        mipChain_.emplace(context, method, files);
+        break;
     case SpecularKind::Sampled: sampled_.emplace(context, method, samples, 0, files); break;
     }
 }
@@ -57,12 +65,14 @@ void SpecularMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, 
     if (convolution_) return convolution_->run(source, target, mip, roughness);
     if (table_) return table_->run(source, sampler, target, mip, roughness);
     if (pyramid_) return pyramid_->run(source, sampler, target, mip, roughness);
+    if (mipChain_) return mipChain_->run(source, sampler, target, mip, roughness);
     sampled_->run(source, sampler, target, mip, roughness);
 }
 
 DispatchTotals SpecularMethod::takeTotals() {
     if (convolution_) return convolution_->takeTotals();
     if (pyramid_) return pyramid_->takeTotals();
+    if (mipChain_) return mipChain_->takeTotals();
     return table_ ? table_->takeTotals() : sampled_->takeTotals();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "kernels/convolution_method.hpp"
+#include "kernels/mip_chain_method.hpp"
 #include "kernels/pyramid_method.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "kernels/table_method.hpp"
@@ -13,9 +14,10 @@ namespace iblkit::kernels {
 
 // How a prefilter method's kernels compute a mip: a sampled estimator with its per-sample work
 // on the GPU (Prefilter, PrefilterChunk), a host sample table (PrefilterTable), reads of the
-// source's mip chain along the normal (PrefilterPyramid), or the convolution (ClusterCube +
+// source's mip chain along the normal (PrefilterPyramid), the source's mips themselves with the
+// ring where the lobe is wide (PrefilterRing alone), or the convolution (ClusterCube +
 // PrefilterConvolution). Throws std::out_of_range for a method with none of them.
-enum class SpecularKind { Sampled, Table, Pyramid, Convolution };
+enum class SpecularKind { Sampled, Table, Pyramid, MipChain, Convolution };
 SpecularKind specularKindOf(const std::string& method);
 bool isConvolutionMethod(const std::string& method);
 
@@ -23,9 +25,9 @@ bool isConvolutionMethod(const std::string& method);
 // convolutions, in table order.
 std::vector<std::string> specularMethods();
 
-// The largest sample count (budget, for the convolution; reads, for the pyramid) `method`'s
-// prefilter takes: a sampled method without a chunked twin, and a table, stop at the driver's
-// loop limit. Throws
+// The largest sample count (budget, for the convolution; reads, for the pyramid; 1, for the mip
+// chain, which takes none) `method`'s prefilter takes: a sampled method without a chunked twin,
+// and a table, stop at the driver's loop limit. Throws
 // std::out_of_range for a method with no prefilter kernel.
 uint32_t maxSamplesOf(const std::string& method);
 
@@ -46,6 +48,7 @@ private:
     std::optional<PrefilterMethod> sampled_;
     std::optional<TablePrefilter> table_;
     std::optional<PyramidPrefilter> pyramid_;
+    std::optional<MipChainPrefilter> mipChain_;
     std::optional<ConvolutionPrefilter> convolution_;
 };
 

@@ -1,8 +1,8 @@
 #include "compute_program.hpp"
 
+#include "timed_submission.hpp"
 #include "vulkan_error.hpp"
 
-#include <chrono>
 #include <cstring>
 
 namespace iblkit::vulkan {
@@ -206,37 +206,27 @@ DispatchTiming ComputeProgram::dispatchGroups(const VulkanContext& context, std:
             throw VulkanError("dispatch of " + std::to_string(groups[axis]) + " groups on axis " + std::to_string(axis) +
                               " exceeds the device's limit of " + std::to_string(limits.maxComputeWorkGroupCount[axis]));
     writeDescriptorSets();
-    const bool timed = context.timestampPeriod() > 0;
-    vk::raii::QueryPool queries(nullptr);
-    if (timed) queries = vk::raii::QueryPool(context.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
-    const auto started = std::chrono::steady_clock::now();
-    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        if (timed) commands.resetQueryPool(*queries, 0, 2);
-        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
-        std::vector<vk::DescriptorSet> sets;
-        for (const auto& [index, set] : sets_) sets.push_back(*set);
-        if (!sets.empty()) commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, sets, {});
-        if (!pushConstants_.empty())
-            commands.pushConstants<std::byte>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, pushConstants_);
-        if (timed) commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *queries, 0);
-        commands.dispatch(groups[0], groups[1], groups[2]);
-        if (timed) commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries, 1);
-        const vk::MemoryBarrier written(vk::AccessFlagBits::eShaderWrite,
-                                        vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eHostRead |
-                                            vk::AccessFlagBits::eShaderRead);
-        commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
-                                 vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eHost |
-                                     vk::PipelineStageFlagBits::eComputeShader,
-                                 {}, written, {}, {});
-    });
-    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    double device = -1;
-    if (timed) {
-        const auto [result, ticks] = queries.getResults<uint64_t>(0, 2, 2 * sizeof(uint64_t), sizeof(uint64_t),
-                                                                  vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        if (result == vk::Result::eSuccess) device = double(ticks[1] - ticks[0]) * context.timestampPeriod() * 1e-6;
-    }
-    return {groups, device, wall};
+    const auto timing = submitTimed(
+        context,
+        [&](const vk::raii::CommandBuffer& commands) {
+            commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
+            std::vector<vk::DescriptorSet> sets;
+            for (const auto& [index, set] : sets_) sets.push_back(*set);
+            if (!sets.empty()) commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, sets, {});
+            if (!pushConstants_.empty())
+                commands.pushConstants<std::byte>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, pushConstants_);
+        },
+        [&](const vk::raii::CommandBuffer& commands) { commands.dispatch(groups[0], groups[1], groups[2]); },
+        [](const vk::raii::CommandBuffer& commands) {
+            const vk::MemoryBarrier written(vk::AccessFlagBits::eShaderWrite,
+                                            vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eHostRead |
+                                                vk::AccessFlagBits::eShaderRead);
+            commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                                     vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eHost |
+                                         vk::PipelineStageFlagBits::eComputeShader,
+                                     {}, written, {}, {});
+        });
+    return {groups, timing.deviceMilliseconds, timing.wallMilliseconds};
 }
 
 } // namespace iblkit::vulkan

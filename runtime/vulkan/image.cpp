@@ -171,7 +171,7 @@ std::vector<std::byte> Image::downloadBytes(const VulkanContext& context) const 
     return staging.read();
 }
 
-void Image::copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip) {
+SubmissionTiming Image::copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip) {
     if (source.desc().format != desc_.format || mip >= desc_.mips || mip >= source.desc().mips ||
         source.mipWidth(mip) != mipWidth(mip) || source.mipHeight(mip) != mipHeight(mip) ||
         source.desc().layers != desc_.layers)
@@ -183,13 +183,19 @@ void Image::copyMipFrom(const VulkanContext& context, const Image& source, uint3
                             vk::PipelineStageFlagBits::eTransfer};
     const LayoutUse writing{vk::ImageLayout::eTransferDstOptimal, vk::AccessFlagBits::eTransferWrite,
                             vk::PipelineStageFlagBits::eTransfer};
-    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        transition(commands, source, kResting, reading);
-        transition(commands, *this, kResting, writing);
-        commands.copyImage(source.handle(), reading.layout, *image_, writing.layout, region);
-        transition(commands, source, reading, kResting);
-        transition(commands, *this, writing, kResting);
-    });
+    return submitTimed(
+        context,
+        [&](const vk::raii::CommandBuffer& commands) {
+            transition(commands, source, kResting, reading);
+            transition(commands, *this, kResting, writing);
+        },
+        [&](const vk::raii::CommandBuffer& commands) {
+            commands.copyImage(source.handle(), reading.layout, *image_, writing.layout, region);
+        },
+        [&](const vk::raii::CommandBuffer& commands) {
+            transition(commands, source, reading, kResting);
+            transition(commands, *this, writing, kResting);
+        });
 }
 
 std::vector<float> Image::download(const VulkanContext& context) const {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "texel_format.hpp"
+#include "timed_submission.hpp"
 #include "vulkan_context.hpp"
 
 #include <map>
@@ -47,8 +48,8 @@ public:
     void uploadBytes(const VulkanContext& context, std::span<const std::byte> bytes);
     std::vector<float> download(const VulkanContext& context) const;
     // Copies every layer of one mip of `source`, which must have this image's format and
-    // that mip's size, into the same mip of this image.
-    void copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip);
+    // that mip's size, into the same mip of this image; the device time is the copy's alone.
+    SubmissionTiming copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip);
     std::vector<std::byte> downloadBytes(const VulkanContext& context) const;
 
 private:

@@ -44,6 +44,8 @@ TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
     EXPECT_EQ(resolvedSamples(settings), kDefaultConvolutionBudget);
     settings.specularMethod = "pyramid";
     EXPECT_EQ(resolvedSamples(settings), kDefaultPyramidReads);
+    settings.specularMethod = "mipchain";
+    EXPECT_EQ(resolvedSamples(settings), 1u) << "it takes no count";
     settings.specularMethod = "document";
     EXPECT_EQ(resolvedSamples(settings), 1024u);
     settings.samples = 64;
@@ -76,7 +78,11 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
         s.specularMethod = "pyramid";
         s.samples = 5;
     }, "--samples 5 is out of range (1 to 4)");
-    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, filtered, table, pyramid, convolution)");
+    refused([](BakeSettings& s) {
+        s.specularMethod = "mipchain";
+        s.samples = 2;
+    }, "--samples 2 is out of range (1 to 1)");
+    refused([](BakeSettings& s) { s.specularMethod = "nope"; }, "--method nope is not a prefilter method (there are: document, filtered, table, pyramid, mipchain, convolution)");
     refused([](BakeSettings& s) { s.lutSize = 0; }, "--lut-size");
     refused([](BakeSettings& s) { s.lutMethod = "quadrature-grid"; s.lutSamples = 3; },
             "--lut-samples 3 is out of range (4 to 1024)");

@@ -110,7 +110,7 @@ TEST_F(BakeCli, TheTableAndFilteredMethodsBakeAndRecordTheirCounts) {
     expectFailure({"bake", "-o", at("out"), "--method", "table", "--samples", "65536"}, "--samples 65536 is out of range (1 to 65535)");
 }
 
-TEST_F(BakeCli, ThePyramidAndTheFastLutMethodsBakeAndRecordTheirCounts) {
+TEST_F(BakeCli, ThePyramidTheMipChainAndTheFastLutMethodsBakeAndRecordTheirCounts) {
     const auto bake = [&](const std::string& folder, std::vector<std::string> settings) {
         std::vector<std::string> arguments{"bake", "-o", at(folder), "--size", "16", "--lut-size", "8",
                                            "--irradiance-size", "4", "--quiet"};
@@ -123,6 +123,11 @@ TEST_F(BakeCli, ThePyramidAndTheFastLutMethodsBakeAndRecordTheirCounts) {
     EXPECT_EQ(fit["specular"]["method"], "pyramid");
     EXPECT_EQ(fit["specular"]["reads_per_texel"], 2);
     EXPECT_EQ(fit["specular"]["shader"], "hlsl/PrefilterPyramidCS.hlsl");
+    // Roughness 0.25, 0.5, 0.75 and 1: the ring from half the lobe's mass past pi/8 (0.5).
+    const auto chain = bake("chain", {"--method", "mipchain", "--mips", "5"});
+    EXPECT_EQ(chain["specular"]["mips_copied_from_the_source"], nlohmann::json::parse("[1]"));
+    EXPECT_EQ(chain["specular"]["mips_from_the_ring"], nlohmann::json::parse("[2, 3, 4]"));
+    EXPECT_EQ(chain["specular"]["shader"], "hlsl/PrefilterRingCS.hlsl");
     EXPECT_EQ(fit["brdf_lut"]["method"], "fit");
     EXPECT_EQ(fit["brdf_lut"]["polynomial_degree"], 3);
     EXPECT_EQ(fit["brdf_lut"]["shader"], "hlsl/BrdfLutFitCS.hlsl");

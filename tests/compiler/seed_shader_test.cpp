@@ -2,6 +2,7 @@
 // resources, registers and bindings the register rule promises (docs/bindings.md).
 #include "seed_test_support.hpp"
 
+#include "compile_error.hpp"
 #include "spirv_tools.hpp"
 
 #include <gtest/gtest.h>
@@ -109,6 +110,17 @@ TEST(SeedShaders, SampleCountDefineReachesTheLoops) {
     const auto text = disassembleSpirv(compileShader(options).spirv);
     EXPECT_NE(text.find("%uint_64"), std::string::npos);
     EXPECT_EQ(text.find("%uint_1024"), std::string::npos);
+}
+
+TEST(ShaderManifest, AMethodIsANameOrAListOfThem) {
+    const auto parse = [](const std::string& method) {
+        return parseShaderManifest(R"({"shaders": [{"name": "A", "source": "a.hlsl", "method": )" + method + "}]}",
+                                   "hlsl/shaders.json");
+    };
+    EXPECT_EQ(parse(R"("pyramid")").at(0).methods, std::vector<std::string>{"pyramid"});
+    EXPECT_EQ(parse(R"(["pyramid", "mipchain"])").at(0).methods, (std::vector<std::string>{"pyramid", "mipchain"}));
+    EXPECT_THROW(parse("[]"), CompileError);
+    EXPECT_THROW(parse("3"), CompileError);
 }
 
 } // namespace

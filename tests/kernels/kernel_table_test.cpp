@@ -35,6 +35,14 @@ TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
     EXPECT_EQ(methodsOf(KernelRole::PrefilterConvolution), std::vector<std::string>{"convolution"});
 }
 
+TEST(KernelTable, AKernelSharedByMethodsServesEach) {
+    // The ring is the pyramid's for wide lobes and the mip chain's.
+    EXPECT_EQ(methodsOf(KernelRole::PrefilterRing), (std::vector<std::string>{"pyramid", "mipchain"}));
+    EXPECT_EQ(kernelFor(KernelRole::PrefilterRing, "pyramid").name, "PrefilterRingCS");
+    EXPECT_EQ(kernelFor(KernelRole::PrefilterRing, "mipchain").name, "PrefilterRingCS");
+    EXPECT_THROW(kernelFor(KernelRole::PrefilterPyramid, "mipchain"), std::out_of_range);
+}
+
 TEST(KernelTable, UnknownNamesAreRefusedByName) {
     EXPECT_THROW(kernelNamed("NoSuchCS"), std::out_of_range);
     EXPECT_THROW(kernelFor(KernelRole::Prefilter, "no-such-method"), std::out_of_range);

@@ -14,12 +14,16 @@ TEST(SpecularMethods, KindsAndLimitsFollowTheKernelTable) {
     EXPECT_EQ(specularKindOf("filtered"), SpecularKind::Sampled);
     EXPECT_EQ(specularKindOf("table"), SpecularKind::Table);
     EXPECT_EQ(specularKindOf("pyramid"), SpecularKind::Pyramid);
+    EXPECT_EQ(specularKindOf("mipchain"), SpecularKind::MipChain);
     EXPECT_EQ(specularKindOf("convolution"), SpecularKind::Convolution);
     EXPECT_THROW(specularKindOf("nope"), std::out_of_range);
     EXPECT_EQ(maxSamplesOf("document"), kMaxSamples) << "its chunked twin splits the loop";
     EXPECT_EQ(maxSamplesOf("filtered"), kLoopLimit);
     EXPECT_EQ(maxSamplesOf("table"), kLoopLimit);
     EXPECT_EQ(maxSamplesOf("pyramid"), 4u);
+    EXPECT_EQ(specularMethods(),
+              (std::vector<std::string>{"document", "filtered", "table", "pyramid", "mipchain", "convolution"}))
+        << "each method once, though the ring serves two";
 }
 
 class SpecularMethodLimits : public iblkit::testing::VulkanTest {};

@@ -60,11 +60,12 @@ void addBakeCommand(CLI::App& app) {
                         "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
                         "table (filtered importance sampling from a host sample table), filtered (the same, per "
                         "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
-                        "the lobe) or document (the documents' importance sampling)");
+                        "the lobe), mipchain (the source's own mips where the lobe is narrow, the pyramid's ring "
+                        "where it is wide: the cheapest) or document (the documents' importance sampling)");
     command->add_option("--samples", s.samples,
                         "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
-                        "texel, 1 to 4), or for the convolution its budget of terms per texel (default 1024, 128 for "
-                        "convolution, 1 for pyramid)");
+                        "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "
+                        "(default 1024, 128 for convolution, 1 for pyramid and mipchain)");
     command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
     command->add_option("--lut-method", s.lutMethod,
                         "BRDF LUT method: quadrature-grid (default; the quadrature on a grid of nodes, interpolated), "
