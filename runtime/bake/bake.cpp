@@ -49,11 +49,15 @@ void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& setti
                                     gigabytes(host), gigabytes(ram)));
 }
 
-// Exposure that maps the environment's mean luminance to 0.4 before the filmic curve.
+// Exposure that maps the environment's mean luminance to 0.4 before the filmic curve, within
+// [kMinPreviewExposure, kMaxPreviewExposure]: a black or near-black environment previews black
+// rather than as its rounding noise amplified, and a mean of 0 or less (radiance that cancels
+// out) gets exposure 1, never a negative or infinite one.
 float previewExposure(const Irradiance& irradiance) {
     const glm::dvec3 mean = irradiance.shRadiance[0] * 0.282094791773878;
     const double luminance = 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
-    return luminance > 0 ? float(0.4 / luminance) : 1.f;
+    if (!(luminance > 0) || !std::isfinite(luminance)) return 1.f;
+    return float(std::clamp(0.4 / luminance, kMinPreviewExposure, kMaxPreviewExposure));
 }
 
 std::vector<uint8_t> toRgba8(const std::vector<float>& rgba) {
@@ -87,7 +91,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     progress.begin("load");
     const vulkan::VulkanContext context(settings.context);
     BakeKernels kernels(context, settings);
-    const auto input = loadEnvironment(settings.environment, settings.sanitize);
+    const auto input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
     const uint32_t size = resolvedSize(settings, input.cubeSize);
     if (!std::has_single_bit(size))
         throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));
@@ -108,8 +112,9 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     std::vector<BakedTexture> textures{download(context, specular, "specular", image_io::PixelFormat::Rgba16Float),
                                        download(context, lut, "brdf_lut", lutFormat),
                                        download(context, irradiance.cube, "irradiance", image_io::PixelFormat::Rgba16Float)};
-    size_t clamped = 0;
-    for (auto& texture : textures) clamped += applyHalfRangePolicy(texture, settings.clampHalf);
+    std::vector<HalfRangeClamp> clamps;
+    for (auto& texture : textures)
+        if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));
     const std::string writer = "iblkit " + toolVersion;
     std::vector<WrittenFile> files;
     for (const auto& texture : textures)
@@ -119,7 +124,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     files.push_back({"preview.png", sha256OfFile(png), size_t(std::filesystem::file_size(png))});
 
     auto manifest = bakeManifest({toolVersion, context.deviceInfo().name, &input, &settings, size, mips, &irradiance,
-                                  clamped, exposure});
+                                  &clamps, exposure});
     manifest["files"] = filesJson(files);
     const std::string manifestText = manifest.dump(2) + "\n";
     files.push_back(writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText))));
@@ -128,7 +133,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
 
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
     return {settings.outputDir, context.deviceInfo().name, progress.steps(), wall, files,
-            irradiance.shRadiance, clamped, input.sanitizedTexels};
+            irradiance.shRadiance, clamps, input.sanitizedTexels, input.negative};
 }
 
 } // namespace iblkit::bake

@@ -3,6 +3,7 @@
 #include "bake_outputs.hpp"
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
+#include "texel_checks.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -20,8 +21,9 @@ struct BakeSummary {
     double wallMilliseconds;
     std::vector<WrittenFile> files;
     std::array<glm::dvec3, 9> shRadiance; // as in the manifest's irradiance.sh.radiance
-    size_t clampedValues;                 // values clamped to the half range (--clamp-half)
+    std::vector<HalfRangeClamp> halfRangeClamps; // the textures clamped to the half range, and what it cost
     size_t sanitizedTexels;               // NaN/Inf input texels set to 0 (--sanitize)
+    NegativeTexels negativeTexels;        // input texels of negative radiance, clamped to 0
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

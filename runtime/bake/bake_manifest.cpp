@@ -18,7 +18,13 @@ json coefficientsJson(const std::array<glm::dvec3, 9>& coefficients) {
 
 namespace {
 
-json inputJson(const EnvironmentInput& input) {
+json negativeRadianceJson(const EnvironmentInput& input, const BakeSettings& settings) {
+    return {{"policy", settings.strict ? "refuse" : "clamp to 0"},
+            {"texels", input.negative.count},
+            {"most_negative", input.negative.mostNegative}};
+}
+
+json inputJson(const EnvironmentInput& input, const BakeSettings& settings) {
     json files = json::array();
     for (const auto& file : input.files) files.push_back({{"path", file.path.string()}, {"sha256", file.sha256}});
     json result = {{"kind", inputKindName(input.kind)}, {"files", files}};
@@ -29,6 +35,7 @@ json inputJson(const EnvironmentInput& input) {
     else
         result["cube_size"] = input.cubeSize;
     result["sanitized_texels"] = input.sanitizedTexels;
+    result["negative_radiance"] = negativeRadianceJson(input, settings);
     return result;
 }
 
@@ -46,7 +53,7 @@ json settingsJson(const ManifestFacts& facts) {
             {"dds", s.dds},
             {"exr", s.exr},
             {"sanitize", s.sanitize},
-            {"clamp_half", s.clampHalf}};
+            {"strict", s.strict}};
 }
 
 // A sampled method's shader, or its chunked twin past the loop limit (see docs/kernels.md).
@@ -175,18 +182,44 @@ std::array<glm::dvec3, 9> irradianceCoefficients(const std::array<glm::dvec3, 9>
     return result;
 }
 
+size_t clampedValueCount(const std::vector<HalfRangeClamp>& clamps) {
+    size_t total = 0;
+    for (const auto& clamp : clamps) total += clamp.values;
+    return total;
+}
+
+json halfRangeClampsJson(const std::vector<HalfRangeClamp>& clamps) {
+    json list = json::array();
+    for (const auto& clamp : clamps)
+        list.push_back({{"texture", clamp.texture},
+                        {"clamped_values", clamp.values},
+                        {"worst_mip", clamp.worstMip},
+                        {"share_of_its_energy_lost", clamp.worstShare}});
+    return list;
+}
+
+namespace {
+
+json halfRangeJson(const std::vector<HalfRangeClamp>& clamps, const BakeSettings& settings) {
+    return {{"policy", settings.strict ? "refuse" : "clamp to 65504"},
+            {"clamped_values", clampedValueCount(clamps)},
+            {"textures", halfRangeClampsJson(clamps)}};
+}
+
+} // namespace
+
 json bakeManifest(const ManifestFacts& facts) {
     const auto& s = *facts.settings;
     return {{"generator", "iblkit"},
             {"version", facts.toolVersion},
             {"manifest_format", 1},
             {"device", facts.device},
-            {"input", inputJson(*facts.input)},
+            {"input", inputJson(*facts.input, s)},
             {"settings", settingsJson(facts)},
             {"specular", specularJson(facts)},
             {"brdf_lut", lutJson(s)},
             {"irradiance", irradianceJson(facts)},
-            {"half_range", {{"policy", s.clampHalf ? "clamp to 65504" : "refuse"}, {"clamped_values", facts.clampedValues}}},
+            {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
             {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
 }
 

@@ -17,13 +17,16 @@ struct ManifestFacts {
     uint32_t size;
     uint32_t mips;
     const Irradiance* irradiance;
-    size_t clampedValues;
+    const std::vector<HalfRangeClamp>* halfRangeClamps;
     float previewExposure;
 };
 
 // manifest.json without its "files" list (added once every file is written).
 nlohmann::json bakeManifest(const ManifestFacts& facts);
 nlohmann::json filesJson(const std::vector<WrittenFile>& files);
+size_t clampedValueCount(const std::vector<HalfRangeClamp>& clamps);
+// Per clamped texture: its name, the values clamped and the worst mip's share of energy lost.
+nlohmann::json halfRangeClampsJson(const std::vector<HalfRangeClamp>& clamps);
 // Nine RGB coefficients as [[r, g, b], ...].
 nlohmann::json coefficientsJson(const std::array<glm::dvec3, 9>& coefficients);
 

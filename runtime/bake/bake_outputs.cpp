@@ -1,6 +1,7 @@
 #include "bake_outputs.hpp"
 
 #include "bake_error.hpp"
+#include "cube_geometry.hpp"
 #include "dds.hpp"
 #include "float_image.hpp"
 #include "ktx2.hpp"
@@ -9,7 +10,9 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 
 namespace iblkit::bake {
@@ -25,6 +28,25 @@ size_t levelOffset(const BakedTexture& texture, uint32_t mip) {
     size_t offset = 0;
     for (uint32_t level = 0; level < mip; ++level) offset += size_t(mipSize(texture, level)) * mipSize(texture, level);
     return offset * texture.faces * image_io::channelCount(texture.format);
+}
+
+// The share of one mip's energy that clamping to the half range takes away: the excess of each
+// colour value past 65504 over the sum of |value|, each texel weighted by its solid angle on a cube.
+double halfRangeLoss(const BakedTexture& texture, uint32_t mip) {
+    const uint32_t channels = image_io::channelCount(texture.format), size = mipSize(texture, mip);
+    const float* values = texture.values.data() + levelOffset(texture, mip);
+    double total = 0, lost = 0;
+    for (uint32_t face = 0; face < texture.faces; ++face)
+        for (uint32_t row = 0; row < size; ++row)
+            for (uint32_t column = 0; column < size; ++column) {
+                const double weight = texture.faces == 6 ? reference::CubeTexelSolidAngle<double>(column, row, size) : 1.0;
+                const float* texel = values + ((size_t(face) * size + row) * size + column) * channels;
+                for (uint32_t c = 0; c < std::min(channels, 3u); ++c) {
+                    total += weight * std::abs(double(texel[c]));
+                    lost += weight * std::max(0.0, std::abs(double(texel[c])) - double(kLargestHalf));
+                }
+            }
+    return total > 0 ? lost / total : 0;
 }
 
 std::string locate(const BakedTexture& texture, size_t valueIndex) {
@@ -73,16 +95,21 @@ std::vector<WrittenFile> writeExrFaces(const fs::path& folder, const BakedTextur
 
 } // namespace
 
-size_t applyHalfRangePolicy(BakedTexture& texture, bool clamp) {
-    if (image_io::bytesPerChannel(texture.format) != 2) return 0;
+std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool strict) {
+    if (image_io::bytesPerChannel(texture.format) != 2) return std::nullopt;
     const auto overflow = findHalfOverflow(texture.values);
-    if (overflow.count == 0) return 0;
-    if (!clamp)
+    if (overflow.count == 0) return std::nullopt;
+    if (strict)
         throw BakeError(fmt::format("{}: {} values exceed the 16-bit float range (largest {:g}, the first at {}); "
-                                    "bake with --clamp-half to clamp them to 65504",
+                                    "bake without --strict to clamp them to 65504",
                                     texture.name, overflow.count, overflow.largest, locate(texture, overflow.firstValue)));
+    HalfRangeClamp clamp{texture.name, overflow.count, 0, 0};
+    for (uint32_t mip = 0; mip < texture.mips; ++mip) {
+        const double share = halfRangeLoss(texture, mip);
+        if (share > clamp.worstShare) clamp = {texture.name, overflow.count, mip, share};
+    }
     clampToHalfRange(texture.values);
-    return overflow.count;
+    return clamp;
 }
 
 WrittenFile writeBytes(const fs::path& folder, const std::string& name, std::span<const std::byte> bytes) {

@@ -4,6 +4,7 @@
 #include "texture.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,10 +26,19 @@ struct BakedTexture {
     std::vector<float> values; // channelCount(format) per texel
 };
 
-// Values beyond half range in a 16-bit texture: refused (BakeError naming the texture, the
-// count, the largest and where the first is) unless clamp, which clamps them to 65504.
-// Returns how many were clamped.
-size_t applyHalfRangePolicy(BakedTexture& texture, bool clamp);
+// What clamping a texture to the half range cost.
+struct HalfRangeClamp {
+    std::string texture;
+    size_t values = 0;     // clamped to ±65504
+    uint32_t worstMip = 0; // the mip that lost the largest share of its energy
+    double worstShare = 0; // that share: the clamped excess over the sum of |RGB|, texels weighted by solid angle
+};
+
+// Values beyond half range in a 16-bit texture (an unclipped sun copied into specular mip 0; the
+// mips above are prefiltered from the 32-bit source and keep its energy): clamped to ±65504, or
+// with `strict` refused (BakeError naming the texture, the count, the largest and where the first
+// is). Returns nothing for a texture with none.
+std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool strict);
 
 // Writes name.ktx2, with --dds name.dds, with --exr every face and mip under exr/.
 std::vector<WrittenFile> writeTexture(const std::filesystem::path& folder, const BakedTexture& texture,

@@ -43,9 +43,14 @@ struct BakeSettings {
     bool dds = false;
     bool exr = false;
     bool sanitize = false;  // replace NaN/Inf input texels by 0 instead of refusing them
-    bool clampHalf = false; // clamp values beyond half range in 16-bit outputs instead of refusing them
+    bool strict = false;    // refuse negative input texels and values beyond half range in 16-bit outputs instead of clamping them
     vulkan::ContextOptions context; // device selector and validation, as for every command
 };
+
+// The preview's exposure range: 2^±30 about 1 covers environments from a night sky to an
+// unclipped sun; past it the preview is black or white.
+inline constexpr double kMinPreviewExposure = 1.0 / (1 << 30);
+inline constexpr double kMaxPreviewExposure = double(1 << 30);
 
 // Default specular chain: mips down to this face size, the last at roughness 1.
 inline constexpr uint32_t kSpecularFloor = 8;

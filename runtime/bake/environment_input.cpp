@@ -31,13 +31,43 @@ size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, c
     return replaceNonFiniteTexels(values, channels);
 }
 
-EnvironmentInput loadPanorama(const fs::path& path, bool sanitize) {
-    EnvironmentInput input{InputKind::Panorama, {{path, sha256OfFile(path)}}, image_io::readFloatImage(path), 0, {}, 0};
+void refuseOversized(std::span<const float> values, uint32_t channels, uint32_t width, const std::string& name) {
+    if (const auto found = findOversizedTexel(values, channels))
+        throw BakeError(fmt::format("{} has a texel of {:g} at column {}, row {}: the bake sums radiance in 32-bit "
+                                    "floats, which overflow past {:g}",
+                                    name, found->value, found->texel % width, found->texel / width, kLargestRadiance));
+}
+
+// Refuses negative texels with `strict`, or clamps them to 0; returns what it found.
+NegativeTexels clampNegative(std::span<float> values, uint32_t channels, const std::string& name, bool strict) {
+    const auto found = findNegativeTexels(values, channels);
+    if (found.count == 0) return found;
+    if (strict)
+        throw BakeError(fmt::format("{} has {} texel{} of negative radiance (down to {:g}); bake without --strict to "
+                                    "clamp them to 0",
+                                    name, found.count, found.count == 1 ? "" : "s", found.mostNegative));
+    clampNegativeToZero(values, channels);
+    return found;
+}
+
+// Every check a loaded image's texels get, in order: NaN/Inf, then beyond the float sums' range,
+// then negative.
+void checkTexels(EnvironmentInput& input, std::span<float> values, uint32_t channels, uint32_t width,
+                 const std::string& name, const InputPolicy& policy) {
+    input.sanitizedTexels += checkFinite(values, channels, width, name, policy.sanitize);
+    refuseOversized(values, channels, width, name);
+    const auto negative = clampNegative(values, channels, name, policy.strict);
+    input.negative.count += negative.count;
+    input.negative.mostNegative = std::min(input.negative.mostNegative, negative.mostNegative);
+}
+
+EnvironmentInput loadPanorama(const fs::path& path, const InputPolicy& policy) {
+    EnvironmentInput input{InputKind::Panorama, {{path, sha256OfFile(path)}}, image_io::readFloatImage(path), 0, {}, 0, {}};
     auto& image = input.panorama;
     if (image.width != 2 * image.height)
         throw BakeError(fmt::format("{} is {}x{}; an equirectangular panorama must be twice as wide as it is high",
                                     quoted(path), image.width, image.height));
-    input.sanitizedTexels = checkFinite(image.values, image.channels, image.width, quoted(path), sanitize);
+    checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
     return input;
 }
 
@@ -52,8 +82,8 @@ fs::path findFace(const fs::path& folder, int face) {
                                 kNames[face][1], kNames[face][1]));
 }
 
-EnvironmentInput loadFaces(const fs::path& folder, bool sanitize) {
-    EnvironmentInput input{InputKind::Faces, {}, {}, 0, {}, 0};
+EnvironmentInput loadFaces(const fs::path& folder, const InputPolicy& policy) {
+    EnvironmentInput input{InputKind::Faces, {}, {}, 0, {}, 0, {}};
     for (int face = 0; face < 6; ++face) {
         const auto path = findFace(folder, face);
         auto image = image_io::readFloatImage(path);
@@ -63,7 +93,7 @@ EnvironmentInput loadFaces(const fs::path& folder, bool sanitize) {
         if (image.width != input.cubeSize)
             throw BakeError(fmt::format("{} is {}x{}; the +X face is {}x{}", quoted(path), image.width, image.height,
                                         input.cubeSize, input.cubeSize));
-        input.sanitizedTexels += checkFinite(image.values, image.channels, image.width, quoted(path), sanitize);
+        checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
         const auto rgba = image_io::rgbaValues(image);
         input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
         input.files.push_back({path, sha256OfFile(path)});
@@ -71,7 +101,7 @@ EnvironmentInput loadFaces(const fs::path& folder, bool sanitize) {
     return input;
 }
 
-EnvironmentInput loadCubeFile(const fs::path& path, bool sanitize) {
+EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
     const auto texture = image_io::readTextureFile(path);
     if (texture.faces != 6) throw BakeError(quoted(path) + " is a 2D texture, not a cube");
     if (texture.width != texture.height) throw BakeError(quoted(path) + " has faces that are not square");
@@ -80,8 +110,8 @@ EnvironmentInput loadCubeFile(const fs::path& path, bool sanitize) {
                                     image_io::vulkanFormatName(texture.format)));
     auto values = image_io::textureValues(texture);
     values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
-    EnvironmentInput input{InputKind::Cube, {{path, sha256OfFile(path)}}, {}, texture.width, std::move(values), 0};
-    input.sanitizedTexels = checkFinite(input.cubeTexels, 4, texture.width, quoted(path), sanitize);
+    EnvironmentInput input{InputKind::Cube, {{path, sha256OfFile(path)}}, {}, texture.width, std::move(values), 0, {}};
+    checkTexels(input, input.cubeTexels, 4, texture.width, quoted(path), policy);
     return input;
 }
 
@@ -97,14 +127,14 @@ std::string_view inputKindName(InputKind kind) {
     return "?";
 }
 
-EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, bool sanitize) {
-    if (!path) return {InputKind::BuiltIn, {}, {}, 0, {}, 0};
+EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, const InputPolicy& policy) {
+    if (!path) return {InputKind::BuiltIn, {}, {}, 0, {}, 0, {}};
     std::error_code error;
     if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
-    if (fs::is_directory(*path, error)) return loadFaces(*path, sanitize);
+    if (fs::is_directory(*path, error)) return loadFaces(*path, policy);
     const std::string extension = image_io::lowerExtension(*path);
-    if (extension == ".ktx2" || extension == ".dds") return loadCubeFile(*path, sanitize);
-    return loadPanorama(*path, sanitize);
+    if (extension == ".ktx2" || extension == ".dds") return loadCubeFile(*path, policy);
+    return loadPanorama(*path, policy);
 }
 
 } // namespace iblkit::bake

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "float_image.hpp"
+#include "texel_checks.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -33,11 +34,19 @@ struct EnvironmentInput {
     uint32_t cubeSize = 0;         // Faces, Cube
     std::vector<float> cubeTexels;
     size_t sanitizedTexels = 0;    // NaN/Inf texels set to 0 (only with sanitize)
+    NegativeTexels negative;       // texels with a negative colour channel, clamped to 0 (never with strict)
+};
+
+struct InputPolicy {
+    bool sanitize = false; // set NaN/Inf texels to 0 instead of refusing them
+    bool strict = false;   // refuse negative texels instead of clamping them to 0
 };
 
 // ENV: an .hdr or .exr panorama (2:1), a folder of six faces (px, nx, py, ny, pz, nz or posx ...
-// negz, each .hdr or .exr), or a .ktx2 / .dds cube; empty: the built-in environment. NaN/Inf texels are refused unless `sanitize`. Throws BakeError or
-// image_io::ImageError, one line each.
-EnvironmentInput loadEnvironment(const std::optional<std::filesystem::path>& path, bool sanitize);
+// negz, each .hdr or .exr), or a .ktx2 / .dds cube; empty: the built-in environment. NaN/Inf
+// texels are refused unless policy.sanitize, texels beyond ±kLargestRadiance always, and negative
+// ones (lossy HDR compression leaves small ones) are clamped to 0 unless policy.strict. Throws
+// BakeError or image_io::ImageError, one line each.
+EnvironmentInput loadEnvironment(const std::optional<std::filesystem::path>& path, const InputPolicy& policy);
 
 } // namespace iblkit::bake

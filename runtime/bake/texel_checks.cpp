@@ -6,8 +6,6 @@
 namespace iblkit::bake {
 namespace {
 
-constexpr float kLargestHalf = 65504.f;
-
 bool isFiniteTexel(const float* texel, uint32_t channels) {
     for (uint32_t c = 0; c < std::min(channels, 3u); ++c)
         if (!std::isfinite(texel[c])) return false;
@@ -38,6 +36,30 @@ size_t replaceNonFiniteTexels(std::span<float> values, uint32_t channels) {
         ++replaced;
     }
     return replaced;
+}
+
+NegativeTexels findNegativeTexels(std::span<const float> values, uint32_t channels) {
+    NegativeTexels found;
+    for (size_t texel = 0; texel * channels < values.size(); ++texel) {
+        const float* at = &values[texel * channels];
+        const float least = *std::min_element(at, at + std::min(channels, 3u));
+        if (!(least < 0.f)) continue;
+        ++found.count;
+        found.mostNegative = std::min(found.mostNegative, least);
+    }
+    return found;
+}
+
+void clampNegativeToZero(std::span<float> values, uint32_t channels) {
+    for (size_t texel = 0; texel * channels < values.size(); ++texel)
+        for (uint32_t c = 0; c < std::min(channels, 3u); ++c) values[texel * channels + c] = std::max(values[texel * channels + c], 0.f);
+}
+
+std::optional<OversizedTexel> findOversizedTexel(std::span<const float> values, uint32_t channels) {
+    for (size_t texel = 0; texel * channels < values.size(); ++texel)
+        for (uint32_t c = 0; c < std::min(channels, 3u); ++c)
+            if (std::abs(values[texel * channels + c]) > kLargestRadiance) return OversizedTexel{texel, values[texel * channels + c]};
+    return std::nullopt;
 }
 
 HalfOverflow findHalfOverflow(std::span<const float> values) {

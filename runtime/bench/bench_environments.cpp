@@ -51,14 +51,14 @@ std::string tableName(const fs::path& path) {
 }
 
 BenchEnvironment resolveOne(const std::string& name, uint32_t size, const fs::path& cacheDir) {
-    if (name == "sky") return {name, bake::loadEnvironment(std::nullopt, false)};
+    if (name == "sky") return {name, bake::loadEnvironment(std::nullopt, {})};
     if (name == "furnace") return {name, constantCube(size, 1.f)};
     if (name == "sun") return {name, sunCube(size)};
-    if (isBlenderWorld(name)) return {name, bake::loadEnvironment(blenderWorlds(cacheDir) / (name + ".exr"), false)};
+    if (isBlenderWorld(name)) return {name, bake::loadEnvironment(blenderWorlds(cacheDir) / (name + ".exr"), {})};
     if (!fs::exists(name))
         throw BenchError(fmt::format("no environment '{}': not a file, nor sky, furnace, sun, blender or one of "
                                      "blender's worlds (city, courtyard, forest, ...)", name));
-    return {tableName(name), bake::loadEnvironment(fs::path(name), false)};
+    return {tableName(name), bake::loadEnvironment(fs::path(name), {})};
 }
 
 } // namespace

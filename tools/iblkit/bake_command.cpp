@@ -21,8 +21,11 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"steps", steps},
             {"files", bake::filesJson(summary.files)},
             {"sh_radiance", bake::coefficientsJson(summary.shRadiance)},
-            {"clamped_values", summary.clampedValues},
-            {"sanitized_texels", summary.sanitizedTexels}};
+            {"clamped_values", bake::clampedValueCount(summary.halfRangeClamps)},
+            {"half_range_clamps", bake::halfRangeClampsJson(summary.halfRangeClamps)},
+            {"sanitized_texels", summary.sanitizedTexels},
+            {"negative_texels", summary.negativeTexels.count},
+            {"most_negative", summary.negativeTexels.mostNegative}};
 }
 
 void printSummary(const bake::BakeSummary& summary) {
@@ -31,8 +34,18 @@ void printSummary(const bake::BakeSummary& summary) {
     for (const auto& file : summary.files)
         if (file.name.find('/') == std::string::npos) fmt::print(stderr, " {}", file.name);
     fmt::print(stderr, "\n");
-    const auto clamped = summary.clampedValues;
-    if (clamped) fmt::print(stderr, "clamped {} values to the 16-bit float range (--clamp-half)\n", clamped);
+}
+
+// What the input policies changed: printed even with --quiet, which silences only progress.
+void printPolicyReports(const bake::BakeSummary& summary) {
+    for (const auto& clamp : summary.halfRangeClamps)
+        fmt::print(stderr, "warning: clamped {} values of {} past the 16-bit float range to 65504: mip {} lost {:.3g} % "
+                           "of its energy (--strict refuses them)\n",
+                   clamp.values, clamp.texture, clamp.worstMip, 100 * clamp.worstShare);
+    const auto& negative = summary.negativeTexels;
+    if (negative.count)
+        fmt::print(stderr, "clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n",
+                   negative.count, negative.mostNegative);
     const auto sanitized = summary.sanitizedTexels;
     if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
 }
@@ -83,10 +96,12 @@ void addBakeCommand(CLI::App& app) {
     command->add_flag("--dds", s.dds, "Also write .dds files");
     command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
-    command->add_flag("--clamp-half", s.clampHalf, "Clamp values beyond 65504 in 16-bit outputs instead of refusing them");
+    command->add_flag("--strict", s.strict,
+                      "Refuse negative input texels and values beyond 65504 in 16-bit outputs instead of clamping "
+                      "them (to 0 and to 65504, each reported)");
     command->add_flag("--validate", s.context.validation, "Run with the Vulkan validation layer; any message fails the bake");
     command->add_option("--device", s.context.device, "Device index or part of its name (default: lavapipe)");
-    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr (what the input policies clamped is still reported)");
     command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
     command->callback([arguments] {
         auto settings = arguments->settings;
@@ -100,6 +115,7 @@ void addBakeCommand(CLI::App& app) {
         if (!log->messages().empty()) throw ExpectationsFailed{};
         if (arguments->json) fmt::print("{}\n", summaryJson(summary).dump(2));
         if (!arguments->quiet) printSummary(summary);
+        printPolicyReports(summary);
     });
 }
 
