@@ -52,13 +52,18 @@ NegativeTexels findNegativeTexels(std::span<const float> values, uint32_t channe
 
 void clampNegativeToZero(std::span<float> values, uint32_t channels) {
     for (size_t texel = 0; texel * channels < values.size(); ++texel)
-        for (uint32_t c = 0; c < std::min(channels, 3u); ++c) values[texel * channels + c] = std::max(values[texel * channels + c], 0.f);
+        for (uint32_t c = 0; c < std::min(channels, 3u); ++c) {
+            float& value = values[texel * channels + c];
+            value = std::max(value, 0.f);
+        }
 }
 
 std::optional<OversizedTexel> findOversizedTexel(std::span<const float> values, uint32_t channels) {
     for (size_t texel = 0; texel * channels < values.size(); ++texel)
-        for (uint32_t c = 0; c < std::min(channels, 3u); ++c)
-            if (std::abs(values[texel * channels + c]) > kLargestRadiance) return OversizedTexel{texel, values[texel * channels + c]};
+        for (uint32_t c = 0; c < std::min(channels, 3u); ++c) {
+            const float value = values[texel * channels + c];
+            if (std::abs(value) > kLargestRadiance) return OversizedTexel{texel, value};
+        }
     return std::nullopt;
 }
 

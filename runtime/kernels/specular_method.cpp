@@ -53,7 +53,9 @@ SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::
     case SpecularKind::Table: table_.emplace(context, method, samples, files); break;
     case SpecularKind::Pyramid: pyramid_.emplace(context, method, samples, files); break;
     case SpecularKind::MipChain:
-        if (samples != 1) throw std::invalid_argument("the " + method + " method takes no sample count (1), not " + std::to_string(samples));
+        if (samples != 1)
+            throw std::invalid_argument("the " + method + " method takes no sample count (1), not " +
+                                        std::to_string(samples));
         mipChain_.emplace(context, method, files);
         break;
     case SpecularKind::Sampled: sampled_.emplace(context, method, samples, 0, files); break;

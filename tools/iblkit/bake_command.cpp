@@ -101,7 +101,8 @@ void addBakeCommand(CLI::App& app) {
                       "them (to 0 and to 65504, each reported)");
     command->add_flag("--validate", s.context.validation, "Run with the Vulkan validation layer; any message fails the bake");
     command->add_option("--device", s.context.device, "Device index or part of its name (default: lavapipe)");
-    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr (what the input policies clamped is still reported)");
+    command->add_flag("-q,--quiet", arguments->quiet,
+                      "No progress on stderr (what the input policies clamped is still reported)");
     command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
     command->callback([arguments] {
         auto settings = arguments->settings;
