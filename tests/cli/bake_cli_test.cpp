@@ -135,6 +135,36 @@ TEST_F(BakeCli, NonFiniteTexelsAreRefusedUnlessSanitized) {
     EXPECT_EQ(nlohmann::json::parse(result.out)["sanitized_texels"], 2);
 }
 
+TEST_F(BakeCli, TheDocumentsMethodReproducesItsOutputsFromBeforeTheKitsOwnMethods) {
+    // A 32x16 panorama of varied RGBE texels with one bright texel. The hashes are those of the
+    // EXR outputs of commit c58b1d3 (the bake before any method of the kit's own existed) on Debian
+    // 12's lavapipe and OpenEXR, for the same input and settings: the document's specular mip 1 and
+    // LUT must stay bit for bit what they were.
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16 +X 32\n";
+    for (uint32_t y = 0; y < 16; ++y)
+        for (uint32_t x = 0; x < 32; ++x)
+            hdr += std::string{char(64 + (x * 7 + y * 13) % 128), char(64 + (x * 11 + y * 5) % 128),
+                               char(64 + (x * 3 + y * 17) % 128), char(x == 20 && y == 5 ? 140 : 129)};
+    scratch.write("golden.hdr", hdr);
+    const auto result = iblkit({"bake", at("golden.hdr"), "-o", at("out"), "--quiet", "--exr", "--size", "16", "--samples",
+                                "64", "--lut-size", "8", "--irradiance-size", "4", "--method", "document",
+                                "--lut-method", "document", "--lut-samples", "1024"});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    std::map<std::string, std::string> hashes;
+    const auto manifest = nlohmann::json::parse(readFile(scratch.path() / "out" / "manifest.json"));
+    for (const auto& file : manifest["files"])
+        hashes[file["name"].get<std::string>()] = file["sha256"].get<std::string>();
+    const std::map<std::string, std::string> before{
+        {"exr/specular_mip1_px.exr", "d10ede0b13cac5628468917ddf8981a6bc0b83c0738882adc342554192d32059"},
+        {"exr/specular_mip1_nx.exr", "82736e445b6b7d07b4c50c53c11f464056c904525e1b49da8a368db7a22960c8"},
+        {"exr/specular_mip1_py.exr", "ae78fc6e65810cc36b9c24a16f690163afad8294e92db6753a3fc882cb8a3ef0"},
+        {"exr/specular_mip1_ny.exr", "0d5326ceb5ab3de9151ea4f4eeabdca4b2d2be89c38dd4b6108733683bd24b79"},
+        {"exr/specular_mip1_pz.exr", "aeb28a36b10b371f31a3a551432f95357d8f0ad7a1290ad4e6a994c2cc5ae38c"},
+        {"exr/specular_mip1_nz.exr", "83f3a569a344a50d0e076b70dcfbe4f4c37d6b282f2f83184392512ad1642349"},
+        {"exr/brdf_lut.exr", "60ca0df5dbe3f97e90fba31b6424af0a594a3a04e910a62a54a91651bdbceaf7"}};
+    for (const auto& [name, hash] : before) EXPECT_EQ(hashes[name], hash) << name;
+}
+
 TEST_F(BakeCli, SizesOutOfRangeOrBeyondMemoryAreRefused) {
     expectFailure({"bake", "-o", at("out"), "--size", "100"}, "not a power of two");
     expectFailure({"bake", "-o", at("out"), "--size", "16384", "--quiet"}, "memory");
