@@ -35,6 +35,9 @@ size_t levelOffset(const BakedTexture& texture, uint32_t mip) {
 double halfRangeLoss(const BakedTexture& texture, uint32_t mip) {
     const uint32_t channels = image_io::channelCount(texture.format), size = mipSize(texture, mip);
     const float* values = texture.values.data() + levelOffset(texture, mip);
+    const float* end = texture.values.data() + levelOffset(texture, mip + 1);
+    // Most mips lose nothing; only those that do pay for the solid angles.
+    if (std::none_of(values, end, [](float value) { return std::abs(value) > kLargestHalf; })) return 0;
     double total = 0, lost = 0;
     for (uint32_t face = 0; face < texture.faces; ++face)
         for (uint32_t row = 0; row < size; ++row)
@@ -104,10 +107,11 @@ std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool s
                                     "bake without --strict to clamp them to 65504",
                                     texture.name, overflow.count, overflow.largest, locate(texture, overflow.firstValue)));
     HalfRangeClamp clamp{texture.name, overflow.count, 0, 0};
-    for (uint32_t mip = 0; mip < texture.mips; ++mip) {
-        const double share = halfRangeLoss(texture, mip);
-        if (share > clamp.worstShare) clamp = {texture.name, overflow.count, mip, share};
-    }
+    for (uint32_t mip = 0; mip < texture.mips; ++mip)
+        if (const double share = halfRangeLoss(texture, mip); share > clamp.worstShare) {
+            clamp.worstMip = mip;
+            clamp.worstShare = share;
+        }
     clampToHalfRange(texture.values);
     return clamp;
 }

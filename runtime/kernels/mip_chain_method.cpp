@@ -1,6 +1,5 @@
 #include "kernels/mip_chain_method.hpp"
 
-#include "kernels/kernel_steps.hpp"
 #include "kernels/pyramid_method.hpp"
 #include "pyramid_ring.hpp"
 
@@ -12,15 +11,13 @@ namespace iblkit::kernels {
 MipChainPrefilter::MipChainPrefilter(const vulkan::VulkanContext& context, const std::string& method,
                                      const ShaderFiles& files)
     : context_(context),
-      ring_(context, compileKernel(kernelFor(KernelRole::PrefilterRing, method),
-                                   {{"RING_COUNT", std::to_string(reference::kPyramidRingReads)}}, {}, files)) {}
+      ring_(context, compileRingKernel(method, files)) {}
 
 bool mipChainCopies(float roughness, uint32_t sourceSize) { return !reference::pyramidRing(roughness, sourceSize); }
 
 void MipChainPrefilter::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                             float roughness) {
-    if (const auto ring = reference::pyramidRing(roughness, source.desc().width))
-        return runPrefilterRing(ring_, source, sampler, target, mip, ringParameters(*ring));
+    if (runRingWhereWide(ring_, source, sampler, target, mip, roughness)) return;
     const auto copy = target.copyMipFrom(context_, source, mip);
     copies_ += {std::max(0.0, copy.deviceMilliseconds), copy.wallMilliseconds, 1};
 }

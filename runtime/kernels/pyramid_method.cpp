@@ -34,22 +34,30 @@ PrefilterRingParameters ringParameters(const reference::PyramidRing& ring) {
     return {ring.centreLod, ring.ringLod, ring.cosAngle, ring.centreWeight};
 }
 
+KernelProgram compileRingKernel(const std::string& method, const ShaderFiles& files) {
+    return compileKernel(kernelFor(KernelRole::PrefilterRing, method),
+                         {{"RING_COUNT", std::to_string(reference::kPyramidRingReads)}}, {}, files);
+}
+
+bool runRingWhereWide(Kernel& ring, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                      uint32_t mip, float roughness) {
+    const auto wide = reference::pyramidRing(roughness, source.desc().width);
+    if (wide) runPrefilterRing(ring, source, sampler, target, mip, ringParameters(*wide));
+    return wide.has_value();
+}
+
 PyramidPrefilter::PyramidPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t reads,
                                    const ShaderFiles& files)
     : reads_(checkedReads(reads)),
       kernel_(context, compileKernel(kernelFor(KernelRole::PrefilterPyramid, method),
                                      {{"READ_COUNT", std::to_string(reads)}}, {}, files)),
-      ring_(context, compileKernel(kernelFor(KernelRole::PrefilterRing, method),
-                                   {{"RING_COUNT", std::to_string(reference::kPyramidRingReads)}}, {}, files)) {}
+      ring_(context, compileRingKernel(method, files)) {}
 
 void PyramidPrefilter::run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip,
                            float roughness) {
-    const uint32_t size = source.desc().width;
-    if (const auto ring = reference::pyramidRing(roughness, size))
-        runPrefilterRing(ring_, source, sampler, target, mip, ringParameters(*ring));
-    else
-        runPrefilterPyramid(kernel_, source, sampler, target, mip,
-                            pyramidParameters(reference::fitPyramidReads(roughness, reads_, size), reads_));
+    if (runRingWhereWide(ring_, source, sampler, target, mip, roughness)) return;
+    const auto reads = reference::fitPyramidReads(roughness, reads_, source.desc().width);
+    runPrefilterPyramid(kernel_, source, sampler, target, mip, pyramidParameters(reads, reads_));
 }
 
 DispatchTotals PyramidPrefilter::takeTotals() {

@@ -21,6 +21,12 @@ namespace iblkit::kernels {
 PrefilterPyramidParameters pyramidParameters(const std::vector<reference::PyramidRead>& reads, uint32_t readCount);
 // PrefilterRingCS's parameters for `ring`.
 PrefilterRingParameters ringParameters(const reference::PyramidRing& ring);
+// PrefilterRingCS as `method` has it, with reference::kPyramidRingReads reads around the ring.
+KernelProgram compileRingKernel(const std::string& method, const ShaderFiles& files);
+// Runs `ring` on mip `mip` of `target` where the lobe at `roughness` is wide enough for a ring
+// (reference::pyramidRing); returns false, having run nothing, where it is not.
+bool runRingWhereWide(Kernel& ring, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
+                      uint32_t mip, float roughness);
 
 // The pyramid method: per mip, reads of the source's mip chain along each texel's normal, their
 // lods and weights fitted on the host to the GGX lobe (reference::fitPyramidReads), or, for a
