@@ -40,16 +40,29 @@ std::string_view openGlPathName() { return kOpenGlPath; }
 ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options) {
     const opengl::EglContext gl;
     SuiteRun run(context, gl, options);
-    addSampledOutputs(run);
+    addSampledLutOutputs(run);
+    addSampledPrefilterOutputs(run);
     addQuadratureLutOutput(run);
     addGridLutOutputs(run);
     addFitLutOutput(run);
-    addChunkedOutputs(run);
+    addChunkedLutOutput(run);
+    addChunkedPrefilterOutput(run);
+    addSkyOutputs(run);
     addCubeOutputs(run);
     addConvolutionOutputs(run);
     addFilteredOutputs(run);
     addPreviewOutput(run);
+    addProbeOutputs(run);
     return {std::move(run.rows), gl.renderer()};
+}
+
+void addEnvironmentOutputs(SuiteRun& run) {
+    addSampledPrefilterOutputs(run);
+    addChunkedPrefilterOutput(run);
+    addCubeOutputs(run);
+    addConvolutionOutputs(run);
+    addFilteredOutputs(run);
+    addPreviewOutput(run);
 }
 
 } // namespace iblkit::consistency

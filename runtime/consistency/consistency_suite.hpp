@@ -2,6 +2,7 @@
 
 #include "compile_options.hpp"
 #include "error_stats.hpp"
+#include "suite_environment.hpp"
 #include "vulkan_context.hpp"
 
 #include <map>
@@ -41,6 +42,8 @@ struct SuiteOptions {
     uint32_t convolutionBudget = 64;
     // PreviewCS: columns x rows spheres of cellSize pixels over a cubeSize specular cube.
     uint32_t previewColumns = 4, previewRows = 2, previewCellSize = 16;
+    // What the cube kernels read.
+    SuiteEnvironment environment = testSuiteEnvironment();
     // The shaders under test, by their name in the manifest: every kernel of hlsl/shaders.json,
     // or the same from a copy that a test has broken.
     std::map<std::string, compiler::CompileOptions> shaders;
@@ -67,6 +70,9 @@ struct ConsistencyRow {
     // A divergence the kit knows and tracks (knownDivergence): the row is expected to fail, and
     // one that passes means the cause is gone and the entry should go.
     std::string knownIssue = {};
+    // Against the double: the largest error of the colour values (alpha, every fourth, aside) over
+    // the largest of them, for comparing environments of any brightness (iblkit stress).
+    double colourError = 0;
 
     bool asExpected() const { return knownIssue.empty() ? passed : !passed; }
 };
@@ -102,6 +108,8 @@ Bounds tableBounds();
 Bounds pyramidBounds();
 Bounds ringBounds();
 Bounds previewBounds();
+Bounds pbrProbeBounds();
+Bounds lutProbeBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.
 std::string knownDivergence(const std::string& kernel, const std::string& path);

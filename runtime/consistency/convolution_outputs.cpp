@@ -67,7 +67,7 @@ void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>&
 } // namespace
 
 void addConvolutionOutputs(SuiteRun& run) {
-    const auto cube = testCube(run.options.convolutionSize, 1);
+    const auto cube = environmentCube(run.options.environment, run.options.convolutionSize, 1);
     const auto inFloat = reference::clusterPyramid<float>(cube.texels, cube.size);
     const auto inDouble = reference::clusterPyramid<double>(cube.texels, cube.size);
     addClusterOutput(run, cube, inFloat, inDouble);

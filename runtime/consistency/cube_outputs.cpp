@@ -47,7 +47,7 @@ void addSkyOutput(SuiteRun& run) {
 
 void addEquirectOutput(SuiteRun& run) {
     const auto& options = run.options;
-    const auto panorama = testPanorama(options.panoramaWidth);
+    const auto panorama = options.environment.panorama(options.panoramaWidth);
     const uint32_t size = options.cubeSize, supersample = options.supersample;
     const auto reference = [&]<typename T>(T) {
         return reference::referenceEquirectToCube<T>(panorama.texels, panorama.width, panorama.height, size, supersample);
@@ -106,20 +106,22 @@ void addIrradianceOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
 
 } // namespace
 
+void addSkyOutputs(SuiteRun& run) { addSkyOutput(run); }
+
 void addCubeOutputs(SuiteRun& run) {
-    addSkyOutput(run);
     addEquirectOutput(run);
     const uint32_t size = run.options.mipChainSize;
-    const auto cube = testCube(size, uint32_t(std::bit_width(size)));
+    const auto cube = environmentCube(run.options.environment, size, uint32_t(std::bit_width(size)));
     addDownsampleOutput(run, cube);
-    addShOutput(run, cube, 1);
-    addIrradianceOutput(run, cube, 1);
+    const uint32_t mip = std::min(1u, cube.mips - 1); // a 1² cube has no mip 1
+    addShOutput(run, cube, mip);
+    addIrradianceOutput(run, cube, mip);
 }
 
 // No C++ reference (see boundsRationale): the paths are compared with path a.
 void addPreviewOutput(SuiteRun& run) {
     const auto& options = run.options;
-    const auto inputs = previewInputs(options.previewColumns, options.previewRows, options.previewCellSize, options.cubeSize,
+    const auto inputs = previewInputs(options.environment, options.previewColumns, options.previewRows, options.previewCellSize, options.cubeSize,
                                       options.chunkLutSize, options.sampleCount);
     addOutputAgainstPathA(run, {"PreviewCS", fmt::format("preview {}×{}", inputs.width, inputs.height), previewBounds()},
                           [&](const PathProgram& program) { return gpuPreview(run.vulkan, program, inputs); },

@@ -40,7 +40,7 @@ void addRingOutput(SuiteRun& run, const MippedCube& cube, const reference::Mippe
 void addFilteredOutputs(SuiteRun& run) {
     const auto& options = run.options;
     const uint32_t size = options.prefilterSize, samples = options.sampleCount;
-    const auto cube = testCube(options.environmentSize, uint32_t(std::bit_width(options.environmentSize)));
+    const auto cube = environmentCube(options.environment, options.environmentSize, uint32_t(std::bit_width(options.environmentSize)));
     const reference::MippedEnvironment source(cube);
     for (const float roughness : options.roughnesses) {
         addOutput(run, {"PrefilterFilteredCS", fmt::format("prefilter {}² r={} from every mip", size, roughness),

@@ -7,7 +7,7 @@
 
 namespace iblkit::consistency {
 
-void addSampledOutputs(SuiteRun& run) {
+void addSampledLutOutputs(SuiteRun& run) {
     const auto& options = run.options;
     for (const uint32_t size : options.lutSizes) {
         addOutput(run, {"PrecomputedBrdfCS", fmt::format("LUT {}²", size), lutBounds(size)},
@@ -16,7 +16,11 @@ void addSampledOutputs(SuiteRun& run) {
                   [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
                   [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
     }
-    const auto environment = reference::CubeEnvironment::testEnvironment(options.environmentSize);
+}
+
+void addSampledPrefilterOutputs(SuiteRun& run) {
+    const auto& options = run.options;
+    const reference::CubeEnvironment environment(options.environmentSize, options.environment.cube(options.environmentSize));
     const uint32_t size = options.prefilterSize;
     for (const float roughness : options.roughnesses) {
         addOutput(run, {"PrefilterSpecularCS", fmt::format("prefilter {}² r={}", size, roughness), prefilterBounds()},
@@ -28,7 +32,7 @@ void addSampledOutputs(SuiteRun& run) {
 }
 
 // The same references as the whole-loop shaders: the chunks only regroup the float sums.
-void addChunkedOutputs(SuiteRun& run) {
+void addChunkedLutOutput(SuiteRun& run) {
     const auto& options = run.options;
     const uint32_t samples = options.sampleCount, chunk = options.chunkSamples;
     const uint32_t lutSize = options.chunkLutSize;
@@ -36,7 +40,12 @@ void addChunkedOutputs(SuiteRun& run) {
               {reference::referenceBrdfLut<float>(lutSize, samples), reference::referenceBrdfLut<double>(lutSize, samples)},
               [&](const PathProgram& program) { return gpuBrdfLutChunks(run.vulkan, program, lutSize, samples, chunk); },
               [&](const OpenGlForm& form) { return glBrdfLutChunks(run.gl, form, lutSize, samples, chunk); });
-    const auto environment = reference::CubeEnvironment::testEnvironment(options.environmentSize);
+}
+
+void addChunkedPrefilterOutput(SuiteRun& run) {
+    const auto& options = run.options;
+    const uint32_t samples = options.sampleCount, chunk = options.chunkSamples;
+    const reference::CubeEnvironment environment(options.environmentSize, options.environment.cube(options.environmentSize));
     const uint32_t size = options.prefilterSize;
     const float roughness = options.chunkRoughness;
     addOutput(run, {"PrefilterSpecularChunkCS", fmt::format("prefilter {}² r={} in chunks of {}", size, roughness, chunk),

@@ -8,8 +8,8 @@
 #include <numbers>
 
 namespace iblkit::consistency {
-MippedCube testCube(uint32_t size, uint32_t mips) {
-    MippedCube cube{size, mips, reference::CubeEnvironment::testEnvironment(size).texels()};
+MippedCube environmentCube(const SuiteEnvironment& environment, uint32_t size, uint32_t mips) {
+    MippedCube cube{size, mips, environment.cube(size)};
     std::vector<float> level = cube.texels;
     for (uint32_t mip = 1; mip < mips; ++mip) {
         level = reference::downsampleCubeInFloat(level, cube.mipSize(mip - 1));
@@ -18,26 +18,30 @@ MippedCube testCube(uint32_t size, uint32_t mips) {
     return cube;
 }
 
-Panorama testPanorama(uint32_t width) {
-    Panorama panorama{width, width / 2, {}};
-    panorama.texels.reserve(size_t(width) * panorama.height * 4);
-    for (uint32_t y = 0; y < panorama.height; ++y)
-        for (uint32_t x = 0; x < width; ++x) {
-            const double longitude = ((x + 0.5) / width - 0.5) * 2 * std::numbers::pi;
-            const double latitude = (y + 0.5) / panorama.height * std::numbers::pi;
-            const glm::dvec3 direction(std::sin(latitude) * std::sin(longitude), std::cos(latitude),
-                                       -std::sin(latitude) * std::cos(longitude));
-            const glm::dvec3 radiance = reference::CubeEnvironment::testRadiance(direction);
-            panorama.texels.insert(panorama.texels.end(), {float(radiance.r), float(radiance.g), float(radiance.b), 1.f});
-        }
-    return panorama;
+SuiteEnvironment testSuiteEnvironment() {
+    const auto panorama = [](uint32_t width) {
+        Panorama panorama{width, width / 2, {}};
+        panorama.texels.reserve(size_t(width) * panorama.height * 4);
+        for (uint32_t y = 0; y < panorama.height; ++y)
+            for (uint32_t x = 0; x < width; ++x) {
+                const double longitude = ((x + 0.5) / width - 0.5) * 2 * std::numbers::pi;
+                const double latitude = (y + 0.5) / panorama.height * std::numbers::pi;
+                const glm::dvec3 direction(std::sin(latitude) * std::sin(longitude), std::cos(latitude),
+                                           -std::sin(latitude) * std::cos(longitude));
+                const glm::dvec3 radiance = reference::CubeEnvironment::testRadiance(direction);
+                panorama.texels.insert(panorama.texels.end(), {float(radiance.r), float(radiance.g), float(radiance.b), 1.f});
+            }
+        return panorama;
+    };
+    return {"the test environment",
+            [](uint32_t size) { return reference::CubeEnvironment::testEnvironment(size).texels(); }, panorama};
 }
 
-PreviewInputs previewInputs(uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
+PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
                             uint32_t sampleCount) {
     PreviewInputs inputs;
-    inputs.specular = testCube(specularSize, uint32_t(std::bit_width(specularSize)));
-    const auto irradianceSource = testCube(specularSize, 3);
+    inputs.specular = environmentCube(environment, specularSize, uint32_t(std::bit_width(specularSize)));
+    const auto irradianceSource = environmentCube(environment, specularSize, 3);
     const auto mip2 = irradianceSource.mip(2);
     inputs.irradiance = {irradianceSource.mipSize(2), 1, std::vector<float>(mip2.begin(), mip2.end())};
     inputs.lutSize = lutSize;

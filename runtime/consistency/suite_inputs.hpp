@@ -2,6 +2,7 @@
 
 #include "kernels/kernel_parameters.hpp"
 #include "mipped_cube.hpp"
+#include "suite_environment.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -15,19 +16,9 @@ namespace iblkit::consistency {
 
 using MippedCube = reference::MippedCube;
 
-// The test environment (reference::CubeEnvironment::testEnvironment) at `size` with `mips`
-// mips, each made from the one above by DownsampleCubeCS's float arithmetic.
-MippedCube testCube(uint32_t size, uint32_t mips);
-
-// An RGBA panorama, row 0 at the zenith.
-struct Panorama {
-    uint32_t width = 0;
-    uint32_t height = 0;
-    std::vector<float> texels;
-};
-// The test radiance as a width x width/2 panorama, each texel at the direction Cube.fxh's
-// EquirectToDirection gives its centre.
-Panorama testPanorama(uint32_t width);
+// The environment at `size` with `mips` mips, each made from the one above by
+// DownsampleCubeCS's float arithmetic.
+MippedCube environmentCube(const SuiteEnvironment& environment, uint32_t size, uint32_t mips);
 
 // What PreviewCS reads and the size it writes.
 struct PreviewInputs {
@@ -39,9 +30,9 @@ struct PreviewInputs {
     uint32_t width = 0;
     uint32_t height = 0;
 };
-// A grid of columns x rows spheres of cellSize pixels over the test cube at specularSize with all
-// its mips, its mip 2 as the irradiance cube and the float reference LUT.
-PreviewInputs previewInputs(uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
+// A grid of columns x rows spheres of cellSize pixels over the environment at specularSize with
+// all its mips, its mip 2 as the irradiance cube and the float reference LUT.
+PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
                             uint32_t sampleCount);
 
 } // namespace iblkit::consistency

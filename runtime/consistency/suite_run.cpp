@@ -1,5 +1,7 @@
 #include "suite_run.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace iblkit::consistency {
@@ -10,6 +12,28 @@ bool withinBounds(const ErrorStats& vsFloat, const ErrorStats& vsDouble, const B
            vsDouble.maxAbsolute <= bounds.maxVsDouble && vsDouble.rms <= bounds.rmsVsDouble;
 }
 
+// Over the first three of every four values only: an alpha of 1 (or the harmonics' solid angle)
+// is no measure of the output's radiance, and would hide errors in a dim environment's.
+bool isColour(size_t index) { return index % 4 != 3; }
+
+double largestColour(const std::vector<double>& values) {
+    double largest = 0;
+    for (size_t i = 0; i < values.size(); ++i)
+        if (isColour(i) && std::isfinite(values[i])) largest = std::max(largest, std::abs(values[i]));
+    return largest;
+}
+
+// The largest error of the colour values over the largest of them (the absolute error where
+// they are all 0).
+template <typename T>
+double colourError(const std::vector<T>& values, const std::vector<double>& reference) {
+    const double scale = largestColour(reference);
+    double largest = 0;
+    for (size_t i = 0; i < std::min(values.size(), reference.size()); ++i)
+        if (isColour(i)) largest = std::max(largest, std::abs(double(values[i]) - reference[i]));
+    return scale > 0 ? largest / scale : largest;
+}
+
 void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
                  const OpenGlRun& openGlRun, bool skipPathA) {
     const auto add = [&](std::string path, const std::vector<float>& gpu) {
@@ -17,7 +41,8 @@ void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& refere
         const auto vsDouble = measureError(gpu, references.inDouble);
         auto knownIssue = knownDivergence(spec.kernel, path);
         run.rows.push_back({spec.kernel, std::move(path), spec.output, vsFloat, vsDouble, spec.bounds, false,
-                            withinBounds(vsFloat, vsDouble, spec.bounds), std::move(knownIssue)});
+                            withinBounds(vsFloat, vsDouble, spec.bounds), std::move(knownIssue),
+                            colourError(gpu, references.inDouble)});
     };
     for (const auto path : kVulkanPaths)
         if (!skipPathA || path != ShaderPath::Glslang)
@@ -47,7 +72,8 @@ const OpenGlForm& SuiteRun::openGl(const std::string& kernel) {
 void addOutput(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
                const OpenGlRun& openGlRun) {
     run.rows.push_back({spec.kernel, "f. C++ reference, float", spec.output, {},
-                        measureError(references.inFloat, references.inDouble), spec.bounds, true, true});
+                        measureError(references.inFloat, references.inDouble), spec.bounds, true, true, {},
+                        colourError(references.inFloat, references.inDouble)});
     addPathRows(run, spec, references, vulkanRun, openGlRun, false);
 }
 

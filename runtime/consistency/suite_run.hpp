@@ -60,15 +60,22 @@ void addOutput(SuiteRun& run, const OutputSpec& spec, const References& referenc
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
 // The outputs of each group of kernels (sampled_outputs.cpp, quadrature_outputs.cpp, cube_outputs.cpp,
-// convolution_outputs.cpp, filtered_outputs.cpp).
-void addSampledOutputs(SuiteRun& run);
+// convolution_outputs.cpp, filtered_outputs.cpp, probe_outputs.cpp).
+void addSampledLutOutputs(SuiteRun& run);
+void addSampledPrefilterOutputs(SuiteRun& run);
 void addQuadratureLutOutput(SuiteRun& run);
 void addGridLutOutputs(SuiteRun& run);
 void addFitLutOutput(SuiteRun& run);
-void addChunkedOutputs(SuiteRun& run);
-void addCubeOutputs(SuiteRun& run);
+void addChunkedLutOutput(SuiteRun& run);
+void addChunkedPrefilterOutput(SuiteRun& run);
+void addSkyOutputs(SuiteRun& run);
+void addCubeOutputs(SuiteRun& run); // the panorama's resampling, the mip chain, the harmonics, irradiance
 void addConvolutionOutputs(SuiteRun& run);
 void addFilteredOutputs(SuiteRun& run);
 void addPreviewOutput(SuiteRun& run);
+void addProbeOutputs(SuiteRun& run);
+
+// Every output that reads run.options.environment, in the suite's order.
+void addEnvironmentOutputs(SuiteRun& run);
 
 } // namespace iblkit::consistency

@@ -58,4 +58,6 @@ NamedValues PreviewParameters::members() const {
             {"StripPanelWidth", {double(stripPanelWidth)}}, {"Exposure", {exposure}}};
 }
 
+NamedValues ProbeParameters::members() const { return {{"ArgumentCount", {double(argumentCount)}}}; }
+
 } // namespace iblkit::kernels

@@ -86,4 +86,10 @@ struct PreviewParameters {
     NamedValues members() const;
 };
 
+// PbrProbeCS and LutProbeCS: how many arguments to evaluate.
+struct ProbeParameters {
+    uint32_t argumentCount = 0;
+    NamedValues members() const;
+};
+
 } // namespace iblkit::kernels

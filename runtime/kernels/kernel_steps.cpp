@@ -186,4 +186,12 @@ void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradian
     kernel.run({image.desc().width, image.desc().height, 1});
 }
 
+void runProbe(Kernel& kernel, const ProbeBuffers& buffers, uint32_t argumentCount) {
+    kernel.program().bind("Arguments", buffers.arguments);
+    if (buffers.sampleIndices) kernel.program().bind("SampleIndices", *buffers.sampleIndices);
+    kernel.program().bind("Results", buffers.results);
+    kernel.setParameters(ProbeParameters{argumentCount}.members());
+    kernel.run({argumentCount, 1, 1});
+}
+
 } // namespace iblkit::kernels

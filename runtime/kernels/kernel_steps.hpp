@@ -114,4 +114,12 @@ void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& tar
 void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
                 const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters);
 
+// Probe: the buffers of PbrProbeCS or LutProbeCS (which has no SampleIndices).
+struct ProbeBuffers {
+    const vulkan::Buffer& arguments;
+    const vulkan::Buffer* sampleIndices;
+    const vulkan::Buffer& results;
+};
+void runProbe(Kernel& kernel, const ProbeBuffers& buffers, uint32_t argumentCount);
+
 } // namespace iblkit::kernels

@@ -27,6 +27,7 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"sh-project", KernelRole::ShProject},
     {"irradiance-cube", KernelRole::IrradianceCube},
     {"preview", KernelRole::Preview},
+    {"probe", KernelRole::Probe},
 };
 
 KernelRole parseRole(const std::string& shader, const std::string& name) {

@@ -31,6 +31,7 @@ enum class KernelRole {
     ShProject,
     IrradianceCube,
     Preview,
+    Probe,          // StructuredBuffer Arguments (+ SampleIndices) -> RWStructuredBuffer Results; ProbeParameters
 };
 
 std::string_view roleName(KernelRole role);

@@ -146,7 +146,8 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
                              "ClusterCubeCS",          "PrefilterConvolutionCS", "SkyCubeCS",
                              "BrdfLutQuadratureCS",    "PrefilterFilteredCS", "PrefilterTableCS",
                              "BrdfLutGridCS",          "BrdfLutResampleCS",   "PrefilterPyramidCS",
-                             "PrefilterRingCS",        "BrdfLutFitCS"};
+                             "PrefilterRingCS",        "BrdfLutFitCS",        "PbrProbeCS",
+                             "LutProbeCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;

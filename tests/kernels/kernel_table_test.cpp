@@ -20,7 +20,7 @@ TEST(KernelTable, EveryManifestShaderIsAKernelAndCompiles) {
         roles.insert(kernel.role);
         EXPECT_NO_THROW(compileKernel(kernel)) << kernel.name;
     }
-    EXPECT_EQ(roles.size(), 17u) << "every role has a kernel";
+    EXPECT_EQ(roles.size(), 18u) << "every role has a kernel";
 }
 
 TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {

@@ -4,6 +4,7 @@
 #include "compile_all_command.hpp"
 #include "compile_command.hpp"
 #include "consistency_command.hpp"
+#include "stress_command.hpp"
 #include "devices_command.hpp"
 #include "lut_fit_command.hpp"
 #include "run_command.hpp"
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addDevicesCommand(app);
     iblkit::cli::addRunCommand(app);
     iblkit::cli::addConsistencyCommand(app);
+    iblkit::cli::addStressCommand(app);
     iblkit::cli::addBakeCommand(app);
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);

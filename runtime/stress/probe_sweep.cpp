@@ -1,0 +1,184 @@
+#include "probe_sweep.hpp"
+
+#include "bake_settings.hpp"
+#include "probe_bake.hpp"
+
+#include <fmt/core.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace iblkit::stress {
+namespace {
+
+using consistency::ProbeArguments;
+
+constexpr float kDenormal = std::numeric_limits<float>::denorm_min();
+constexpr float kCosines[] = {0.f, kDenormal, 1e-7f, 1e-4f, 0.5f, 1.f - 1e-7f, 1.f};
+constexpr float kRoughnesses[] = {0.f, kDenormal, 1e-4f, 0.01f, 0.5f, 1.f};
+constexpr float kEdges[] = {0.f, kDenormal, 1e-7f, 0.5f, 1.f - 1e-7f, 1.f};
+
+// Hammersley's (i, n): counts from 1 to 2^32 - 1, each at its first, second, middle and last point.
+std::vector<glm::uvec2> sampleIndices() {
+    std::vector<glm::uvec2> indices;
+    for (const uint32_t n : {1u, 2u, 3u, 1024u, 65535u, 65536u, 1u << 20, 1u << 24, 0xFFFFFFFFu})
+        for (const uint32_t i : std::set<uint32_t>{0u, std::min(1u, n - 1), n / 2, n - 1}) indices.emplace_back(i, n);
+    return indices;
+}
+
+ProbeArguments pbrArguments() {
+    const auto indices = sampleIndices();
+    ProbeArguments arguments;
+    for (const float c : kCosines)
+        for (const float roughness : kRoughnesses)
+            for (const float c2 : kEdges)
+                for (const float c3 : kEdges) {
+                    arguments.sampleIndices.push_back(indices[arguments.values.size() % indices.size()]);
+                    arguments.values.emplace_back(c, roughness, c2, c3);
+                }
+    return arguments;
+}
+
+ProbeArguments lutArguments() {
+    ProbeArguments arguments;
+    for (const float ndotv : kCosines)
+        for (const float roughness : kRoughnesses)
+            arguments.values.emplace_back(ndotv, roughness, float(1.0 - double(ndotv)), 0.f);
+    return arguments;
+}
+
+// The smallest arguments any bake passes: the LUT's first texel centre at its largest size, and
+// the roughness of mip 1 of the largest cube (the prefilter kernels that call D).
+constexpr float kSmallestLutArgument = 0.5f / float(bake::kMaxLutSize);
+const float kSmallestMipRoughness = bake::roughnessOfMip(1, uint32_t(std::bit_width(bake::kMaxCubeSize)));
+
+bool lutDomain(const glm::vec4& argument) { return argument.x >= kSmallestLutArgument && argument.y >= kSmallestLutArgument; }
+bool anywhere(const glm::vec4&) { return true; }
+bool prefilterDomain(const glm::vec4& argument) { return argument.y >= kSmallestMipRoughness; }
+// The sample's roughness is the LUT's (the smaller); xi comes from Hammersley, whose xi.y < 1.
+bool sampleDomain(const glm::vec4& argument) { return argument.y >= kSmallestLutArgument && argument.w < 1.f; }
+
+// A function's place in its probe's results, how its error is measured and where the bake calls
+// it. Each bound is twice the largest error measured on lavapipe where the bake calls the
+// function, rounded up (why each is what it is: docs/stability.md).
+struct ProbeFunction {
+    const char* name;
+    bool lutProbe;         // LutProbeCS, else PbrProbeCS
+    uint32_t first, count; // floats within one argument's results
+    bool relative;
+    double bound;
+    bool (*calledByBake)(const glm::vec4& argument);
+};
+const ProbeFunction kFunctions[] = {
+    {"DistributionGGX (D)", false, 0, 1, true, 1e-6, prefilterDomain},
+    {"GeometrySmithForIBL (G)", false, 1, 1, false, 2e-7, lutDomain},
+    {"GeometrySchlickGGXForIBL (G1)", false, 2, 1, false, 1e-7, lutDomain},
+    {"FresnelSchlick (F)", false, 4, 3, false, 2.4e-7, anywhere},
+    {"ImportanceSampleGGX", false, 8, 3, false, 0.56, sampleDomain},
+    {"Hammersley", false, 12, 2, false, 4e-8, anywhere},
+    {"IntegrateBRDF (1024 samples)", false, 14, 2, false, 0.35, lutDomain},
+    {"IntegrateBrdfQuadrature (the kit's LUT)", true, 0, 2, false, 3e-6, anywhere},
+};
+
+std::string argumentText(const ProbeFunction& function, const ProbeArguments& arguments, size_t index) {
+    const auto& v = arguments.values[index];
+    const std::string name = function.name;
+    if (function.lutProbe || name.starts_with("IntegrateBRDF") || name.starts_with("Distribution") ||
+        name.starts_with("GeometrySchlick"))
+        return fmt::format("c = {:g}, r = {:g}", v.x, v.y);
+    if (name.starts_with("GeometrySmith")) return fmt::format("N.L = {:g}, N.V = {:g}, r = {:g}", v.z, v.x, v.y);
+    if (name.starts_with("Fresnel")) return fmt::format("cos = {:g}", v.w);
+    if (name.starts_with("Hammersley"))
+        return fmt::format("i = {}, n = {}", arguments.sampleIndices[index].x, arguments.sampleIndices[index].y);
+    return fmt::format("xi = ({:g}, {:g}), normal {}, r = {:g}", v.z, v.w, index % 5, v.y);
+}
+
+const char* finiteness(double value) {
+    return std::isnan(value) ? "NaN" : std::isinf(value) ? "Inf" : "finite";
+}
+
+double errorOf(double value, double reference, bool relative) {
+    const double difference = std::abs(value - reference);
+    if (!relative) return difference;
+    const double scale = std::abs(reference);
+    return scale >= double(std::numeric_limits<float>::min()) ? difference / scale : difference;
+}
+
+struct ProbeValues {
+    std::vector<float> inFloat;
+    std::vector<double> inDouble;
+    uint32_t stride; // floats per argument
+};
+
+ProbeRow judge(const ProbeFunction& function, const ProbeArguments& arguments, const ProbeValues& references,
+               const std::vector<float>& path, std::string pathName, bool isFloatReference) {
+    ProbeRow row{function.lutProbe ? "LutProbeCS" : "PbrProbeCS", function.name, std::move(pathName)};
+    row.relative = function.relative;
+    row.bound = function.bound;
+    for (size_t a = 0; a < arguments.values.size(); ++a)
+        for (uint32_t k = 0; k < function.count; ++k) {
+            const size_t at = a * references.stride + function.first + k;
+            const double inDouble = references.inDouble[at];
+            ++row.values;
+            if (!std::isfinite(inDouble)) { ++row.singularInMath; continue; }
+            if (!std::isfinite(references.inFloat[at])) { ++row.singularInFloat; continue; }
+            if (!std::isfinite(path[at])) { ++row.nonFinite; continue; }
+            const double error = errorOf(path[at], inDouble, function.relative);
+            auto& maxError = function.calledByBake(arguments.values[a]) ? row.maxError : row.maxErrorElsewhere;
+            maxError = std::max(maxError, error);
+        }
+    if (isFloatReference) row.nonFinite = 0;
+    row.passed = row.nonFinite == 0 && row.maxError <= row.bound;
+    return row;
+}
+
+void recordSingularPoints(const ProbeFunction& function, const ProbeArguments& arguments, const ProbeValues& references,
+                          std::vector<SingularPoint>& singular) {
+    std::set<std::string> seen;
+    for (size_t a = 0; a < arguments.values.size(); ++a)
+        for (uint32_t k = 0; k < function.count; ++k) {
+            const size_t at = a * references.stride + function.first + k;
+            if (std::isfinite(references.inDouble[at]) && std::isfinite(references.inFloat[at])) continue;
+            auto text = argumentText(function, arguments, a);
+            if (!seen.insert(text).second) continue;
+            singular.push_back({function.name, std::move(text), finiteness(references.inDouble[at]),
+                                finiteness(references.inFloat[at]), function.calledByBake(arguments.values[a])});
+        }
+}
+
+void sweepProbe(consistency::SuiteRun& run, const char* kernel, const ProbeArguments& arguments, bool lutProbe,
+                ProbeSweep& sweep) {
+    const uint32_t results = lutProbe ? consistency::kLutProbeResults : consistency::kPbrProbeResults;
+    const ProbeValues references{
+        lutProbe ? consistency::lutProbeReference<float>(arguments) : consistency::pbrProbeReference<float>(arguments),
+        lutProbe ? consistency::lutProbeReference<double>(arguments) : consistency::pbrProbeReference<double>(arguments),
+        results * 4};
+    std::vector<std::pair<std::string, std::vector<float>>> paths{{"f. C++ reference, float", references.inFloat}};
+    for (const auto path : consistency::kVulkanPaths)
+        paths.emplace_back(consistency::pathName(path),
+                           consistency::gpuProbe(run.vulkan, run.program(kernel, path), arguments, results));
+    paths.emplace_back(consistency::openGlPathName(), consistency::glProbe(run.gl, run.openGl(kernel), arguments, results));
+    for (const auto& function : kFunctions) {
+        if (function.lutProbe != lutProbe) continue;
+        for (size_t p = 0; p < paths.size(); ++p)
+            sweep.rows.push_back(judge(function, arguments, references, paths[p].second, paths[p].first, p == 0));
+        recordSingularPoints(function, arguments, references, sweep.singular);
+    }
+}
+
+} // namespace
+
+ProbeSweep sweepProbes(consistency::SuiteRun& run) {
+    ProbeSweep sweep;
+    const auto pbr = pbrArguments();
+    const auto lut = lutArguments();
+    sweep.pbrArguments = pbr.values.size();
+    sweep.lutArguments = lut.values.size();
+    sweepProbe(run, "PbrProbeCS", pbr, false, sweep);
+    sweepProbe(run, "LutProbeCS", lut, true, sweep);
+    return sweep;
+}
+
+} // namespace iblkit::stress
