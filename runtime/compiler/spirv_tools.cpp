@@ -9,12 +9,29 @@ namespace iblkit::compiler {
 namespace {
 
 constexpr spv_target_env kEnvironment = SPV_ENV_VULKAN_1_1;
+constexpr char kHex[] = "0123456789abcdef";
+
+// The validator quotes the offending instruction on lines of its own, and a damaged module's
+// strings hold any byte: one printable line each, so that an error stays one line.
+std::string oneLine(const std::string& message) {
+    std::string line;
+    for (const char c : message) {
+        const auto byte = static_cast<unsigned char>(c);
+        const bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+        if (space && (line.empty() || line.back() == ' ')) continue;
+        if (space) line += ' ';
+        else if (byte < 0x20 || byte >= 0x7F) line += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+        else line += c;
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    return line;
+}
 
 struct MessageCollector {
     std::string text;
     void operator()(spv_message_level_t level, const char*, const spv_position_t& position, const char* message) {
         if (level > SPV_MSG_WARNING) return;
-        text += (text.empty() ? "" : "; ") + std::string(message) + " (word " + std::to_string(position.index) + ")";
+        text += (text.empty() ? "" : "; ") + oneLine(message) + " (word " + std::to_string(position.index) + ")";
     }
 };
 

@@ -7,6 +7,7 @@
 #include "data_file.hpp"
 #include "expectation_check.hpp"
 #include "hlsl_frontend.hpp"
+#include "spirv_tools.hpp"
 #include "run_error.hpp"
 #include "vulkan_error.hpp"
 
@@ -36,6 +37,8 @@ Program loadShader(const RunSpec& spec) {
             throw RunError(spec.shader.string() + ": error: not a SPIR-V module (" + std::to_string(bytes.size()) + " bytes)");
         std::vector<uint32_t> words(bytes.size() / 4);
         std::memcpy(words.data(), bytes.data(), words.size() * 4);
+        // SPIRV-Cross (the reflection) and the driver trust their input: a damaged module crashes them.
+        compiler::validateSpirv(words, spec.shader.string());
         return {words, compiler::reflectSpirv(words, spec.entry, spec.shader.string())};
     }
     compiler::CompileOptions options;
@@ -61,7 +64,13 @@ public:
                    program.reflection.workgroupSize[0], program.reflection.workgroupSize[1],
                    program.reflection.workgroupSize[2]);
         fmt::print(out_, "device   {}{}\n", context_.deviceInfo().name, context_.validationEnabled() ? ", validation on" : "");
-        vulkan::ComputeProgram compute(context_, program.spirv, program.reflection, spec_.specialization);
+        vulkan::ComputeProgram compute = [&] {
+            try {
+                return vulkan::ComputeProgram(context_, program.spirv, program.reflection, spec_.specialization);
+            } catch (const vulkan::VulkanError& error) {
+                throw RunError(spec_.shader.string() + ": error: " + error.what());
+            }
+        }();
         for (const auto& resource : spec_.resources) makeAndBind(resource, compute);
         if (program.reflection.pushConstantSize > 0)
             compute.setPushConstants(vulkan::packBlock(program.reflection.pushConstantBlock, program.reflection.pushConstants,

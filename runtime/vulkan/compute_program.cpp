@@ -89,8 +89,13 @@ ComputeProgram::ComputeProgram(const VulkanContext& context, const std::vector<u
                                                     data.data());
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module,
                                                   reflection_.entryPoint.c_str(), &specializationInfo);
-    pipeline_ = vk::raii::Pipeline(context.device(), context.pipelineCache(),
-                                   vk::ComputePipelineCreateInfo({}, stage, *pipelineLayout_));
+    try {
+        pipeline_ = vk::raii::Pipeline(context.device(), context.pipelineCache(),
+                                       vk::ComputePipelineCreateInfo({}, stage, *pipelineLayout_));
+    } catch (const vk::SystemError& error) {
+        throw VulkanError("the driver could not build a compute pipeline of entry point '" + reflection_.entryPoint +
+                          "' from SPIR-V that passed spirv-val (" + error.what() + ")");
+    }
 
     if (setCount > 0) {
         std::vector<vk::DescriptorPoolSize> sizes;

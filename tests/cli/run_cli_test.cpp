@@ -87,6 +87,13 @@ TEST_F(RunCli, TheLutExamplePassesAndSavesItsOutput) {
     EXPECT_TRUE(fs::exists(folder / "brdf_lut.npy"));
 }
 
+// Run as it is committed, from its own folder's relative paths, with the validation layer on.
+TEST_F(RunCli, ThePbrFunctionsExamplePassesWithinItsTolerance) {
+    const auto result = runProcess({IBLKIT_EXECUTABLE, "run", "docs/examples/pbr_functions.run.json", "--validate"});
+    ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_NE(result.out.find("PASS Results: 32 values within abs 1e-05"), std::string::npos) << result.out;
+}
+
 TEST_F(RunCli, AFailedExpectationNamesItsWorstValueAndExitsWith3) {
     auto run = fastPrefilter();
     run["expect"][0]["fill"] = {1, 1, 1, 0.5};
@@ -149,6 +156,35 @@ TEST_F(RunCli, AMissingDataFile) {
     run["resources"]["EnvMap"].erase("fill");
     run["resources"]["EnvMap"]["file"] = "env.bin";
     expectError(run, "env.bin: error: no such data file");
+}
+
+// A module whose first OpConstant names a result id past the module's bound: SPIRV-Cross, asked
+// to reflect it, dereferenced it and crashed. The validator now refuses it first, in one line.
+TEST_F(RunCli, ADamagedSpirvModuleIsRefusedByTheValidatorNotCrashedOn) {
+    std::ofstream(folder / "double.hlsl") << "RWStructuredBuffer<float> Out;\n"
+                                            "[numthreads(1, 1, 1)] void main(uint3 id : SV_DispatchThreadId) "
+                                            "{ Out[id.x] = id.x * 2.f; }\n";
+    const auto compiled = runProcess({IBLKIT_EXECUTABLE, "compile", (folder / "double.hlsl").string(), "-o",
+                                      (folder / "double.spv").string()});
+    ASSERT_EQ(compiled.exitCode, 0) << compiled.err;
+    std::ifstream in(folder / "double.spv", std::ios::binary);
+    std::vector<uint32_t> words(fs::file_size(folder / "double.spv") / 4);
+    in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
+    constexpr uint32_t kOpConstant = 43;
+    size_t at = 5;
+    while (at < words.size() && (words[at] & 0xFFFF) != kOpConstant) at += words[at] >> 16;
+    ASSERT_LT(at + 2, words.size()) << "no OpConstant in the module";
+    words[at + 2] |= 0x0E000000u; // its result id, far past the bound
+    std::ofstream(folder / "damaged.spv", std::ios::binary)
+        .write(reinterpret_cast<const char*>(words.data()), std::streamsize(words.size() * 4));
+
+    const json run = {{"shader", (folder / "damaged.spv").string()},
+                      {"resources", {{"Out", {{"kind", "buffer"}, {"count", 4}}}}},
+                      {"dispatch", {{"threads", {4, 1, 1}}}}};
+    const auto result = iblkitRun(run);
+    EXPECT_EQ(result.exitCode, 1) << "a signal or an abort ends a process otherwise: " << result.err;
+    EXPECT_NE(result.err.find("damaged.spv: error: the SPIR-V is not valid for Vulkan 1.1"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
 } // namespace
