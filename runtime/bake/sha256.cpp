@@ -1,13 +1,10 @@
 #include "sha256.hpp"
 
 #include "bake_error.hpp"
+#include "files.hpp"
 
 #include <openssl/evp.h>
 
-#include <array>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <memory>
 
 namespace iblkit::bake {
@@ -43,12 +40,7 @@ std::string sha256Hex(std::span<const std::byte> bytes) {
 }
 
 std::string sha256OfFile(const std::filesystem::path& path) {
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) throw BakeError("cannot open '" + path.string() + "': " + std::strerror(errno));
-    Sha256 digest;
-    std::array<char, 1 << 16> chunk;
-    while (stream.read(chunk.data(), chunk.size()) || stream.gcount() > 0) digest.add(chunk.data(), size_t(stream.gcount()));
-    return digest.hex();
+    return sha256Hex(image_io::readFileBytes(path)); // refuses devices and pipes, which never end
 }
 
 } // namespace iblkit::bake

@@ -4,6 +4,7 @@
 #include "diagnostics.hpp"
 #include "glslang_process.hpp"
 #include "hlsl_register_resolver.hpp"
+#include "bounded_child.hpp"
 #include "include_resolver.hpp"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -31,6 +32,7 @@ std::string preambleOf(const CompileOptions& options) {
 
 [[noreturn]] void failWith(const std::string& log, const IncludeResolver& files, const std::string& sourceName,
                            const std::string& fallback) {
+    if (files.cycle()) throw CompileError(*files.cycle()); // glslang only says it could not include
     // glslang's HLSL frontend cascades after its first error; the first is the real one.
     const auto diagnostics = parseGlslangLog(log, files, sourceName);
     throw CompileError(diagnostics.errors.empty() ? sourceName + ": error: " + fallback : diagnostics.errors.front());
@@ -61,8 +63,7 @@ struct ConfiguredShader {
     const char* nameText = nullptr;
 };
 
-ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
-    if (options.stage) return *options.stage;
+std::string preprocess(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
     IncludeResolver includes(options.includeDirs, &options.virtualFiles);
     includes.addSource(sourceName, text);
     ConfiguredShader configured(EShLangCompute, options, sourceName, text);
@@ -70,7 +71,18 @@ ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName
     if (!configured.shader.preprocess(GetDefaultResources(), kHlslVersion, ENoProfile, false, false, kMessages,
                                       &preprocessed, includes))
         failWith(configured.shader.getInfoLog(), includes, sourceName, "preprocessing failed");
-    return deduceStage(preprocessed, options.entryPoint, sourceName);
+    return preprocessed;
+}
+
+ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
+    if (options.boundPreprocessing) {
+        const auto preprocessed = runInBoundedChild([&] { return preprocess(options, sourceName, text); }, {}, sourceName,
+                                                    "preprocessing",
+                                                    ": a macro that expands without bound, or an #include that never ends?");
+        return options.stage ? *options.stage : deduceStage(preprocessed, options.entryPoint, sourceName);
+    }
+    if (options.stage) return *options.stage;
+    return deduceStage(preprocess(options, sourceName, text), options.entryPoint, sourceName);
 }
 
 } // namespace

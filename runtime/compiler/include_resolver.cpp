@@ -1,5 +1,6 @@
 #include "include_resolver.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -31,7 +32,10 @@ IncludeResolver::IncludeResolver(std::vector<std::filesystem::path> includeDirs,
                                  const std::map<std::string, std::string>* virtualFiles)
     : includeDirs_(std::move(includeDirs)), virtualFiles_(virtualFiles) {}
 
-void IncludeResolver::addSource(const std::string& name, std::string text) { texts_[name] = std::move(text); }
+void IncludeResolver::addSource(const std::string& name, std::string text) {
+    texts_[name] = std::move(text);
+    open_.push_back(name);
+}
 
 const std::string* IncludeResolver::sourceText(const std::string& name) const {
     auto it = texts_.find(name);
@@ -68,6 +72,10 @@ bool IncludeResolver::readVirtualFile(const std::string& name, std::string& text
 IncludeResolver::IncludeResult* IncludeResolver::load(const std::filesystem::path& path, const std::string& headerName,
                                                       const char* includerName) {
     const std::string name = path.lexically_normal().string();
+    if (std::count(open_.begin(), open_.end(), name) >= 2) {
+        if (!cycle_) cycle_ = cycleMessage(name, includerName, headerName);
+        return nullptr;
+    }
     std::string text;
     if (!texts_.count(name)) {
         if (!readVirtualFile(name, text) && !readFile(path, text)) return nullptr;
@@ -79,9 +87,27 @@ IncludeResolver::IncludeResult* IncludeResolver::load(const std::filesystem::pat
         sites_[name] = IncludeSite{includerName, includerText ? lineOfInclude(*includerText, headerName) : 1};
     }
     const std::string& stored = texts_[name];
+    open_.push_back(name);
     return new IncludeResult(name, stored.data(), stored.size(), nullptr);
 }
 
-void IncludeResolver::releaseInclude(IncludeResult* result) { delete result; }
+std::string IncludeResolver::cycleMessage(const std::string& name, const char* includerName,
+                                          const std::string& headerName) const {
+    const auto last = std::find(open_.rbegin(), open_.rend(), name).base() - 1;
+    std::string chain;
+    for (auto it = last; it != open_.end(); ++it) chain += *it + " → ";
+    const std::string* includerText = sourceText(includerName);
+    const int line = includerText ? lineOfInclude(*includerText, headerName) : 1;
+    return std::string(includerName) + ":" + std::to_string(line) + ": error: #include cycle: " + chain + name +
+           " (a file that includes itself, directly or through others, with no include guard)";
+}
+
+void IncludeResolver::releaseInclude(IncludeResult* result) {
+    if (result) {
+        const auto open = std::find(open_.rbegin(), open_.rend(), result->headerName);
+        if (open != open_.rend()) open_.erase(std::next(open).base());
+    }
+    delete result;
+}
 
 } // namespace iblkit::compiler

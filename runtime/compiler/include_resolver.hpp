@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,16 +32,22 @@ public:
     const std::vector<std::string>& includedFiles() const { return includedFiles_; }
     const std::string* sourceText(const std::string& name) const;
     const IncludeSite* includeSite(const std::string& name) const;
+    // "b.hlsl:3: error: #include cycle: a.hlsl → b.hlsl → a.hlsl" once a file was included while
+    // already open twice (an include guard stops a cycle at its second entry; without one it never ends).
+    const std::optional<std::string>& cycle() const { return cycle_; }
 
 private:
     bool readVirtualFile(const std::string& name, std::string& text) const;
     IncludeResult* load(const std::filesystem::path& path, const std::string& headerName, const char* includerName);
+    std::string cycleMessage(const std::string& name, const char* includerName, const std::string& headerName) const;
 
     std::vector<std::filesystem::path> includeDirs_;
     const std::map<std::string, std::string>* virtualFiles_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, IncludeSite> sites_;
     std::vector<std::string> includedFiles_;
+    std::vector<std::string> open_; // the files being read, outermost first
+    std::optional<std::string> cycle_;
 };
 
 } // namespace iblkit::compiler

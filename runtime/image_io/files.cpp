@@ -35,11 +35,14 @@ private:
 } // namespace
 
 std::vector<std::byte> readFileBytes(const std::filesystem::path& path) {
-    const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    // O_NONBLOCK: opening a FIFO would wait for a writer. A device (/dev/zero) has no end.
+    const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (file.get() < 0) fail("cannot open", path, errno);
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) fail("cannot open", path, errno);
     if (S_ISDIR(status.st_mode)) fail("cannot open", path, EISDIR);
+    if (!S_ISREG(status.st_mode))
+        throw ImageError("cannot open " + quoted(path) + ": not a regular file (a device, a pipe or a socket)");
     std::vector<std::byte> bytes(size_t(status.st_size));
     size_t done = 0;
     while (done < bytes.size()) {

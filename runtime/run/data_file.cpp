@@ -84,7 +84,9 @@ std::string npyBytes(const std::vector<float>& values, const std::vector<size_t>
 
 std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) throw RunError(path.string() + ": error: no such data file");
+    if (!std::filesystem::exists(path, error)) throw RunError(path.string() + ": error: no such data file");
+    if (!std::filesystem::is_regular_file(path, error))
+        throw RunError(path.string() + ": error: the data file is not a regular file (a folder, a device or a pipe)");
     if (isNpy(path)) return readNpy(path);
     const std::string bytes = slurp(path);
     if (bytes.size() % format.bytesPerChannel != 0)

@@ -43,6 +43,7 @@ Program loadShader(const RunSpec& spec) {
     }
     compiler::CompileOptions options;
     options.source = spec.shader;
+    options.boundPreprocessing = true;
     options.entryPoint = spec.entry;
     options.includeDirs = spec.includeDirs;
     options.defines = spec.defines;

@@ -171,6 +171,9 @@ private:
 } // namespace
 
 RunSpec readRunFile(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw RunError(path.string() + ": error: the run file is not a regular file (a folder, a device or a pipe)");
     std::ifstream stream(path);
     if (!stream) throw RunError(path.string() + ": error: cannot read the run file");
     std::ostringstream text;

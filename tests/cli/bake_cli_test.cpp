@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <limits>
+#include <sys/stat.h>
 
 namespace iblkit::testing {
 namespace {
@@ -117,6 +118,21 @@ TEST_F(BakeCli, MissingCorruptAndUnsupportedInputsAreRefused) {
     expectFailure(small({"bake", at("sky.png"), "-o", at("out")}), "unsupported image format");
     scratch.write("faces/px.hdr", radianceHdr(16, 16, 129));
     expectFailure(small({"bake", at("faces"), "-o", at("out")}), "no -X face");
+}
+
+// A link to /dev/zero named .hdr had the bake hash an endless file; a FIFO blocked its open.
+// Neither is a file: both are refused at once, in one line (the killer stops a regression).
+TEST_F(BakeCli, DevicesAndPipesNamedLikeImagesAreRefused) {
+    std::filesystem::create_symlink("/dev/zero", at("zero.hdr"));
+    std::filesystem::create_symlink("/dev/urandom", at("random.exr"));
+    ASSERT_EQ(mkfifo(at("pipe.exr").c_str(), 0600), 0);
+    for (const char* input : {"zero.hdr", "random.exr", "pipe.exr"}) {
+        const auto result = iblkit(small({"bake", at(input), "-o", at("out")}), 60);
+        EXPECT_EQ(result.exitCode, 1) << input << ": " << result.err;
+        EXPECT_NE(result.err.find(std::string(input) + "': not a regular file"), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(at("out")));
 }
 
 TEST_F(BakeCli, APanoramaThatIsNotTwoToOneIsRefused) {

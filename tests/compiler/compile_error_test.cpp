@@ -10,10 +10,11 @@ namespace {
 
 class CompileErrors : public ::testing::Test {
 protected:
-    std::string errorOf(const std::filesystem::path& source, const std::string& entry = "main") {
+    std::string errorOf(const std::filesystem::path& source, const std::string& entry = "main", bool bounded = false) {
         CompileOptions options;
         options.source = source;
         options.entryPoint = entry;
+        options.boundPreprocessing = bounded;
         options.includeDirs.push_back(folder.path() / "include");
         try {
             compileShader(options);
@@ -71,6 +72,51 @@ RWTexture2D<float4> B : register(u1);
 void main(uint3 id : SV_DispatchThreadID) { A[id.xy] = 1; B[id.xy] = 2; }
 )");
     EXPECT_EQ(errorOf(source), source.string() + ": error: register u1, space0 is used by both 'A' and 'B'");
+}
+
+// Both hung the compiler, memory growing without end; the cycle is now named where it closes.
+TEST_F(CompileErrors, AFileThatIncludesItselfIsAnIncludeCycle) {
+    const auto source = folder.write("self.hlsl", std::string("#include \"self.hlsl\"\n") + kValidBody);
+    EXPECT_EQ(errorOf(source), source.string() + ":1: error: #include cycle: " + source.string() + " → " +
+                                   source.string() + " (a file that includes itself, directly or through others, "
+                                                     "with no include guard)");
+}
+
+TEST_F(CompileErrors, TwoFilesThatIncludeEachOtherAreAnIncludeCycle) {
+    const auto a = folder.write("a.hlsl", std::string("#include \"b.hlsl\"\n") + kValidBody);
+    const auto b = folder.write("b.hlsl", "// b\n#include \"a.hlsl\"\n");
+    const auto message = errorOf(a);
+    EXPECT_EQ(message.rfind(b.string() + ":2: error: #include cycle: " + a.string() + " → " + b.string() + " → " +
+                                a.string(), 0),
+              0u) << message;
+}
+
+// An include guard ends a cycle at its second entry, as in C: such sources compile.
+TEST_F(CompileErrors, AGuardedIncludeCycleCompiles) {
+    folder.write("include/ga.fxh", "#ifndef GA\n#define GA\n#include \"gb.fxh\"\n#endif\n");
+    folder.write("include/gb.fxh", "#ifndef GB\n#define GB\n#include \"ga.fxh\"\nfloat f() { return 1; }\n#endif\n");
+    CompileOptions options;
+    options.source = folder.write("guarded.hlsl", "#include \"ga.fxh\"\nRWStructuredBuffer<float> O;\n"
+                                                  "[numthreads(1, 1, 1)] void main() { O[0] = f(); }\n");
+    options.includeDirs.push_back(folder.path() / "include");
+    EXPECT_NO_THROW(compileShader(options));
+}
+
+// Each macro doubles the one before: X39 stands for 2^39 tokens, which glslang expanded until
+// it was stopped. Bounded, the preprocessing ends at its CPU limit (5 s) with an error.
+TEST_F(CompileErrors, AMacroThatExpandsWithoutBoundEndsAtTheLimit) {
+    std::string text = "#define X0 1 +\n";
+    for (int i = 1; i < 40; ++i) text += "#define X" + std::to_string(i) + " X" + std::to_string(i - 1) + " X" + std::to_string(i - 1) + "\n";
+    text += "RWStructuredBuffer<float> O;\n[numthreads(1, 1, 1)] void main() { O[0] = X39 1; }\n";
+    const auto source = folder.write("doubling.hlsl", text);
+    const auto message = errorOf(source, "main", true);
+    EXPECT_EQ(message.rfind(source.string() + ": error: preprocessing ", 0), 0u) << message;
+    EXPECT_NE(message.find("a macro that expands without bound"), std::string::npos) << message;
+}
+
+TEST_F(CompileErrors, BoundedPreprocessingReportsTheSameErrors) {
+    const auto source = folder.write("syntax.hlsl", "#include \"Nowhere.fxh\"\n");
+    EXPECT_EQ(errorOf(source, "main", true), errorOf(source));
 }
 
 } // namespace

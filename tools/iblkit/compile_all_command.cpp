@@ -58,7 +58,9 @@ using Outputs = std::vector<std::pair<std::filesystem::path, std::string>>;
 std::string compileForms(const compiler::ManifestShader& entry, const std::set<std::string>& forms,
                          const std::filesystem::path& outputDir, Outputs& outputs) {
     const auto started = std::chrono::steady_clock::now();
-    const auto shader = compiler::compileShader(entry.options);
+    auto options = entry.options;
+    options.boundPreprocessing = true;
+    const auto shader = compiler::compileShader(options);
     for (const auto& warning : shader.warnings) fmt::print(stderr, "{}\n", warning);
     const std::string base = (outputDir / entry.name).string();
     if (forms.count("spirv"))

@@ -33,6 +33,7 @@ struct CompileArguments {
 compiler::CompileOptions toOptions(const CompileArguments& arguments) {
     compiler::CompileOptions options;
     options.source = arguments.source;
+    options.boundPreprocessing = true;
     options.entryPoint = arguments.entry;
     if (!arguments.stage.empty()) {
         options.stage = compiler::parseStageName(arguments.stage);
