@@ -56,7 +56,7 @@ class Executor {
 public:
     Executor(const RunSpec& spec, const RunOptions& options, std::ostream& out)
         : spec_(spec), out_(out), log_(std::make_shared<vulkan::ValidationLog>()),
-          context_({options.device, options.validation, log_}) {}
+          context_({options.device, options.validation, log_, options.timeout, options.onDeviceFailure}) {}
 
     bool run() {
         const auto program = loadShader(spec_);

@@ -2,6 +2,8 @@
 
 #include "run_file.hpp"
 
+#include <chrono>
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -10,6 +12,10 @@ namespace iblkit::run {
 struct RunOptions {
     std::string device;      // see vulkan::ContextOptions
     bool validation = false; // any validation message then fails the run
+    // How long the dispatch (or any upload or download) may take, and what to do when it does
+    // not end in time or the device is lost: see vulkan::ContextOptions.
+    std::chrono::milliseconds timeout = std::chrono::seconds(60);
+    std::function<void(const std::string& message)> onDeviceFailure = {};
 };
 
 // Compiles the shader, makes and fills the resources, dispatches, checks every expectation

@@ -151,7 +151,8 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 VulkanContext::VulkanContext(const ContextOptions& options)
-    : loader_(loadVulkan()), validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
+    : submissionTimeout_(options.submissionTimeout), onDeviceFailure_(options.onDeviceFailure), loader_(loadVulkan()),
+      validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
     const char* validationFromEnvironment = std::getenv("IBLKIT_VALIDATION");
     const bool asked = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");
 #ifdef NDEBUG
@@ -207,11 +208,31 @@ void VulkanContext::submitAndWait(const std::function<void(const vk::raii::Comma
     commands.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
     record(commands);
     commands.end();
-    const vk::raii::Fence fence(device_, vk::FenceCreateInfo());
+    vk::raii::Fence fence(device_, vk::FenceCreateInfo());
     const vk::CommandBuffer handle = *commands;
     queue_.submit(vk::SubmitInfo({}, {}, handle), *fence);
-    if (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
-        throw VulkanError("waiting for the Vulkan device failed");
+    const auto nanoseconds = uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(submissionTimeout_).count());
+    vk::Result waited;
+    try {
+        waited = device_.waitForFences(*fence, VK_TRUE, nanoseconds);
+    } catch (const vk::DeviceLostError&) {
+        waited = vk::Result::eErrorDeviceLost;
+    }
+    if (waited == vk::Result::eSuccess) return;
+    // The device may still be running the commands: freeing them, or the fence, is not allowed.
+    for (auto& buffer : buffers) buffer.release();
+    fence.release();
+    if (waited == vk::Result::eTimeout)
+        failDevice("the device did not finish a submission within " +
+                   std::to_string(std::chrono::duration_cast<std::chrono::seconds>(submissionTimeout_).count()) +
+                   " s: a shader that never ends, or work that needs a longer limit");
+    failDevice("the Vulkan device was lost while it ran a submission (" + vk::to_string(waited) +
+               "): a driver crash or a device reset");
+}
+
+void VulkanContext::failDevice(const std::string& message) const {
+    if (onDeviceFailure_) onDeviceFailure_(message);
+    throw VulkanError(message);
 }
 
 } // namespace iblkit::vulkan

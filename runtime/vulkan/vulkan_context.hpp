@@ -2,6 +2,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -39,6 +40,13 @@ struct ContextOptions {
     // whenever the layer is installed.
     bool validation = false;
     std::shared_ptr<ValidationLog> validationLog;
+    // How long one submission may run before the wait for it gives up: a shader that never ends.
+    std::chrono::milliseconds submissionTimeout = std::chrono::minutes(10);
+    // Called with the message when a submission times out or the device is lost, before
+    // VulkanError is thrown. The device may still be running that submission, so what was made
+    // on the context cannot safely be destroyed; a program may end here (the command-line tool
+    // does). The context is unusable afterwards.
+    std::function<void(const std::string& message)> onDeviceFailure = {};
 };
 
 // Every Vulkan device the loader sees. Throws VulkanError when there is none.
@@ -69,6 +77,10 @@ public:
     void submitAndWait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
 
 private:
+    [[noreturn]] void failDevice(const std::string& message) const;
+
+    std::chrono::milliseconds submissionTimeout_;
+    std::function<void(const std::string&)> onDeviceFailure_;
 
     vk::raii::Context loader_;
     std::shared_ptr<ValidationLog> validationLog_;

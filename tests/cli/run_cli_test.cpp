@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -184,6 +185,29 @@ TEST_F(RunCli, ADamagedSpirvModuleIsRefusedByTheValidatorNotCrashedOn) {
     const auto result = iblkitRun(run);
     EXPECT_EQ(result.exitCode, 1) << "a signal or an abort ends a process otherwise: " << result.err;
     EXPECT_NE(result.err.find("damaged.spv: error: the SPIR-V is not valid for Vulkan 1.1"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+// 65535 x 1024 groups of 64 invocations, each 65535 sines: days on lavapipe. The wait for it
+// was unbounded; now the run ends at its --timeout with one line (the killer stops a regression).
+TEST_F(RunCli, AShaderThatDoesNotEndInTimeEndsTheRunWithOneLine) {
+    std::ofstream(folder / "forever.hlsl") << "RWStructuredBuffer<float> Out;\n"
+                                             "[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadId) {\n"
+                                             "    float x = Out[id.x & 3];\n"
+                                             "    for (uint i = 0; i < 65535; ++i) x = sin(x) * 0.5f + Out[i & 3];\n"
+                                             "    Out[id.x & 3] = x;\n}\n";
+    const json run = {{"shader", (folder / "forever.hlsl").string()},
+                      {"resources", {{"Out", {{"kind", "buffer"}, {"count", 4}}}}},
+                      {"dispatch", {{"groups", {65535, 1024, 1}}}}};
+    const auto path = folder / "forever.run.json";
+    std::ofstream(path) << run.dump(2);
+    const auto started = std::chrono::steady_clock::now();
+    const auto result = runProcess({IBLKIT_EXECUTABLE, "run", path.string(), "--timeout", "1"}, {}, 120);
+    const auto seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    EXPECT_EQ(result.exitCode, 1) << result.err;
+    EXPECT_LT(seconds, 60) << "the wait was not bounded";
+    EXPECT_NE(result.err.find("forever.run.json: error: the device did not finish a submission within 1 s"),
+              std::string::npos) << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
