@@ -1,11 +1,11 @@
 #include "run_file.hpp"
 
+#include "json_fields.hpp"
 #include "run_error.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <fstream>
-#include <set>
 #include <sstream>
 
 namespace iblkit::run {
@@ -13,158 +13,162 @@ namespace {
 
 using nlohmann::json;
 
-// The value under key, or an empty object or array when absent (never a temporary to iterate).
-const json& memberOr(const json& object, const char* key, const json& empty) {
-    return object.contains(key) ? object.at(key) : empty;
-}
-const json kNoObject = json::object();
-const json kNoArray = json::array();
+constexpr uint64_t kLargest32 = 0xFFFFFFFFu;
 
 class Reader {
 public:
-    explicit Reader(std::filesystem::path file) : file_(std::move(file)), folder_(file_.parent_path()) {}
+    explicit Reader(std::filesystem::path file) : fields_(file), folder_(file.parent_path()) {}
 
-    [[noreturn]] void fail(const std::string& where, const std::string& why) const {
-        throw RunError(file_.string() + ": error: " + where + ": " + why);
-    }
-
-    std::filesystem::path path(const json& value) const { return folder_ / value.get<std::string>(); }
-
-    void allowOnly(const json& object, const std::string& where, std::initializer_list<const char*> keys) const {
-        if (!object.is_object()) fail(where, "must be an object");
-        const std::set<std::string> allowed(keys.begin(), keys.end());
-        for (const auto& [key, value] : object.items())
-            if (!allowed.count(key)) fail(where, "unknown key '" + key + "'");
-    }
-
-    static std::vector<double> numbers(const json& value) {
-        if (value.is_number()) return {value.get<double>()};
-        return value.get<std::vector<double>>();
-    }
-
-    std::array<uint32_t, 3> triple(const json& value, const std::string& where) const {
-        auto list = value.get<std::vector<int64_t>>();
-        if (list.empty() || list.size() > 3) fail(where, "takes 1 to 3 numbers");
-        list.resize(3, 1);
-        std::array<uint32_t, 3> out{};
-        for (int i = 0; i < 3; ++i) {
-            if (list[i] < 0) fail(where, "negative size");
-            out[i] = static_cast<uint32_t>(list[i]);
+    RunSpec read(const json& root, const std::filesystem::path& file) const {
+        fields_.objectOf(root, "the run file", {"shader", "entry", "include", "defines", "image_formats", "specialization",
+                                                "push_constants", "resources", "dispatch", "expect", "save", "comment"});
+        RunSpec spec;
+        spec.runFile = file;
+        if (!root.contains("shader")) fields_.fail("the run file", "needs a \"shader\"");
+        spec.shader = path(root.at("shader"), "shader");
+        if (root.contains("entry")) spec.entry = fields_.text(root.at("entry"), "entry");
+        if (root.contains("include"))
+            for (const auto& dir : fields_.textArray(root.at("include"), "include")) spec.includeDirs.push_back(folder_ / dir);
+        if (root.contains("defines")) spec.defines = fields_.textMap(root.at("defines"), "defines");
+        if (root.contains("image_formats")) spec.imageFormats = fields_.textMap(root.at("image_formats"), "image_formats");
+        if (root.contains("specialization"))
+            for (const auto& [name, value] : fields_.object(root.at("specialization"), "specialization").items())
+                spec.specialization[name] = fields_.number(value, "specialization." + name);
+        if (root.contains("push_constants"))
+            for (const auto& [member, value] : fields_.object(root.at("push_constants"), "push_constants").items())
+                spec.pushConstants[member] = fields_.numbers(value, "push_constants." + member);
+        if (root.contains("resources"))
+            for (const auto& [name, object] : fields_.object(root.at("resources"), "resources").items())
+                spec.resources.push_back(resource(name, object));
+        readDispatch(root, spec);
+        if (root.contains("expect")) {
+            const auto& expectations = fields_.array(root.at("expect"), "expect");
+            for (size_t index = 0; index < expectations.size(); ++index)
+                spec.expectations.push_back(expectation(expectations[index], index));
         }
-        return out;
+        if (root.contains("save"))
+            for (const auto& [name, file] : fields_.object(root.at("save"), "save").items())
+                spec.saves[name] = path(file, "save." + name);
+        return spec;
     }
 
-    ValueSource source(const json& object) const {
+private:
+    std::filesystem::path path(const json& value, const std::string& where) const {
+        return folder_ / fields_.text(value, where);
+    }
+
+    void readDispatch(const json& root, RunSpec& spec) const {
+        if (!root.contains("dispatch")) fields_.fail("the run file", "needs a \"dispatch\"");
+        const auto& dispatch = fields_.objectOf(root.at("dispatch"), "dispatch", {"threads", "groups"});
+        if (dispatch.contains("threads") == dispatch.contains("groups"))
+            fields_.fail("dispatch", "needs exactly one of \"threads\" and \"groups\"");
+        const bool threads = dispatch.contains("threads");
+        const std::string where = threads ? "dispatch.threads" : "dispatch.groups";
+        auto counts = fields_.wholeArray(dispatch.at(threads ? "threads" : "groups"), where, 1, 3, 0, kLargest32);
+        counts.resize(3, 1);
+        const std::array<uint32_t, 3> triple{uint32_t(counts[0]), uint32_t(counts[1]), uint32_t(counts[2])};
+        (threads ? spec.threads : spec.groups) = triple;
+    }
+
+    // At most one of fill, values and file.
+    ValueSource source(const json& object, const std::string& where) const {
         ValueSource source;
-        if (object.contains("fill")) source.fill = numbers(object.at("fill"));
-        if (object.contains("values")) source.values = object.at("values").get<std::vector<double>>();
-        if (object.contains("file")) source.file = path(object.at("file"));
+        if (int(object.contains("fill")) + int(object.contains("values")) + int(object.contains("file")) > 1)
+            fields_.fail(where, "takes one of \"fill\", \"values\" and \"file\", not several");
+        if (object.contains("fill")) source.fill = fields_.numbers(object.at("fill"), where + ".fill");
+        if (object.contains("values")) source.values = fields_.numberArray(object.at("values"), where + ".values");
+        if (object.contains("file")) source.file = path(object.at("file"), where + ".file");
         return source;
+    }
+
+    void readBuffer(const json& object, const std::string& where, ResourceSpec& spec) const {
+        fields_.objectOf(object, where, {"kind", "type", "count", "size_bytes", "fill", "values", "file"});
+        if (object.contains("type")) spec.elementType = fields_.oneOf(object.at("type"), where + ".type", {"float", "uint", "int"});
+        if (object.contains("count") && object.contains("size_bytes"))
+            fields_.fail(where, "takes \"count\" or \"size_bytes\", not both");
+        if (object.contains("count")) spec.count = fields_.whole(object.at("count"), where + ".count", 1, kLargest32);
+        if (object.contains("size_bytes"))
+            spec.sizeBytes = fields_.whole(object.at("size_bytes"), where + ".size_bytes", 4, kLargest32);
+    }
+
+    void readImage(const json& object, const std::string& where, ResourceSpec& spec) const {
+        fields_.objectOf(object, where, {"kind", "dim", "format", "size", "layers", "mips", "mip", "fill", "values", "file"});
+        if (!object.contains("format")) fields_.fail(where, "needs a \"format\"");
+        spec.format = fields_.text(object.at("format"), where + ".format");
+        if (spec.format.empty()) fields_.fail(where + ".format", "must not be empty");
+        spec.dimension = spec.kind == "cube" ? "cube" : "2d";
+        if (object.contains("dim")) spec.dimension = fields_.oneOf(object.at("dim"), where + ".dim", {"2d", "2d_array", "cube"});
+        if (!object.contains("size")) fields_.fail(where, "needs a \"size\"");
+        const auto size = fields_.wholeArray(object.at("size"), where + ".size", 1, 2, 1, kLargest32);
+        spec.width = uint32_t(size[0]);
+        spec.height = uint32_t(size.size() > 1 ? size[1] : size[0]);
+        spec.layers = spec.dimension == "cube" ? 6 : 1;
+        if (object.contains("layers") && spec.dimension != "cube")
+            spec.layers = uint32_t(fields_.whole(object.at("layers"), where + ".layers", 1, kLargest32));
+        if (object.contains("mips") && object.at("mips").is_string()) {
+            if (object.at("mips") != "full") fields_.fail(where + ".mips", "a number or \"full\"");
+            spec.mips = 0; // the full chain, worked out when the size is known
+        } else if (object.contains("mips")) {
+            spec.mips = uint32_t(fields_.whole(object.at("mips"), where + ".mips", 1, 32));
+        }
+        if (object.contains("mip")) spec.mip = uint32_t(fields_.whole(object.at("mip"), where + ".mip", 0, 31));
     }
 
     ResourceSpec resource(const std::string& name, const json& object) const {
         const std::string where = "resources." + name;
-        if (!object.is_object() || !object.contains("kind")) fail(where, "needs a \"kind\"");
+        fields_.object(object, where);
+        if (!object.contains("kind")) fields_.fail(where, "needs a \"kind\"");
         ResourceSpec spec;
         spec.name = name;
-        spec.kind = object.at("kind").get<std::string>();
+        spec.kind = fields_.oneOf(object.at("kind"), where + ".kind", {"buffer", "cbuffer", "image", "cube", "storage_image", "sampler"});
         if (spec.kind == "buffer") {
-            allowOnly(object, where, {"kind", "type", "count", "size_bytes", "fill", "values", "file"});
-            spec.elementType = object.value("type", "float");
-            spec.count = object.value("count", size_t(0));
-            spec.sizeBytes = object.value("size_bytes", size_t(0));
+            readBuffer(object, where, spec);
         } else if (spec.kind == "cbuffer") {
-            allowOnly(object, where, {"kind", "members"});
-            for (const auto& [member, value] : memberOr(object, "members", kNoObject).items())
-                spec.members[member] = numbers(value);
-        } else if (spec.kind == "image" || spec.kind == "cube" || spec.kind == "storage_image") {
-            allowOnly(object, where, {"kind", "dim", "format", "size", "layers", "mips", "mip", "fill", "values", "file"});
-            spec.format = object.value("format", "");
-            if (spec.format.empty()) fail(where, "needs a \"format\"");
-            spec.dimension = spec.kind == "cube" ? "cube" : object.value("dim", "2d");
-            if (spec.dimension != "2d" && spec.dimension != "2d_array" && spec.dimension != "cube")
-                fail(where, "unknown dim '" + spec.dimension + "' (2d, 2d_array, cube)");
-            if (!object.contains("size")) fail(where, "needs a \"size\"");
-            const auto size = triple(object.at("size"), where + ".size");
-            spec.width = size[0];
-            spec.height = object.at("size").size() > 1 ? size[1] : size[0];
-            spec.layers = spec.dimension == "cube" ? 6 : object.value("layers", 1u);
-            if (object.contains("mips") && object.at("mips").is_string()) {
-                if (object.at("mips") != "full") fail(where + ".mips", "a number or \"full\"");
-                spec.mips = 0; // the full chain, worked out when the size is known
-            } else {
-                spec.mips = object.value("mips", 1u);
-            }
-            spec.mip = object.value("mip", 0u);
+            fields_.objectOf(object, where, {"kind", "members"});
+            if (object.contains("members"))
+                for (const auto& [member, value] : fields_.object(object.at("members"), where + ".members").items())
+                    spec.members[member] = fields_.numbers(value, where + ".members." + member);
         } else if (spec.kind == "sampler") {
-            allowOnly(object, where, {"kind", "filter", "mipmap", "address"});
-            spec.filter = object.value("filter", "linear");
-            spec.mipmap = object.value("mipmap", "linear");
-            spec.address = object.value("address", "clamp");
+            fields_.objectOf(object, where, {"kind", "filter", "mipmap", "address"});
+            if (object.contains("filter")) spec.filter = fields_.oneOf(object.at("filter"), where + ".filter", {"nearest", "linear"});
+            if (object.contains("mipmap")) spec.mipmap = fields_.oneOf(object.at("mipmap"), where + ".mipmap", {"nearest", "linear"});
+            if (object.contains("address"))
+                spec.address = fields_.oneOf(object.at("address"), where + ".address", {"clamp", "repeat", "mirror"});
         } else {
-            fail(where, "unknown kind '" + spec.kind + "' (buffer, cbuffer, image, cube, storage_image, sampler)");
+            readImage(object, where, spec);
         }
-        spec.initial = source(object);
+        spec.initial = source(object, where);
         return spec;
     }
 
     Expectation expectation(const json& object, size_t index) const {
         const std::string where = "expect[" + std::to_string(index) + "]";
-        allowOnly(object, where, {"resource", "mip", "layer", "fill", "values", "file", "range", "tolerance"});
-        if (!object.contains("resource")) fail(where, "needs a \"resource\"");
+        fields_.objectOf(object, where, {"resource", "mip", "layer", "fill", "values", "file", "range", "tolerance"});
+        if (!object.contains("resource")) fields_.fail(where, "needs a \"resource\"");
         Expectation expectation;
-        expectation.resource = object.at("resource").get<std::string>();
-        if (object.contains("mip")) expectation.mip = object.at("mip").get<uint32_t>();
-        if (object.contains("layer")) expectation.layer = object.at("layer").get<uint32_t>();
-        expectation.expected = source(object);
+        expectation.resource = fields_.text(object.at("resource"), where + ".resource");
+        if (object.contains("mip")) expectation.mip = uint32_t(fields_.whole(object.at("mip"), where + ".mip", 0, 31));
+        if (object.contains("layer"))
+            expectation.layer = uint32_t(fields_.whole(object.at("layer"), where + ".layer", 0, kLargest32));
+        expectation.expected = source(object, where);
         if (object.contains("range")) {
-            const auto range = object.at("range").get<std::vector<double>>();
-            if (range.size() != 2 || range[0] > range[1]) fail(where + ".range", "takes [min, max]");
+            const auto range = fields_.numberArray(object.at("range"), where + ".range");
+            if (range.size() != 2 || range[0] > range[1]) fields_.fail(where + ".range", "takes [min, max]");
             expectation.range = std::array<double, 2>{range[0], range[1]};
         }
         if (expectation.expected.given() == expectation.range.has_value())
-            fail(where, "needs exactly one of \"fill\", \"values\", \"file\" or \"range\"");
+            fields_.fail(where, "needs exactly one of \"fill\", \"values\", \"file\" or \"range\"");
         if (object.contains("tolerance")) {
-            const auto& tolerance = object.at("tolerance");
-            allowOnly(tolerance, where + ".tolerance", {"abs", "rel", "ulp"});
-            if (tolerance.contains("abs")) expectation.tolerance.absolute = tolerance.at("abs").get<double>();
-            if (tolerance.contains("rel")) expectation.tolerance.relative = tolerance.at("rel").get<double>();
-            if (tolerance.contains("ulp")) expectation.tolerance.ulp = tolerance.at("ulp").get<double>();
+            const auto& tolerance = fields_.objectOf(object.at("tolerance"), where + ".tolerance", {"abs", "rel", "ulp"});
+            const auto bound = [&](const char* key) { return fields_.nonNegative(tolerance.at(key), where + ".tolerance." + key); };
+            if (tolerance.contains("abs")) expectation.tolerance.absolute = bound("abs");
+            if (tolerance.contains("rel")) expectation.tolerance.relative = bound("rel");
+            if (tolerance.contains("ulp")) expectation.tolerance.ulp = bound("ulp");
         }
         return expectation;
     }
 
-    RunSpec read(const json& root) const {
-        allowOnly(root, "the run file", {"shader", "entry", "include", "defines", "image_formats", "specialization",
-                                         "push_constants", "resources", "dispatch", "expect", "save", "comment"});
-        RunSpec spec;
-        spec.runFile = file_;
-        if (!root.contains("shader")) fail("the run file", "needs a \"shader\"");
-        spec.shader = path(root.at("shader"));
-        spec.entry = root.value("entry", "main");
-        for (const auto& dir : memberOr(root, "include", kNoArray)) spec.includeDirs.push_back(path(dir));
-        spec.defines = root.value("defines", std::map<std::string, std::string>{});
-        spec.imageFormats = root.value("image_formats", std::map<std::string, std::string>{});
-        spec.specialization = root.value("specialization", std::map<std::string, double>{});
-        for (const auto& [member, value] : memberOr(root, "push_constants", kNoObject).items())
-            spec.pushConstants[member] = numbers(value);
-        for (const auto& [name, object] : memberOr(root, "resources", kNoObject).items())
-            spec.resources.push_back(resource(name, object));
-        if (!root.contains("dispatch")) fail("the run file", "needs a \"dispatch\"");
-        const auto& dispatch = root.at("dispatch");
-        allowOnly(dispatch, "dispatch", {"threads", "groups"});
-        if (dispatch.contains("threads") == dispatch.contains("groups"))
-            fail("dispatch", "needs exactly one of \"threads\" and \"groups\"");
-        if (dispatch.contains("threads")) spec.threads = triple(dispatch.at("threads"), "dispatch.threads");
-        else spec.groups = triple(dispatch.at("groups"), "dispatch.groups");
-        size_t index = 0;
-        for (const auto& object : memberOr(root, "expect", kNoArray)) spec.expectations.push_back(expectation(object, index++));
-        for (const auto& [name, file] : memberOr(root, "save", kNoObject).items()) spec.saves[name] = path(file);
-        return spec;
-    }
-
-private:
-    std::filesystem::path file_;
+    JsonFields fields_;
     std::filesystem::path folder_;
 };
 
@@ -180,7 +184,7 @@ RunSpec readRunFile(const std::filesystem::path& path) {
     text << stream.rdbuf();
     const Reader reader(path);
     try {
-        return reader.read(json::parse(text.str()));
+        return reader.read(json::parse(text.str()), path);
     } catch (const json::parse_error& error) {
         throw RunError(path.string() + ": error: not valid JSON: " + error.what());
     } catch (const json::exception& error) {

@@ -59,7 +59,7 @@ TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
     EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1], "groups": [1]}})").find("exactly one of"), std::string::npos);
     EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "dispath": 1})").find("unknown key 'dispath'"), std::string::npos);
     EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "resources": {"A": {"kind": "texture"}}})")
-                  .find("resources.A: unknown kind 'texture'"),
+                  .find("resources.A.kind: unknown value 'texture' (buffer, cbuffer, image, cube, storage_image, sampler)"),
               std::string::npos);
     EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "resources": {"A": {"kind": "image", "format": "R32_SFLOAT"}}})")
                   .find("resources.A: needs a \"size\""),
@@ -70,6 +70,43 @@ TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
     EXPECT_NE(errorOf(head + R"("dispatch": {"threads": [1]}, "expect": [{"resource": "A", "range": [1, 0]}]})")
                   .find("expect[0].range: takes [min, max]"),
               std::string::npos);
+}
+
+// Values that were cut, wrapped or taken silently, or that ended in a raw
+// "[json.exception.type_error.302]": each is refused, naming its key, before any device work.
+TEST_F(RunFiles, ValuesOutOfTypeOrRangeAreRefusedWithTheirKey) {
+    const auto run = [](const std::string& resource, const std::string& rest = "") {
+        return R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "resources": {"A": )" + resource + "}" + rest + "}";
+    };
+    const std::pair<std::string, std::string> cases[] = {
+        {R"({"shader": "x.hlsl", "dispatch": {"threads": [4294967296, 1, 1]}})",
+         "dispatch.threads[0]: 4294967296 is outside [0, 4294967295]"},
+        {R"({"shader": "x.hlsl", "dispatch": {"groups": [1, 8589934593]}})", "dispatch.groups[1]: 8589934593 is outside"},
+        {run(R"({"kind": "buffer", "count": 4294967296})"), "resources.A.count: 4294967296 is outside [1, 4294967295]"},
+        {run(R"({"kind": "buffer", "count": 8.5})"), "resources.A.count: 8.5 is not a whole number"},
+        {run(R"({"kind": "buffer", "count": -1})"), "resources.A.count: -1 is outside"},
+        {run(R"({"kind": "buffer", "count": "4"})"), "resources.A.count: must be a whole number"},
+        {run(R"({"kind": "buffer", "type": "banana", "count": 4})"), "resources.A.type: unknown value 'banana' (float, uint, int)"},
+        {run(R"({"kind": "buffer", "count": 4, "size_bytes": 16})"), "resources.A: takes \"count\" or \"size_bytes\", not both"},
+        {run(R"({"kind": "buffer", "count": 4, "fill": []})"), "resources.A.fill: must not be empty"},
+        {run(R"({"kind": "buffer", "count": 4, "fill": 1, "values": [1, 2, 3, 4]})"), "resources.A: takes one of"},
+        {run(R"({"kind": "image", "format": "R32_SFLOAT", "size": [4, 4, 4]})"), "resources.A.size: takes 1 to 2 numbers"},
+        {run(R"({"kind": "image", "format": "R32_SFLOAT", "size": [4294967296, 4]})"), "resources.A.size[0]: 4294967296 is outside"},
+        {run(R"({"kind": "image", "format": "R32_SFLOAT", "size": [4, 4], "mips": 0})"), "resources.A.mips: 0 is outside [1, 32]"},
+        {run(R"({"kind": "image", "format": 7, "size": [4, 4]})"), "resources.A.format: must be a string"},
+        {run(R"({"kind": "sampler", "filter": "cubic"})"), "resources.A.filter: unknown value 'cubic' (nearest, linear)"},
+        {run(R"({"kind": "cbuffer", "members": {"R": "half"}})"), "resources.A.members.R: must be a number or an array of numbers"},
+        {run(R"({"kind": "buffer", "count": 4})", R"(, "expect": [{"resource": "A", "fill": 0, "tolerance": {"abs": -1}}])"),
+         "expect[0].tolerance.abs: must not be negative (it is -1)"},
+        {R"({"shader": "x.hlsl", "include": "hlsl", "dispatch": {"threads": [1]}})", "include: must be an array"},
+        {R"({"shader": 5, "dispatch": {"threads": [1]}})", "shader: must be a string"},
+        {R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "defines": {"N": [1]}})", "defines.N: must be a string"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const auto message = errorOf(text);
+        EXPECT_NE(message.find("test.run.json: error: " + expected), std::string::npos) << text << "\n" << message;
+        EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
+    }
 }
 
 TEST_F(RunFiles, NpyFilesRoundTripAndRawFilesMustHaveTheRightSize) {
