@@ -128,6 +128,8 @@ private:
         };
         for (const auto& expectation : spec_.expectations) holdsValues(expectation.resource, "expect");
         for (const auto& [name, path] : spec_.saves) holdsValues(name, "save");
+        if (!spec_.pushConstants.empty() && reflection.pushConstantSize == 0)
+            fail("push_constants: the shader has no push constants (no [[vk::push_constant]] block)");
     }
 
     // The values of a fill, a list or a file, for a resource or an expectation of `count` values.

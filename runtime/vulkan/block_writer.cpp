@@ -2,7 +2,10 @@
 
 #include "vulkan_error.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 
 namespace iblkit::vulkan {
 namespace {
@@ -29,11 +32,25 @@ MemberType parseType(const std::string& block, const compiler::BlockMember& memb
     return {};
 }
 
-void writeComponent(const std::string& scalar, double value, std::byte* at) {
+// A value the member's type cannot hold is refused: casting -1 or 1e20 to a uint is undefined.
+void writeComponent(const std::string& scalar, double value, std::byte* at, const std::string& where) {
+    const auto refuse = [&](const char* why) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", value);
+        throw VulkanError(where + " is a " + scalar + ": " + text + " " + why);
+    };
     if (scalar == "float") {
+        if (!std::isfinite(value) || std::abs(value) > double(std::numeric_limits<float>::max())) refuse("is beyond float's range");
         const float f = static_cast<float>(value);
         std::memcpy(at, &f, 4);
-    } else if (scalar == "int") {
+        return;
+    }
+    if (value != std::floor(value)) refuse("is not a whole number");
+    const bool isInt = scalar == "int";
+    const double least = isInt ? double(std::numeric_limits<int32_t>::min()) : 0.0;
+    const double most = isInt ? double(std::numeric_limits<int32_t>::max()) : double(std::numeric_limits<uint32_t>::max());
+    if (value < least || value > most) refuse(isInt ? "is beyond int's range" : "is beyond uint's range");
+    if (isInt) {
         const auto i = static_cast<int32_t>(value);
         std::memcpy(at, &i, 4);
     } else {
@@ -59,7 +76,7 @@ std::vector<std::byte> packBlock(const std::string& blockName, const std::vector
             throw VulkanError(blockName + "." + name + " is a " + member->type + ": it takes " +
                               std::to_string(type.components) + " value(s), not " + std::to_string(components.size()));
         for (uint32_t i = 0; i < type.components; ++i)
-            writeComponent(type.scalar, components[i], bytes.data() + member->offset + 4 * i);
+            writeComponent(type.scalar, components[i], bytes.data() + member->offset + 4 * i, blockName + "." + name);
     }
     return bytes;
 }

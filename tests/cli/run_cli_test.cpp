@@ -152,6 +152,18 @@ TEST_F(RunCli, ASaveOfAnUnknownResourceFailsBeforeAnythingIsWritten) {
     EXPECT_FALSE(fs::exists(folder / "a.npy"));
 }
 
+TEST_F(RunCli, PushConstantsForAShaderThatHasNone) {
+    auto run = fastPrefilter();
+    run["push_constants"] = {{"Roughness", 0.5}};
+    expectError(run, "push_constants: the shader has no push constants");
+}
+
+TEST_F(RunCli, ACbufferValueItsMemberCannotHold) {
+    auto run = fastPrefilter();
+    run["resources"]["PrefilterSpecularParameter"]["members"]["Roughness"] = 1e39;
+    expectError(run, "PrefilterSpecularParameter.Roughness is a float: 1e+39 is beyond float's range");
+}
+
 TEST_F(RunCli, AMissingDataFile) {
     auto run = fastPrefilter();
     run["resources"]["EnvMap"].erase("fill");

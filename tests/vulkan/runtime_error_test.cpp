@@ -104,6 +104,24 @@ TEST_F(RuntimeErrors, CbufferMembersByName) {
     EXPECT_EQ(tint[1], 2.0f);
 }
 
+// A uint of -1 or 1e20 was cast (undefined behaviour, in practice wrapped); each is refused.
+TEST_F(RuntimeErrors, CbufferValuesTheMembersTypeCannotHoldAreRefused) {
+    const std::vector<compiler::BlockMember> members = {
+        {"Count", "uint", 0, 4}, {"Offset", "int", 4, 4}, {"Scale", "float", 8, 4}};
+    expectError([&] { packBlock("Params", members, 16, {{"Count", {-1.0}}}); }, "Params.Count is a uint: -1 is beyond uint's range");
+    expectError([&] { packBlock("Params", members, 16, {{"Count", {1e20}}}); }, "Params.Count is a uint: 1e+20 is beyond uint's range");
+    expectError([&] { packBlock("Params", members, 16, {{"Count", {2.5}}}); }, "Params.Count is a uint: 2.5 is not a whole number");
+    expectError([&] { packBlock("Params", members, 16, {{"Offset", {3e9}}}); }, "Params.Offset is a int: 3e+09 is beyond int's range");
+    expectError([&] { packBlock("Params", members, 16, {{"Scale", {1e39}}}); }, "Params.Scale is a float: 1e+39 is beyond float's range");
+    const auto bytes = packBlock("Params", members, 16, {{"Count", {4294967295.0}}, {"Offset", {-2147483648.0}}});
+    uint32_t count;
+    int32_t offset;
+    std::memcpy(&count, bytes.data(), 4);
+    std::memcpy(&offset, bytes.data() + 4, 4);
+    EXPECT_EQ(count, 4294967295u);
+    EXPECT_EQ(offset, -2147483647 - 1);
+}
+
 #ifdef __SANITIZE_ADDRESS__
 // The next test leaks a driver object on purpose; LeakSanitizer builds must not count the
 // driver's allocation for it (every other test is leak-checked as usual).
