@@ -1,5 +1,6 @@
 #include "compute_program.hpp"
 
+#include "dispatch_regions.hpp"
 #include "timed_submission.hpp"
 #include "vulkan_error.hpp"
 
@@ -90,8 +91,10 @@ ComputeProgram::ComputeProgram(const VulkanContext& context, const std::vector<u
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module,
                                                   reflection_.entryPoint.c_str(), &specializationInfo);
     try {
+        // eDispatchBase: a dispatch too large for the driver's 32-bit group count runs as regions.
         pipeline_ = vk::raii::Pipeline(context.device(), context.pipelineCache(),
-                                       vk::ComputePipelineCreateInfo({}, stage, *pipelineLayout_));
+                                       vk::ComputePipelineCreateInfo(vk::PipelineCreateFlagBits::eDispatchBase, stage,
+                                                                     *pipelineLayout_));
     } catch (const vk::SystemError& error) {
         throw VulkanError("the driver could not build a compute pipeline of entry point '" + reflection_.entryPoint +
                           "' from SPIR-V that passed spirv-val (" + error.what() + ")");
@@ -221,7 +224,12 @@ DispatchTiming ComputeProgram::dispatchGroups(const VulkanContext& context, std:
             if (!pushConstants_.empty())
                 commands.pushConstants<std::byte>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, pushConstants_);
         },
-        [&](const vk::raii::CommandBuffer& commands) { commands.dispatch(groups[0], groups[1], groups[2]); },
+        [&](const vk::raii::CommandBuffer& commands) {
+            const auto regions = dispatchRegions(groups, context.mostGroupsPerDispatch());
+            if (regions.size() == 1) return commands.dispatch(groups[0], groups[1], groups[2]);
+            for (const auto& [base, count] : regions)
+                commands.dispatchBase(base[0], base[1], base[2], count[0], count[1], count[2]);
+        },
         [](const vk::raii::CommandBuffer& commands) {
             const vk::MemoryBarrier written(vk::AccessFlagBits::eShaderWrite,
                                             vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eHostRead |

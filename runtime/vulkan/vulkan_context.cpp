@@ -151,7 +151,8 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 VulkanContext::VulkanContext(const ContextOptions& options)
-    : submissionTimeout_(options.submissionTimeout), onDeviceFailure_(options.onDeviceFailure), loader_(loadVulkan()),
+    : submissionTimeout_(options.submissionTimeout), mostGroupsPerDispatch_(options.mostGroupsPerDispatch),
+      onDeviceFailure_(options.onDeviceFailure), loader_(loadVulkan()),
       validationLog_(options.validationLog ? options.validationLog : std::make_shared<ValidationLog>()) {
     const char* validationFromEnvironment = std::getenv("IBLKIT_VALIDATION");
     const bool asked = options.validation || (validationFromEnvironment && std::string(validationFromEnvironment) == "1");

@@ -47,6 +47,9 @@ struct ContextOptions {
     // on the context cannot safely be destroyed; a program may end here (the command-line tool
     // does). The context is unusable afterwards.
     std::function<void(const std::string& message)> onDeviceFailure = {};
+    // The most workgroups one vkCmdDispatch may hold (dispatch_regions.hpp: lavapipe counts them
+    // in 32 bits); larger dispatches run as several regions. Smaller only for tests.
+    uint64_t mostGroupsPerDispatch = 0xFFFFFFFFu;
 };
 
 // Every Vulkan device the loader sees. Throws VulkanError when there is none.
@@ -68,6 +71,7 @@ public:
     const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
     const vk::raii::PipelineCache& pipelineCache() const { return pipelineCache_; }
     bool validationEnabled() const { return validationEnabled_; }
+    uint64_t mostGroupsPerDispatch() const { return mostGroupsPerDispatch_; }
     // Nanoseconds per timestamp tick, 0 when the queue has no timestamps.
     double timestampPeriod() const { return timestampPeriod_; }
 
@@ -80,6 +84,7 @@ private:
     [[noreturn]] void failDevice(const std::string& message) const;
 
     std::chrono::milliseconds submissionTimeout_;
+    uint64_t mostGroupsPerDispatch_;
     std::function<void(const std::string&)> onDeviceFailure_;
 
     vk::raii::Context loader_;
