@@ -19,13 +19,13 @@ std::optional<RegisterClass> registerClassFromLetter(char letter) {
     return std::nullopt;
 }
 
-std::optional<uint32_t> BindingShifts::capacity(RegisterClass registerClass) const {
+uint32_t BindingShifts::capacity(RegisterClass registerClass) const {
     const uint32_t base = of(registerClass);
-    std::optional<uint32_t> next;
+    if (base > kLargestBinding) return 0;
+    uint32_t next = kLargestBinding + 1;
     for (uint32_t other : shift)
-        if (other > base && (!next || other < *next)) next = other;
-    if (!next) return std::nullopt;
-    return *next - base;
+        if (other > base && other < next) next = other;
+    return next - base;
 }
 
 std::string ResourceRegister::registerName() const {
@@ -38,13 +38,16 @@ using ClassAndSpace = std::pair<RegisterClass, uint32_t>;
 
 ResourceRegister bindResource(const DeclaredResource& resource, uint32_t registerIndex, const BindingShifts& shifts,
                               const std::string& sourceName) {
-    const auto capacity = shifts.capacity(resource.registerClass);
+    const uint64_t capacity = shifts.capacity(resource.registerClass);
     const char letter = registerLetter(resource.registerClass);
-    if (capacity && registerIndex + resource.count > *capacity)
+    if (uint64_t(registerIndex) + resource.count > capacity) {
+        const bool highest = uint64_t(shifts.of(resource.registerClass)) + capacity == uint64_t(kLargestBinding) + 1;
         throw CompileError(sourceName + ": error: '" + resource.name + "' is in register " + letter +
                            std::to_string(registerIndex) + ", but the " + letter + " class holds only " +
-                           std::to_string(*capacity) + " registers under the binding shifts; raise the next "
-                           "class's --binding-shift");
+                           std::to_string(capacity) + " registers under the binding shifts; " +
+                           (highest ? "bindings end at " + std::to_string(kLargestBinding) + " (glslang's largest)"
+                                    : std::string("raise the next class's --binding-shift")));
+    }
     return ResourceRegister{resource.name,
                             resource.registerClass,
                             registerIndex,
@@ -112,6 +115,9 @@ void parseBindingShift(std::string_view text, BindingShifts& shifts) {
     const auto digits = text.substr(2);
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error != std::errc() || end != digits.data() + digits.size()) fail();
+    if (value > kLargestBinding)
+        throw CompileError("error: --binding-shift " + std::string(text) + ": bindings end at " +
+                           std::to_string(kLargestBinding) + " (glslang holds them in 16 bits)");
     shifts.set(*registerClass, value);
 }
 

@@ -23,13 +23,17 @@ std::optional<RegisterClass> registerClassFromLetter(char letter);
 // Each class owns the bindings from its shift up to the next larger shift, so no two
 // resources can share a binding; a register that would cross into the next class's range
 // is an error, not a silent clash.
+// glslang holds a binding in 16 bits, 0xFFFF meaning none: 65534 is the largest binding.
+inline constexpr uint32_t kLargestBinding = 65534;
+
 struct BindingShifts {
     std::array<uint32_t, 4> shift{0, 32, 64, 96}; // b, t, s, u
 
     uint32_t of(RegisterClass registerClass) const { return shift[static_cast<size_t>(registerClass)]; }
     void set(RegisterClass registerClass, uint32_t value) { shift[static_cast<size_t>(registerClass)] = value; }
-    // Registers of the class that fit below the next class's shift; nullopt when unbounded.
-    std::optional<uint32_t> capacity(RegisterClass registerClass) const;
+    // Registers of the class that fit below the next class's shift, or for the highest class
+    // up to kLargestBinding.
+    uint32_t capacity(RegisterClass registerClass) const;
 };
 
 // A resource as declared in HLSL, in declaration order.

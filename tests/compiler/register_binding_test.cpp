@@ -67,7 +67,29 @@ TEST(RegisterRule, ARegisterBeyondItsClassRangeIsAnErrorNotAClash) {
         EXPECT_NE(std::string(error.what()).find("'far' is in register t32"), std::string::npos) << error.what();
     }
     EXPECT_NO_THROW(assignRegisters({at("far", RC::UnorderedAccess, 1000)}, BindingShifts{}, "x.hlsl"))
-        << "the class with the largest shift is unbounded";
+        << "the class with the largest shift reaches up to glslang's largest binding";
+}
+
+// u=4294967295 put u1 on binding 0, b0's (the sum wrapped), and glslang itself holds bindings in
+// 16 bits: past 65534 it answered only "resource binding failed". Both are refused by name.
+TEST(RegisterRule, BindingsPastGlslangsLargestAreRefusedNotWrapped) {
+    BindingShifts shifts;
+    EXPECT_THROW(parseBindingShift("u=4294967295", shifts), CompileError);
+    EXPECT_THROW(parseBindingShift("u=65535", shifts), CompileError);
+    parseBindingShift("u=65534", shifts);
+    EXPECT_NO_THROW(assignRegisters({at("last", RC::UnorderedAccess, 0)}, shifts, "x.hlsl"));
+    try {
+        assignRegisters({at("cb", RC::ConstantBuffer, 0), at("past", RC::UnorderedAccess, 1)}, shifts, "x.hlsl");
+        FAIL() << "expected CompileError";
+    } catch (const CompileError& error) {
+        EXPECT_NE(std::string(error.what()).find("'past' is in register u1, but the u class holds only 1 registers under "
+                                                 "the binding shifts; bindings end at 65534"),
+                  std::string::npos)
+            << error.what();
+    }
+    BindingShifts huge;
+    huge.set(RC::UnorderedAccess, 4294967295u); // as a manifest could set it
+    EXPECT_THROW(assignRegisters({at("wrapped", RC::UnorderedAccess, 1)}, huge, "x.hlsl"), CompileError);
 }
 
 TEST(RegisterRule, TwoClassesWithTheSameShiftAreAnError) {
