@@ -41,7 +41,42 @@ std::filesystem::path writeTemporary(const std::filesystem::path& path, const st
     return pattern;
 }
 
+void refuseClash(const std::filesystem::path& output, const std::vector<std::filesystem::path>& earlierOutputs,
+                 const std::vector<std::filesystem::path>& inputs) {
+    for (const auto& input : inputs)
+        if (sameFile(output, input))
+            throw FileError(output.string() + ": error: this output is also an input of the command" +
+                            (output == input ? std::string() : " ('" + input.string() + "')") +
+                            ": writing it would destroy it");
+    for (const auto& earlier : earlierOutputs)
+        if (sameFile(output, earlier))
+            throw FileError(output.string() + ": error: two outputs of the command are this one file" +
+                            (output == earlier ? std::string() : " (also named '" + earlier.string() + "')"));
+}
+
 } // namespace
+
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+    struct stat first {}, second {};
+    if (::stat(a.c_str(), &first) == 0 && ::stat(b.c_str(), &second) == 0)
+        return first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+    std::error_code error;
+    const auto normal = [&](const std::filesystem::path& path) {
+        const auto absolute = std::filesystem::weakly_canonical(path, error);
+        return error ? std::filesystem::absolute(path).lexically_normal() : absolute;
+    };
+    return normal(a) == normal(b);
+}
+
+void requireDistinctOutputs(const std::vector<std::filesystem::path>& outputs,
+                            const std::vector<std::filesystem::path>& inputs) {
+    for (size_t i = 0; i < outputs.size(); ++i)
+        refuseClash(outputs[i], std::vector<std::filesystem::path>(outputs.begin(), outputs.begin() + i), inputs);
+}
+
+void AtomicOutput::protect(std::vector<std::filesystem::path> inputs) {
+    inputs_.insert(inputs_.end(), inputs.begin(), inputs.end());
+}
 
 AtomicOutput::~AtomicOutput() {
     if (!committed_) discard();
@@ -49,6 +84,9 @@ AtomicOutput::~AtomicOutput() {
 
 void AtomicOutput::add(const std::filesystem::path& path, std::string contents) {
     try {
+        std::vector<std::filesystem::path> earlier;
+        for (const auto& file : pending_) earlier.push_back(file.path);
+        refuseClash(path, earlier, inputs_);
         pending_.push_back({path, writeTemporary(path, contents)});
     } catch (...) {
         discard();

@@ -24,6 +24,9 @@ public:
     AtomicOutput& operator=(const AtomicOutput&) = delete;
     ~AtomicOutput();
 
+    // Files this command reads: an output that is one of them (through any path or link) is
+    // refused when it is added, as is an output added twice, before anything is written.
+    void protect(std::vector<std::filesystem::path> inputs);
     void add(const std::filesystem::path& path, std::string contents);
     void commit();
 
@@ -35,8 +38,17 @@ private:
     void discard();
 
     std::vector<Pending> pending_;
+    std::vector<std::filesystem::path> inputs_;
     bool committed_ = false;
 };
+
+// Whether two paths name one file: the same device and inode when both exist (links followed),
+// else the same path once made absolute and normal.
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Throws FileError when an output is one of the inputs, or two outputs are one file.
+void requireDistinctOutputs(const std::vector<std::filesystem::path>& outputs,
+                            const std::vector<std::filesystem::path>& inputs);
 
 // One file, all or nothing.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents);

@@ -130,6 +130,19 @@ private:
         for (const auto& [name, path] : spec_.saves) holdsValues(name, "save");
         if (!spec_.pushConstants.empty() && reflection.pushConstantSize == 0)
             fail("push_constants: the shader has no push constants (no [[vk::push_constant]] block)");
+        std::vector<std::filesystem::path> saves;
+        for (const auto& [name, path] : spec_.saves) saves.push_back(path);
+        files::requireDistinctOutputs(saves, inputFiles()); // before any device work: nothing is lost
+    }
+
+    // What the run reads: a save must be none of them.
+    std::vector<std::filesystem::path> inputFiles() const {
+        std::vector<std::filesystem::path> inputs{spec_.runFile, spec_.shader};
+        for (const auto& resource : spec_.resources)
+            if (!resource.initial.file.empty()) inputs.push_back(resource.initial.file);
+        for (const auto& expectation : spec_.expectations)
+            if (!expectation.expected.file.empty()) inputs.push_back(expectation.expected.file);
+        return inputs;
     }
 
     // The values of a fill, a list or a file, for a resource or an expectation of `count` values.
@@ -317,6 +330,7 @@ private:
     // Every save or none: all are written to temporaries first (files::AtomicOutput).
     void saveAll() const {
         files::AtomicOutput output;
+        output.protect(inputFiles());
         for (const auto& [name, path] : spec_.saves) {
             const auto data = readback(name);
             std::vector<size_t> shape{data.values.size()};

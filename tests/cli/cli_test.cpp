@@ -137,6 +137,33 @@ TEST_F(Cli, AFailedRunNeverDamagesAGoodOutput) {
     EXPECT_EQ(filesInOut(), 1u);
 }
 
+// `compile ok.hlsl -o ok.hlsl` replaced the source with SPIR-V. An output that is an input (the
+// source, an included file, through any path or link) or that two outputs share is refused, and
+// the source stays as it was.
+TEST_F(Cli, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
+    std::ofstream(out / "ok.hlsl") << "#include \"inc.fxh\"\nRWStructuredBuffer<float> O;\n"
+                                      "[numthreads(1, 1, 1)] void main() { O[0] = Two(); }\n";
+    std::ofstream(out / "inc.fxh") << "float Two() { return 2.f; }\n";
+    fs::create_symlink(out / "ok.hlsl", out / "link.spv");
+    const auto source = readFile(out / "ok.hlsl");
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{"-o", at("ok.hlsl")}, "ok.hlsl: error: this output is also an input of the command"},
+        {{"-o", at("link.spv")}, "link.spv: error: this output is also an input of the command ('" + at("ok.hlsl") + "')"},
+        {{"-o", at("x.spv"), "--glsl", at("inc.fxh")}, "inc.fxh: error: this output is also an input of the command"},
+        {{"-o", at("x.spv"), "--glsl", at("x.spv")}, "x.spv: error: two outputs of the command are this one file"},
+        {{"-o", at("x.spv"), "--reflect", out.string() + "/./x.spv"}, "two outputs of the command are this one file"},
+    };
+    for (const auto& [flags, expected] : cases) {
+        std::vector<std::string> arguments{"compile", at("ok.hlsl")};
+        arguments.insert(arguments.end(), flags.begin(), flags.end());
+        const auto result = iblkit(arguments);
+        EXPECT_EQ(result.exitCode, 1) << result.err;
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(readFile(out / "ok.hlsl"), source);
+        EXPECT_FALSE(fs::exists(out / "x.spv"));
+    }
+}
+
 TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
     const auto result = iblkit({"compile-all", "hlsl/shaders.json", "-o", at("all")});
     ASSERT_EQ(result.exitCode, 0) << result.err;

@@ -152,6 +152,16 @@ TEST_F(RunCli, ASaveOfAnUnknownResourceFailsBeforeAnythingIsWritten) {
     EXPECT_FALSE(fs::exists(folder / "a.npy"));
 }
 
+// A save onto the run file, or two saves to one file, is refused before any device work.
+TEST_F(RunCli, ASaveOntoAnInputOrOntoAnotherSaveIsRefused) {
+    auto run = fastPrefilter();
+    run["save"] = {{"Prefiltered", (folder / "test.run.json").string()}};
+    expectError(run, "test.run.json: error: this output is also an input of the command");
+    run["save"] = {{"Prefiltered", (folder / "a.npy").string()}, {"EnvMap", (folder / "a.npy").string()}};
+    expectError(run, "a.npy: error: two outputs of the command are this one file");
+    EXPECT_FALSE(fs::exists(folder / "a.npy"));
+}
+
 TEST_F(RunCli, PushConstantsForAShaderThatHasNone) {
     auto run = fastPrefilter();
     run["push_constants"] = {{"Roughness", 0.5}};

@@ -65,6 +65,9 @@ void runCompile(const CompileArguments& arguments) {
     for (const auto& warning : shader.warnings) fmt::print(stderr, "{}\n", warning);
 
     files::AtomicOutput output;
+    std::vector<std::filesystem::path> inputs{arguments.source};
+    inputs.insert(inputs.end(), shader.includedFiles.begin(), shader.includedFiles.end());
+    output.protect(std::move(inputs));
     output.add(arguments.output, spirvBytes(shader.spirv));
     std::map<compiler::CrossTarget, compiler::CrossCompiled> forms;
     for (const auto& [target, path] : arguments.forms) {
