@@ -86,7 +86,7 @@ BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image&
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     const auto started = Clock::now();
     validateSettings(settings);
-    BakeDirectory directory(settings.outputDir);
+    BakeDirectory directory(settings.outputDir, settings.environment);
 
     progress.begin("load");
     const vulkan::VulkanContext context(settings.context);

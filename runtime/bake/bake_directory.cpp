@@ -2,6 +2,7 @@
 
 #include "bake_error.hpp"
 #include "file_names.hpp"
+#include "sha256.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +12,10 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <map>
 #include <string>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace iblkit::bake {
 namespace {
@@ -20,11 +24,76 @@ namespace fs = std::filesystem;
 
 using image_io::quoted;
 
-bool isEarlierBake(const fs::path& folder) {
+// The files an earlier bake wrote, by name within its folder, with their SHA-256; nothing when
+// the folder holds no manifest.json that iblkit wrote with its list of files.
+std::optional<std::map<std::string, std::string>> earlierBakeFiles(const fs::path& folder) {
     std::ifstream stream(folder / "manifest.json");
-    if (!stream) return false;
+    if (!stream) return std::nullopt;
     const auto manifest = nlohmann::json::parse(stream, nullptr, false);
-    return manifest.is_object() && manifest.value("generator", "") == "iblkit";
+    if (!manifest.is_object() || manifest.value("generator", "") != "iblkit" || !manifest.contains("files") ||
+        !manifest["files"].is_array())
+        return std::nullopt;
+    std::map<std::string, std::string> files;
+    for (const auto& file : manifest["files"])
+        if (file.is_object() && file.value("name", "") != "") files[file.value("name", "")] = file.value("sha256", "");
+    return files;
+}
+
+bool isInside(const fs::path& path, const fs::path& folder) {
+    std::error_code error;
+    const auto inner = fs::weakly_canonical(path, error), outer = fs::weakly_canonical(folder, error);
+    const auto [end, rest] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+    return end == outer.end();
+}
+
+void requireWritable(const fs::path& folder, const fs::path& target) {
+    if (::access(folder.c_str(), W_OK) != 0)
+        throw BakeError("cannot replace " + quoted(target) + ": " + quoted(folder) + " is not writable (" +
+                        std::strerror(errno) + ")");
+}
+
+// Every entry of the folder must be manifest.json, a file the earlier bake listed (still with
+// its hash), or a folder of such files.
+void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, std::string>& files) {
+    requireWritable(target, target);
+    for (auto it = fs::recursive_directory_iterator(target); it != fs::recursive_directory_iterator(); ++it) {
+        const auto name = fs::relative(it->path(), target).generic_string();
+        if (it->is_symlink() || (!it->is_regular_file() && !it->is_directory()))
+            throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
+                            ", which is not a file the earlier bake wrote");
+        if (it->is_directory()) {
+            requireWritable(it->path(), target);
+            continue;
+        }
+        if (name == "manifest.json") continue;
+        const auto listed = files.find(name);
+        if (listed == files.end())
+            throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
+                            ", which no earlier bake wrote (its manifest.json does not list it)");
+        if (sha256OfFile(it->path()) != listed->second)
+            throw BakeError("refusing to replace " + quoted(target) + ": " + quoted(fs::path(name)) +
+                            " changed since the earlier bake wrote it");
+    }
+}
+
+fs::path nearestExisting(fs::path path) {
+    std::error_code error;
+    path = fs::absolute(path, error);
+    while (!path.empty() && !fs::exists(path, error) && path.has_parent_path() && path.parent_path() != path)
+        path = path.parent_path();
+    return path;
+}
+
+// A link names its target: the bake replaces the folder the link points at, as the checks read it.
+fs::path followed(fs::path target) {
+    if (target.filename().empty()) target = target.parent_path(); // "out/" names "out"
+    std::error_code error;
+    if (!fs::is_symlink(target, error)) return target;
+    const auto resolved = fs::canonical(target, error);
+    if (error)
+        throw BakeError(quoted(target) + " is a link to " + quoted(fs::read_symlink(target, error)) +
+                        ", which does not exist");
+    return resolved;
 }
 
 fs::path makeStagingFolder(const fs::path& target) {
@@ -34,24 +103,42 @@ fs::path makeStagingFolder(const fs::path& target) {
     if (error) throw BakeError("cannot create " + quoted(parent) + ": " + error.message());
     std::string pattern = (parent / ("." + target.filename().string() + ".iblkit-partial-XXXXXX")).string();
     if (!mkdtemp(pattern.data())) throw BakeError("cannot create a folder in " + quoted(parent) + ": " + std::strerror(errno));
+    // mkdtemp makes it 0700; the bake's folder gets what the umask gives any new folder.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::chmod(pattern.c_str(), 0777 & ~mask);
     return pattern;
 }
 
 } // namespace
 
-void checkBakeTarget(const fs::path& target) {
+void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& input) {
+    const auto target = followed(requested);
     std::error_code error;
-    if (!fs::exists(target, error)) return;
+    if (input && (isInside(*input, target) || isInside(target, *input)))
+        throw BakeError("the input " + quoted(*input) + " and the output folder " + quoted(target) +
+                        " overlap: the bake would delete its own input");
+    if (!fs::exists(target, error)) {
+        const auto parent = nearestExisting(target.parent_path().empty() ? fs::path(".") : target.parent_path());
+        if (::access(parent.c_str(), W_OK) != 0)
+            throw BakeError("cannot bake into " + quoted(target) + ": " + quoted(parent) + " is not writable");
+        return;
+    }
     if (!fs::is_directory(target, error)) throw BakeError(quoted(target) + " exists and is not a folder");
-    if (fs::is_empty(target, error) || isEarlierBake(target)) return;
-    throw BakeError(quoted(target) + " is a folder with other files (no manifest.json written by iblkit); "
-                    "refusing to replace it");
+    requireWritable(target.parent_path().empty() ? fs::path(".") : target.parent_path(), target);
+    if (fs::is_empty(target, error)) return requireWritable(target, target);
+    const auto files = earlierBakeFiles(target);
+    if (!files)
+        throw BakeError(quoted(target) + " is a folder with other files (no manifest.json written by iblkit); "
+                        "refusing to replace it");
+    requireOnlyBakeFiles(target, *files);
 }
 
-BakeDirectory::BakeDirectory(fs::path target) : target_(std::move(target)) {
-    if (target_.filename().empty()) target_ = target_.parent_path(); // "out/" names "out"
-    checkBakeTarget(target_);
+BakeDirectory::BakeDirectory(fs::path target, const std::optional<fs::path>& input)
+    : target_(followed(std::move(target))), input_(input) {
+    checkBakeTarget(target_, input_);
     staging_ = makeStagingFolder(target_);
+    cleanup_ = std::make_unique<files::RemovedOnSignal>(staging_);
 }
 
 BakeDirectory::~BakeDirectory() {
@@ -60,12 +147,13 @@ BakeDirectory::~BakeDirectory() {
 }
 
 void BakeDirectory::commit() {
-    checkBakeTarget(target_);
+    checkBakeTarget(target_, input_);
     std::error_code error;
     if (!fs::exists(target_, error)) {
         fs::rename(staging_, target_, error);
         if (error) throw BakeError("cannot move the bake into " + quoted(target_) + ": " + error.message());
         committed_ = true;
+        cleanup_.reset();
         return;
     }
     if (renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0) {
@@ -82,6 +170,7 @@ void BakeDirectory::commit() {
         staging_ = aside;
     }
     committed_ = true;
+    cleanup_.reset();
     fs::remove_all(staging_, error); // the earlier bake, now in the staging folder's place
 }
 

@@ -1,16 +1,24 @@
 #pragma once
 
+#include "signal_cleanup.hpp"
+
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 namespace iblkit::bake {
 
 // Where a bake writes: a fresh folder beside the target, swapped into place only when every
 // file is written, so a failed or killed bake never touches what the target holds. The target
-// must be absent, an empty folder or an earlier bake (a manifest.json that iblkit wrote); any
-// other folder is refused rather than replaced. Throws BakeError.
+// (a link to a folder is followed) must be absent, an empty folder, or an earlier bake: a folder
+// holding only manifest.json and the files its "files" list names, each still with its
+// SHA-256. Anything else is refused before any work, as is a target that holds the input, or
+// one the bake could not replace (read-only). The staging folder follows the umask, and is
+// removed when the bake fails or SIGINT, SIGTERM or SIGHUP stop it (files::cleanUpOnSignals).
+// Throws BakeError.
 class BakeDirectory {
 public:
-    explicit BakeDirectory(std::filesystem::path target);
+    BakeDirectory(std::filesystem::path target, const std::optional<std::filesystem::path>& input);
     BakeDirectory(const BakeDirectory&) = delete;
     BakeDirectory& operator=(const BakeDirectory&) = delete;
     ~BakeDirectory(); // removes the staging folder unless committed
@@ -22,11 +30,13 @@ public:
 
 private:
     std::filesystem::path target_;
+    std::optional<std::filesystem::path> input_;
     std::filesystem::path staging_;
+    std::unique_ptr<files::RemovedOnSignal> cleanup_;
     bool committed_ = false;
 };
 
-// Throws BakeError unless `target` may receive a bake (see BakeDirectory).
-void checkBakeTarget(const std::filesystem::path& target);
+// Throws BakeError unless `target` may receive a bake that reads `input` (see BakeDirectory).
+void checkBakeTarget(const std::filesystem::path& target, const std::optional<std::filesystem::path>& input);
 
 } // namespace iblkit::bake

@@ -1,11 +1,18 @@
 // The bake folder is all or nothing: a bake lands whole or not at all, an earlier bake is
-// replaced only by a finished one, and a folder that is not a bake is never replaced.
+// replaced only by a finished one, and only when it holds nothing but the files it wrote; a
+// folder that holds anything else, the input, or that cannot be replaced is refused up front.
 #include "bake_directory.hpp"
 #include "bake_error.hpp"
 #include "read_file.hpp"
+#include "sha256.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace iblkit::bake {
 namespace {
@@ -17,11 +24,31 @@ size_t entriesIn(const fs::path& folder) {
     return std::distance(fs::directory_iterator(folder), fs::directory_iterator());
 }
 
+// An earlier bake as iblkit writes one: its files, and a manifest listing each with its hash.
+void writeEarlierBake(const TempFolder& scratch, const std::string& folder,
+                      const std::vector<std::pair<std::string, std::string>>& files) {
+    std::string list;
+    for (const auto& [name, contents] : files) {
+        const auto path = scratch.write(folder + "/" + name, contents);
+        list += std::string(list.empty() ? "" : ", ") + R"({"name": ")" + name + R"(", "sha256": ")" + sha256OfFile(path) + "\"}";
+    }
+    scratch.write(folder + "/manifest.json", R"({"generator": "iblkit", "files": [)" + list + "]}");
+}
+
+std::string messageOf(const fs::path& target, const std::optional<fs::path>& input = std::nullopt) {
+    try {
+        BakeDirectory directory(target, input);
+    } catch (const BakeError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
 TEST(BakeDirectory, CommitMovesTheBakeIntoAnAbsentTarget) {
     TempFolder scratch;
     const auto target = scratch.path() / "nested" / "out";
     {
-        BakeDirectory directory(target);
+        BakeDirectory directory(target, std::nullopt);
         scratch.write(fs::relative(directory.staging() / "a.txt", scratch.path()), "new");
         EXPECT_FALSE(fs::exists(target));
         directory.commit();
@@ -33,10 +60,9 @@ TEST(BakeDirectory, CommitMovesTheBakeIntoAnAbsentTarget) {
 TEST(BakeDirectory, AnUncommittedBakeLeavesTheEarlierOneAsItWas) {
     TempFolder scratch;
     const auto target = scratch.path() / "out";
-    scratch.write("out/manifest.json", R"({"generator": "iblkit"})");
-    scratch.write("out/specular.ktx2", "old");
+    writeEarlierBake(scratch, "out", {{"specular.ktx2", "old"}});
     {
-        BakeDirectory directory(target);
+        BakeDirectory directory(target, std::nullopt);
         scratch.write(fs::relative(directory.staging() / "specular.ktx2", scratch.path()), "half-written");
     } // failed before commit
     EXPECT_EQ(iblkit::testing::readFile(target / "specular.ktx2"), "old");
@@ -46,9 +72,8 @@ TEST(BakeDirectory, AnUncommittedBakeLeavesTheEarlierOneAsItWas) {
 TEST(BakeDirectory, CommitReplacesAnEarlierBakeWhole) {
     TempFolder scratch;
     const auto target = scratch.path() / "out";
-    scratch.write("out/manifest.json", R"({"generator": "iblkit"})");
-    scratch.write("out/stale.dds", "from an earlier --dds bake");
-    BakeDirectory directory(target);
+    writeEarlierBake(scratch, "out", {{"stale.dds", "from an earlier --dds bake"}, {"exr/specular_mip0.exr", "exr"}});
+    BakeDirectory directory(target, std::nullopt);
     scratch.write(fs::relative(directory.staging() / "manifest.json", scratch.path()), R"({"generator": "iblkit", "new": 1})");
     directory.commit();
     EXPECT_FALSE(fs::exists(target / "stale.dds"));
@@ -59,19 +84,114 @@ TEST(BakeDirectory, CommitReplacesAnEarlierBakeWhole) {
 TEST(BakeDirectory, AFolderThatIsNotABakeIsRefusedAndKept) {
     TempFolder scratch;
     scratch.write("photos/holiday.jpg", "precious");
-    EXPECT_THROW(BakeDirectory(scratch.path() / "photos"), BakeError);
+    EXPECT_THROW(BakeDirectory(scratch.path() / "photos", std::nullopt), BakeError);
     scratch.write("notes.txt", "a file");
-    EXPECT_THROW(BakeDirectory(scratch.path() / "notes.txt"), BakeError);
+    EXPECT_THROW(BakeDirectory(scratch.path() / "notes.txt", std::nullopt), BakeError);
     scratch.write("other/manifest.json", R"({"generator": "something else"})");
-    EXPECT_THROW(BakeDirectory(scratch.path() / "other"), BakeError);
+    EXPECT_THROW(BakeDirectory(scratch.path() / "other", std::nullopt), BakeError);
     EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "photos/holiday.jpg"), "precious");
     EXPECT_EQ(entriesIn(scratch.path()), 3u) << "no staging folder is left behind";
+}
+
+// A manifest that merely said {"generator": "iblkit"} had every file of its folder deleted, and
+// so did a bake with a user's NOTES.txt or custom/ beside its own files.
+TEST(BakeDirectory, OnlyTheFilesAnEarlierBakeListedWithTheirHashesAreReplaced) {
+    TempFolder scratch;
+    scratch.write("bare/manifest.json", R"({"generator": "iblkit"})");
+    scratch.write("bare/mine.txt", "a user's");
+    EXPECT_NE(messageOf(scratch.path() / "bare").find("no manifest.json written by iblkit"), std::string::npos);
+    writeEarlierBake(scratch, "notes", {{"specular.ktx2", "bake"}});
+    scratch.write("notes/NOTES.txt", "a user's");
+    EXPECT_NE(messageOf(scratch.path() / "notes").find("it holds 'NOTES.txt', which no earlier bake wrote"), std::string::npos);
+    writeEarlierBake(scratch, "custom", {{"specular.ktx2", "bake"}});
+    scratch.write("custom/custom/x.bin", "a user's");
+    EXPECT_NE(messageOf(scratch.path() / "custom").find("'custom/x.bin', which no earlier bake wrote"), std::string::npos);
+    writeEarlierBake(scratch, "edited", {{"specular.ktx2", "bake"}});
+    scratch.write("edited/specular.ktx2", "edited by hand");
+    EXPECT_NE(messageOf(scratch.path() / "edited").find("'specular.ktx2' changed since the earlier bake wrote it"),
+              std::string::npos);
+    EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "notes/NOTES.txt"), "a user's");
+}
+
+// `bake p/env.exr -o p` deleted the input, and the manifest then named a file that was gone.
+TEST(BakeDirectory, AnOutputFolderThatHoldsTheInputIsRefused) {
+    TempFolder scratch;
+    const auto input = scratch.write("p/env.exr", "radiance");
+    EXPECT_NE(messageOf(scratch.path() / "p", input).find("overlap: the bake would delete its own input"), std::string::npos);
+    writeEarlierBake(scratch, "q", {{"specular.ktx2", "bake"}});
+    EXPECT_NE(messageOf(scratch.path() / "q", scratch.path() / "q" / "specular.ktx2").find("overlap"), std::string::npos);
+    EXPECT_NE(messageOf(scratch.path() / "faces" / "out", scratch.path() / "faces").find("overlap"), std::string::npos);
+    EXPECT_TRUE(fs::exists(input));
+}
+
+// A link given as the target had the link replaced by a folder while its target kept the stale
+// bake: the bake now lands in the folder the link names, and the link stays.
+TEST(BakeDirectory, ALinkedTargetIsFollowed) {
+    TempFolder scratch;
+    writeEarlierBake(scratch, "real", {{"specular.ktx2", "old"}});
+    fs::create_directory_symlink(scratch.path() / "real", scratch.path() / "link");
+    BakeDirectory directory(scratch.path() / "link", std::nullopt);
+    scratch.write(fs::relative(directory.staging() / "specular.ktx2", scratch.path()), "new");
+    directory.commit();
+    EXPECT_TRUE(fs::is_symlink(scratch.path() / "link"));
+    EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "real" / "specular.ktx2"), "new");
+    fs::create_directory_symlink(scratch.path() / "nowhere", scratch.path() / "dangling");
+    EXPECT_NE(messageOf(scratch.path() / "dangling").find("which does not exist"), std::string::npos);
+}
+
+// A read-only earlier bake was left behind under a .iblkit-partial name, with exit 0. Root writes
+// into read-only folders, so as root the check runs in a child that has become user nobody.
+bool readOnlyBakeIsRefused() {
+    const auto folder = fs::temp_directory_path() / ("iblkit-read-only-" + std::to_string(::getpid()));
+    fs::create_directories(folder / "out");
+    const auto bake = folder / "out" / "specular.ktx2";
+    { std::ofstream(bake) << "old"; }
+    { std::ofstream(folder / "out" / "manifest.json") << R"({"generator": "iblkit", "files": [{"name": "specular.ktx2", "sha256": ")"
+                                                      << sha256OfFile(bake) << "\"}]}"; }
+    fs::permissions(folder / "out", fs::perms::owner_write, fs::perm_options::remove);
+    const bool refused = messageOf(folder / "out").find("is not writable") != std::string::npos;
+    const bool untouched = entriesIn(folder) == 1;
+    fs::permissions(folder / "out", fs::perms::owner_write, fs::perm_options::add);
+    fs::remove_all(folder);
+    return refused && untouched;
+}
+
+TEST(BakeDirectory, AnEarlierBakeThatCannotBeReplacedIsRefusedBeforeAnyWork) {
+    if (::geteuid() != 0) {
+        EXPECT_TRUE(readOnlyBakeIsRefused());
+        return;
+    }
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        constexpr uid_t kNobody = 65534;
+        if (::setgid(kNobody) != 0 || ::setuid(kNobody) != 0) ::_exit(2);
+        ::_exit(readOnlyBakeIsRefused() ? 0 : 1);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not refused; 2: could not become nobody";
+}
+
+// mkdtemp makes a folder 0700; the bake's follows the umask.
+TEST(BakeDirectory, TheBakeFolderFollowsTheUmask) {
+    TempFolder scratch;
+    const mode_t previous = ::umask(022);
+    {
+        BakeDirectory directory(scratch.path() / "out", std::nullopt);
+        directory.commit();
+    }
+    ::umask(previous);
+    EXPECT_EQ(fs::status(scratch.path() / "out").permissions() & fs::perms::all,
+              fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                  fs::perms::others_exec);
 }
 
 TEST(BakeDirectory, AnEmptyFolderMayReceiveABake) {
     TempFolder scratch;
     fs::create_directories(scratch.path() / "empty");
-    BakeDirectory directory(scratch.path() / "empty");
+    BakeDirectory directory(scratch.path() / "empty", std::nullopt);
     scratch.write(fs::relative(directory.staging() / "manifest.json", scratch.path()), "{}");
     directory.commit();
     EXPECT_TRUE(fs::exists(scratch.path() / "empty" / "manifest.json"));

@@ -34,9 +34,9 @@ inline std::string radianceHdr(uint32_t width, uint32_t height, unsigned char ex
 
 class BakeCli : public ::testing::Test {
 protected:
-    ProcessResult iblkit(std::vector<std::string> arguments, double killAfterSeconds = 0) const {
+    ProcessResult iblkit(std::vector<std::string> arguments, double killAfterSeconds = 0, int killSignal = 9) const {
         arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
-        return runProcess(arguments, {}, killAfterSeconds);
+        return runProcess(arguments, {}, killAfterSeconds, killSignal);
     }
     // Small and quick: what every test but the default bake runs with.
     std::vector<std::string> small(std::vector<std::string> arguments) const {

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <csignal>
 #include <limits>
 #include <sys/stat.h>
 
@@ -205,6 +206,17 @@ TEST_F(BakeCli, AFailedOrKilledBakeLeavesTheEarlierBakeAsItWas) {
     const auto killed = iblkit({"bake", "-o", at("out"), "--method", "document", "--samples", "4096", "--quiet"}, 2.0);
     EXPECT_EQ(killed.exitCode, 128 + 9) << "the bake finished before it could be killed";
     EXPECT_EQ(snapshot(scratch.path() / "out"), good);
+}
+
+// SIGINT and SIGTERM left an empty .iblkit-partial-XXXXXX folder beside the target; now the bake
+// removes it and ends as the signal would have.
+TEST_F(BakeCli, InterruptedOrTerminatedBakesLeaveNoPartialFolder) {
+    for (const int signal : {SIGINT, SIGTERM}) {
+        const auto stopped = iblkit({"bake", "-o", at("out"), "--method", "document", "--samples", "4096", "--quiet"}, 2.0, signal);
+        EXPECT_EQ(stopped.exitCode, 128 + signal) << "the bake finished before the signal: " << stopped.err;
+        EXPECT_EQ(std::distance(std::filesystem::directory_iterator(scratch.path()), std::filesystem::directory_iterator()), 0)
+            << "something was left beside the target";
+    }
 }
 
 } // namespace

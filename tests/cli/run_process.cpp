@@ -29,7 +29,7 @@ std::string slurpAndRemove(const std::string& path) {
 } // namespace
 
 ProcessResult runProcess(const std::vector<std::string>& command, const std::vector<std::string>& environment,
-                         double killAfterSeconds) {
+                         double killAfterSeconds, int killSignal) {
     const auto folder = std::filesystem::temp_directory_path().string();
     std::string outPath = folder + "/iblkit-out-XXXXXX";
     std::string errPath = folder + "/iblkit-err-XXXXXX";
@@ -58,7 +58,7 @@ ProcessResult runProcess(const std::vector<std::string>& command, const std::vec
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(killAfterSeconds);
         while (waitpid(pid, &status, WNOHANG) == 0) {
             if (std::chrono::steady_clock::now() >= deadline) {
-                kill(pid, SIGKILL);
+                kill(pid, killSignal);
                 waitpid(pid, &status, 0);
                 break;
             }

@@ -3,6 +3,7 @@
 #include "bake.hpp"
 #include "bake_manifest.hpp"
 #include "run_command.hpp"
+#include "signal_cleanup.hpp"
 
 #include <fmt/core.h>
 
@@ -105,6 +106,7 @@ void addBakeCommand(CLI::App& app) {
                       "No progress on stderr (what the input policies clamped is still reported)");
     command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
     command->callback([arguments] {
+        files::cleanUpOnSignals(); // first: the Vulkan driver's threads must inherit the blocked signals
         auto settings = arguments->settings;
         if (!arguments->environment.empty()) settings.environment = arguments->environment;
         settings.lutFormat = arguments->lutFormat == "rg32f" ? bake::LutFormat::Rg32Float : bake::LutFormat::Rg16Float;
