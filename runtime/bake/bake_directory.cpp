@@ -86,8 +86,9 @@ fs::path nearestExisting(fs::path path) {
 
 // A link names its target: the bake replaces the folder the link points at, as the checks read it.
 fs::path followed(fs::path target) {
-    if (target.filename().empty()) target = target.parent_path(); // "out/" names "out"
     std::error_code error;
+    target = fs::absolute(target, error).lexically_normal(); // "-o ." names the folder, beside which the bake stages
+    if (target.filename().empty()) target = target.parent_path(); // "out/" names "out"
     if (!fs::is_symlink(target, error)) return target;
     const auto resolved = fs::canonical(target, error);
     if (error)

@@ -188,6 +188,22 @@ TEST(BakeDirectory, TheBakeFolderFollowsTheUmask) {
                   fs::perms::others_exec);
 }
 
+// `-o .` inside a bake staged inside the target itself and failed only after all the work.
+TEST(BakeDirectory, TheCurrentFolderAsTargetStagesBesideIt) {
+    TempFolder scratch;
+    writeEarlierBake(scratch, "out", {{"specular.ktx2", "old"}});
+    const auto previous = fs::current_path();
+    fs::current_path(scratch.path() / "out");
+    {
+        BakeDirectory directory(".", std::nullopt);
+        EXPECT_EQ(directory.staging().parent_path(), scratch.path());
+        scratch.write(fs::relative(directory.staging() / "specular.ktx2", scratch.path()), "new");
+        directory.commit();
+    }
+    fs::current_path(previous);
+    EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "out" / "specular.ktx2"), "new");
+}
+
 TEST(BakeDirectory, AnEmptyFolderMayReceiveABake) {
     TempFolder scratch;
     fs::create_directories(scratch.path() / "empty");
