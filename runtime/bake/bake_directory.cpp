@@ -102,7 +102,9 @@ fs::path makeStagingFolder(const fs::path& target) {
     std::error_code error;
     fs::create_directories(parent, error);
     if (error) throw BakeError("cannot create " + quoted(parent) + ": " + error.message());
-    std::string pattern = (parent / ("." + target.filename().string() + ".iblkit-partial-XXXXXX")).string();
+    // A short name of its own, not the target's plus a suffix: a target named near the file
+    // system's 255-byte limit must still get one.
+    std::string pattern = (parent / ".iblkit-partial-XXXXXX").string();
     if (!mkdtemp(pattern.data())) throw BakeError("cannot create a folder in " + quoted(parent) + ": " + std::strerror(errno));
     // mkdtemp makes it 0700; the bake's folder gets what the umask gives any new folder.
     const mode_t mask = ::umask(0);

@@ -17,7 +17,8 @@ std::filesystem::path writeTemporary(const std::filesystem::path& path, const st
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error)) fail(path, "no such directory " + folder.string());
     if (std::filesystem::is_directory(path, error)) fail(path, "it is a directory");
-    std::string pattern = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+    // Short, whatever the output's name: one near the 255-byte limit must still get a temporary.
+    std::string pattern = (folder / ".iblkit-tmp-XXXXXX").string();
     const int fd = mkstemp(pattern.data());
     if (fd < 0) fail(path, std::strerror(errno));
     size_t written = 0;

@@ -204,6 +204,16 @@ TEST(BakeDirectory, TheCurrentFolderAsTargetStagesBesideIt) {
     EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "out" / "specular.ktx2"), "new");
 }
 
+// A 250-byte name is valid; the staging folder's name was the target's plus 23 bytes, past 255.
+TEST(BakeDirectory, ATargetNamedNearTheFileSystemsLimitGetsAStagingFolder) {
+    TempFolder scratch;
+    const auto target = scratch.path() / std::string(250, 'n');
+    BakeDirectory directory(target, std::nullopt);
+    scratch.write(fs::relative(directory.staging() / "manifest.json", scratch.path()), "{}");
+    directory.commit();
+    EXPECT_TRUE(fs::exists(target / "manifest.json"));
+}
+
 TEST(BakeDirectory, AnEmptyFolderMayReceiveABake) {
     TempFolder scratch;
     fs::create_directories(scratch.path() / "empty");

@@ -51,6 +51,16 @@ TEST_F(AtomicOutputTest, AFailedAddKeepsExistingFilesAndLeavesNoTemporaries) {
     EXPECT_EQ(entriesInFolder(), 1u);
 }
 
+// A 250-byte name is valid; its temporary was the name plus 12 bytes, past the 255-byte limit.
+TEST_F(AtomicOutputTest, AnOutputNamedNearTheFileSystemsLimitIsWritten) {
+    const auto path = folder / (std::string(250, 'n') + ".spv");
+    AtomicOutput output;
+    output.add(path, "bytes");
+    output.commit();
+    EXPECT_EQ(iblkit::testing::readFile(path), "bytes");
+    EXPECT_EQ(entriesInFolder(), 1u);
+}
+
 TEST_F(AtomicOutputTest, RefusesADirectoryAsOutput) {
     fs::create_directories(folder / "dir");
     AtomicOutput output;
