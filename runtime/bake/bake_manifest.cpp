@@ -1,8 +1,8 @@
 #include "bake_manifest.hpp"
 
-#include "kernels/specular_method.hpp"
-
+#include "file_names.hpp"
 #include "kernels/sampled_methods.hpp"
+#include "kernels/specular_method.hpp"
 
 #include <fmt/core.h>
 
@@ -26,7 +26,7 @@ json negativeRadianceJson(const EnvironmentInput& input, const BakeSettings& set
 
 json inputJson(const EnvironmentInput& input, const BakeSettings& settings) {
     json files = json::array();
-    for (const auto& file : input.files) files.push_back({{"path", file.path.string()}, {"sha256", file.sha256}});
+    for (const auto& file : input.files) files.push_back({{"path", image_io::utf8Name(file.path)}, {"sha256", file.sha256}});
     json result = {{"kind", inputKindName(input.kind)}, {"files", files}};
     if (input.kind == InputKind::BuiltIn)
         result["rendered"] = fmt::format("SkyCubeCS straight into the cube, {}² evaluations per texel", kSkySupersample);

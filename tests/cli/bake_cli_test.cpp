@@ -136,6 +136,20 @@ TEST_F(BakeCli, DevicesAndPipesNamedLikeImagesAreRefused) {
     EXPECT_FALSE(std::filesystem::exists(at("out")));
 }
 
+// A file name that is not UTF-8 (Linux names are bytes) ended in a raw JSON exception after the
+// bake was written, with a non-zero exit. Its bytes are now written as \xNN in the manifest and
+// in --json, and the bake succeeds.
+TEST_F(BakeCli, AnInputNameThatIsNotUtf8IsEscapedInTheManifest) {
+    const std::string name = "sky\xff\xe0\x80.hdr"; // a lone 0xff, and an overlong start
+    scratch.write(name, radianceHdr(16, 8, 129));
+    const auto result = iblkit(small({"bake", at(name), "-o", at("out\xfe"), "--json"}));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto manifest = nlohmann::json::parse(readFile(scratch.path() / "out\xfe" / "manifest.json"));
+    EXPECT_NE(manifest["input"]["files"][0]["path"].get<std::string>().find("sky\\xff\\xe0\\x80.hdr"), std::string::npos)
+        << manifest["input"].dump();
+    EXPECT_NE(nlohmann::json::parse(result.out)["output"].get<std::string>().find("out\\xfe"), std::string::npos) << result.out;
+}
+
 TEST_F(BakeCli, APanoramaThatIsNotTwoToOneIsRefused) {
     scratch.write("wide.hdr", radianceHdr(30, 20, 129));
     expectFailure(small({"bake", at("wide.hdr"), "-o", at("out")}), "30x20");

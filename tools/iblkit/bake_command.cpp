@@ -2,6 +2,7 @@
 
 #include "bake.hpp"
 #include "bake_manifest.hpp"
+#include "file_names.hpp"
 #include "run_command.hpp"
 #include "signal_cleanup.hpp"
 
@@ -16,7 +17,7 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
     nlohmann::json steps = nlohmann::json::array();
     for (const auto& step : summary.steps)
         steps.push_back({{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}});
-    return {{"output", summary.outputDir.string()},
+    return {{"output", image_io::utf8Name(summary.outputDir)},
             {"device", summary.device},
             {"wall_ms", summary.wallMilliseconds},
             {"steps", steps},
