@@ -5,6 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
+
 namespace iblkit::compiler {
 namespace {
 
@@ -23,9 +26,32 @@ std::vector<std::string> methodsOf(const nlohmann::json& entry) {
     return methods;
 }
 
+// A shader's name becomes its output files' names in one folder: letters, digits, '_', '-' and
+// '.', not starting with '.', so that no name writes outside it, hides a file or is empty.
+void requireFileName(const std::string& name) {
+    const bool allowed = !name.empty() && name.front() != '.' && name.size() <= 200 &&
+                         std::all_of(name.begin(), name.end(), [](unsigned char c) {
+                             return std::isalnum(c) || c == '_' || c == '-' || c == '.';
+                         });
+    if (!allowed)
+        throw CompileError("shader name '" + name + "' is not a plain file name (letters, digits, '_', '-' and '.', "
+                           "not starting with '.'): it names the output files");
+}
+
+void requireKnownKeys(const nlohmann::json& object, const std::string& where, std::initializer_list<const char*> keys) {
+    if (!object.is_object()) throw CompileError(where + " must be an object");
+    for (const auto& [key, value] : object.items())
+        if (std::find_if(keys.begin(), keys.end(), [&](const char* known) { return key == known; }) == keys.end())
+            throw CompileError(where + " has an unknown key '" + key + "'");
+}
+
 ManifestShader parseShader(const nlohmann::json& entry, const std::filesystem::path& folder) {
+    if (!entry.is_object() || !entry.contains("name") || !entry.at("name").is_string()) throw CompileError("a shader has no \"name\" string");
     ManifestShader shader;
     shader.name = entry.at("name").get<std::string>();
+    requireFileName(shader.name);
+    requireKnownKeys(entry, "shader " + shader.name, {"name", "source", "entry", "stage", "include", "defines",
+                                                      "image_formats", "kernel", "method"});
     shader.options.source = folder / entry.at("source").get<std::string>();
     shader.options.entryPoint = valueOr<std::string>(entry, "entry", "main");
     if (entry.contains("stage")) {
@@ -53,7 +79,14 @@ std::vector<ManifestShader> parseShaderManifest(const std::string& text, const s
     std::vector<ManifestShader> shaders;
     try {
         const auto json = nlohmann::json::parse(text);
-        for (const auto& entry : json.at("shaders")) shaders.push_back(parseShader(entry, manifest.parent_path()));
+        requireKnownKeys(json, "the manifest", {"comment", "shaders"});
+        for (const auto& entry : json.at("shaders")) {
+            auto shader = parseShader(entry, manifest.parent_path());
+            for (const auto& earlier : shaders)
+                if (earlier.name == shader.name)
+                    throw CompileError("two shaders are named '" + shader.name + "': their outputs would overwrite each other");
+            shaders.push_back(std::move(shader));
+        }
     } catch (const nlohmann::json::exception& error) {
         throw CompileError(manifest.string() + ": error: " + error.what());
     } catch (const CompileError& error) {

@@ -188,6 +188,35 @@ TEST_F(Cli, CompileAllRejectsAnUnknownForm) {
                   "--only: unknown form 'spirv-asm'");
 }
 
+// Names become output files: two alike overwrote each other, "../x" and "/abs" wrote outside
+// -o, "" wrote a hidden ".spv"; an unknown key was taken silently. Each is refused, before any file.
+TEST_F(Cli, CompileAllRefusesManifestNamesThatAreNotPlainFileNamesAndUnknownKeys) {
+    const std::string shader = fs::absolute("hlsl/document/PrecomputedBrdfCS.hlsl").string();
+    const auto manifest = [&](const std::string& entries) {
+        std::ofstream(out / "m.json") << R"({"shaders": [)" + entries + "]}";
+        return (out / "m.json").string();
+    };
+    const auto entry = [&](const std::string& name, const std::string& extra = "") {
+        return R"({"name": ")" + name + R"(", "source": ")" + shader + R"(", "image_formats": {"Precomputed": "rg16f"})" +
+               extra + "}";
+    };
+    const std::pair<std::string, std::string> cases[] = {
+        {entry("A") + ", " + entry("A"), "two shaders are named 'A'"},
+        {entry("../escape"), "shader name '../escape' is not a plain file name"},
+        {entry("/tmp/abs"), "shader name '/tmp/abs' is not a plain file name"},
+        {entry(""), "shader name '' is not a plain file name"},
+        {entry(".hidden"), "shader name '.hidden' is not a plain file name"},
+        {entry("A", R"(, "defnes": {"N": "1"})"), "shader A has an unknown key 'defnes'"},
+    };
+    for (const auto& [entries, expected] : cases) {
+        const auto result = iblkit({"compile-all", manifest(entries), "-o", at("all")});
+        EXPECT_EQ(result.exitCode, 1) << entries;
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_FALSE(fs::exists(out / "all")) << entries;
+    }
+    EXPECT_FALSE(fs::exists(out.parent_path() / "escape.spv"));
+}
+
 TEST_F(Cli, LutFitWritesTheCommittedInclude) {
     const auto result = iblkit({"lut-fit", "-o", at("BrdfLutFit.fxh")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
