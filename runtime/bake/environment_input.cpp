@@ -74,9 +74,15 @@ EnvironmentInput loadPanorama(const fs::path& path, const InputPolicy& policy) {
 fs::path findFace(const fs::path& folder, int face) {
     static const std::array<std::array<const char*, 2>, 6> kNames = {
         {{"px", "posx"}, {"nx", "negx"}, {"py", "posy"}, {"ny", "negy"}, {"pz", "posz"}, {"nz", "negz"}}};
+    std::vector<fs::path> found;
     for (const char* name : kNames[face])
         for (const char* extension : {".hdr", ".exr"})
-            if (fs::exists(folder / (std::string(name) + extension))) return folder / (std::string(name) + extension);
+            if (fs::exists(folder / (std::string(name) + extension))) found.push_back(folder / (std::string(name) + extension));
+    if (found.size() > 1)
+        throw BakeError(fmt::format("{} has {} files for the {} face ({} and {}): keep one", quoted(folder), found.size(),
+                                    std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], quoted(found[0].filename()),
+                                    quoted(found[1].filename())));
+    if (found.size() == 1) return found.front();
     throw BakeError(fmt::format("{} has no {} face ({}.hdr, {}.exr, {}.hdr or {}.exr)", quoted(folder),
                                 std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], kNames[face][0], kNames[face][0],
                                 kNames[face][1], kNames[face][1]));
@@ -111,7 +117,11 @@ EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
     auto values = image_io::textureValues(texture);
     values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
     EnvironmentInput input{InputKind::Cube, {{path, sha256OfFile(path)}}, {}, texture.width, std::move(values), 0, {}};
-    checkTexels(input, input.cubeTexels, 4, texture.width, quoted(path), policy);
+    // Face by face, so that a texel is named by its face's own column and row.
+    const size_t faceValues = size_t(texture.width) * texture.height * 4;
+    for (size_t face = 0; face < 6; ++face)
+        checkTexels(input, std::span(input.cubeTexels).subspan(face * faceValues, faceValues), 4, texture.width,
+                    quoted(path) + " face " + std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], policy);
     return input;
 }
 

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <map>
 
+#include <numeric>
+#include <vector>
+
 namespace iblkit::image_io {
 namespace {
 
@@ -88,8 +91,34 @@ void requireIndexInsideFile(const ByteReader& in, size_t levelIndexEnd) {
     if (in.get<uint32_t>(dfdOffset, "the Data Format Descriptor") != dfdLength)
         in.fail("has a corrupt index: dfdTotalSize differs from dfdByteLength");
     if (field(kKvdByteLength) != 0) in.require(field(kKvdByteOffset), field(kKvdByteLength), "the key/value data");
+    if (field(kKvdByteLength) == 0 && field(kKvdByteOffset) != 0)
+        in.fail("has a corrupt index: kvdByteOffset is " + std::to_string(field(kKvdByteOffset)) +
+                " with no key/value data (the specification requires 0)");
     if (in.get<uint64_t>(kSgdByteLength, "the index") != 0)
         in.fail("has a corrupt index: supercompression global data without supercompression");
+    if (in.get<uint64_t>(kSgdByteOffset, "the index") != 0)
+        in.fail("has a corrupt index: sgdByteOffset is " + std::to_string(in.get<uint64_t>(kSgdByteOffset, "the index")) +
+                " with no supercompression global data (the specification requires 0)");
+}
+
+// The specification's rules on the levels' places: each offset a multiple of lcm(texel size, 4),
+// and no two levels sharing a byte.
+void requireLevelsApartAndAligned(const ByteReader& in, const Texture& texture) {
+    const uint64_t texel = bytesPerTexel(texture.format);
+    const uint64_t alignment = std::lcm(texel, uint64_t(4));
+    std::vector<std::pair<uint64_t, uint64_t>> ranges;
+    for (uint32_t mip = 0; mip < texture.mips; ++mip) {
+        const size_t entry = kLevelIndex + kLevelIndexEntry * mip;
+        const uint64_t offset = in.get<uint64_t>(entry, "the level index"), length = in.get<uint64_t>(entry + 8, "the level index");
+        if (offset % alignment != 0)
+            in.fail("has a corrupt level index: level " + std::to_string(mip) + " starts at " + std::to_string(offset) +
+                    ", not a multiple of " + std::to_string(alignment) + " (the specification aligns levels to lcm(texel size, 4))");
+        ranges.emplace_back(offset, length);
+    }
+    for (size_t a = 0; a < ranges.size(); ++a)
+        for (size_t b = a + 1; b < ranges.size(); ++b)
+            if (ranges[a].first < ranges[b].first + ranges[b].second && ranges[b].first < ranges[a].first + ranges[a].second)
+                in.fail("has a corrupt level index: levels " + std::to_string(a) + " and " + std::to_string(b) + " overlap");
 }
 
 std::vector<std::byte> readLevel(const ByteReader& in, const Texture& texture, uint32_t mip, size_t levelIndexEnd) {
@@ -118,6 +147,7 @@ Texture decodeKtx2(std::span<const std::byte> bytes, const std::string& name) {
     requireIndexInsideFile(in, levelIndexEnd);
     for (uint32_t mip = 0; mip < texture.mips; ++mip)
         texture.levels.push_back(readLevel(in, texture, mip, levelIndexEnd));
+    requireLevelsApartAndAligned(in, texture);
     return texture;
 }
 

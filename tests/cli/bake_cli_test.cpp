@@ -2,11 +2,14 @@
 // of bad input one line naming the problem, a non-zero exit and the output folder untouched.
 #include "bake_cli_fixture.hpp"
 #include "float_image.hpp"
+#include "ktx2.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <csignal>
+#include <fstream>
 #include <limits>
+#include <span>
 #include <sys/stat.h>
 
 namespace iblkit::testing {
@@ -164,6 +167,25 @@ TEST_F(BakeCli, NonFiniteTexelsAreRefusedUnlessSanitized) {
     const auto result = iblkit(small({"bake", at("nan.exr"), "-o", at("out"), "--sanitize", "--json"}));
     ASSERT_EQ(result.exitCode, 0) << result.err;
     EXPECT_EQ(nlohmann::json::parse(result.out)["sanitized_texels"], 2);
+}
+
+// A NaN in a cube file was named by its row across the six stacked faces (row 13 of -Y's row 1);
+// now by its face, with the face's own column and row. Two files for one face are ambiguous.
+TEST_F(BakeCli, ACubeInputsBadTexelIsNamedByItsFaceAndAFaceGivenTwiceIsRefused) {
+    image_io::Texture cube{image_io::PixelFormat::Rgba32Float, 4, 4, 6, 1, {}};
+    std::vector<float> texels(6 * 4 * 4 * 4, 1.f);
+    texels[((3 * 4 + 1) * 4 + 2) * 4 + 1] = std::numeric_limits<float>::quiet_NaN(); // -Y, row 1, column 2
+    const auto bytes = std::as_bytes(std::span(texels));
+    cube.levels.emplace_back(bytes.begin(), bytes.end());
+    const auto encoded = image_io::encodeKtx2(cube, "test");
+    std::ofstream(scratch.path() / "cube.ktx2", std::ios::binary)
+        .write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
+    expectFailure(small({"bake", at("cube.ktx2"), "-o", at("out")}),
+                  "'" + at("cube.ktx2") + "' face -Y has 1 NaN/Inf texel (the first at column 2, row 1: nan)");
+    for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"})
+        scratch.write(std::string("faces/") + face + ".hdr", radianceHdr(16, 16, 129));
+    scratch.write("faces/ny.exr", "an exr beside ny.hdr");
+    expectFailure(small({"bake", at("faces"), "-o", at("out")}), "has 2 files for the -Y face ('ny.hdr' and 'ny.exr'): keep one");
 }
 
 TEST_F(BakeCli, TheDocumentsMethodReproducesItsOutputsFromBeforeTheKitsOwnMethods) {

@@ -162,5 +162,19 @@ TEST(ImageIoKtx2Reader, RefusesACorruptLevelIndex) {
     EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 80, 0)).find("level 0 starts inside the header"), std::string::npos);
 }
 
+// Accepted before: the specification requires each of these, and a reader that takes them reads
+// garbage or one level twice.
+TEST(ImageIoKtx2Reader, RefusesWhatTheSpecificationForbidsInTheIndex) {
+    const auto cube = smallCube();
+    const uint64_t level1 = peek64(cube, 80 + 24), level2 = peek64(cube, 80 + 48);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(cube, 80 + 24, level2)).find("levels 1 and 2 overlap"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(cube, 80 + 24, level1 + 4)).find("level 1 starts at " + std::to_string(level1 + 4) +
+                                                                         ", not a multiple of 8"),
+              std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(cube, 64, 200)).find("sgdByteOffset is 200 with no supercompression global data"),
+              std::string::npos);
+    EXPECT_NO_THROW(decodeKtx2(cube, "good.ktx2"));
+}
+
 } // namespace
 } // namespace iblkit::image_io
