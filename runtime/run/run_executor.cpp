@@ -72,12 +72,19 @@ public:
                 throw RunError(spec_.shader.string() + ": error: " + error.what());
             }
         }();
-        for (const auto& resource : spec_.resources) makeAndBind(resource, compute);
+        // The driver's and the runtime's errors name no run file or key: each step adds them.
+        for (const auto& resource : spec_.resources)
+            withKey("resources." + resource.name, [&] { makeAndBind(resource, compute); });
         if (program.reflection.pushConstantSize > 0)
-            compute.setPushConstants(vulkan::packBlock(program.reflection.pushConstantBlock, program.reflection.pushConstants,
-                                                       program.reflection.pushConstantSize, spec_.pushConstants));
-        const auto timing = spec_.threads ? compute.dispatchThreads(context_, *spec_.threads)
-                                          : compute.dispatchGroups(context_, *spec_.groups);
+            withKey("push_constants", [&] {
+                compute.setPushConstants(vulkan::packBlock(program.reflection.pushConstantBlock, program.reflection.pushConstants,
+                                                           program.reflection.pushConstantSize, spec_.pushConstants));
+            });
+        vulkan::DispatchTiming timing{};
+        withKey("dispatch", [&] {
+            timing = spec_.threads ? compute.dispatchThreads(context_, *spec_.threads)
+                                   : compute.dispatchGroups(context_, *spec_.groups);
+        });
         fmt::print(out_, "dispatch {}x{}x{} groups: {} on the device, {:.3f} ms wall\n", timing.groups[0], timing.groups[1],
                    timing.groups[2],
                    timing.deviceMilliseconds >= 0 ? fmt::format("{:.3f} ms", timing.deviceMilliseconds) : "no timestamps",
@@ -97,6 +104,18 @@ public:
 private:
     [[noreturn]] void fail(const std::string& why) const {
         throw RunError(spec_.runFile.string() + ": error: " + why);
+    }
+
+    // Runs a step, turning a VulkanError or a driver's vk::SystemError into "<run file>: error: key: ...".
+    template <typename Step>
+    void withKey(const std::string& key, Step step) const {
+        try {
+            step();
+        } catch (const vulkan::VulkanError& error) {
+            fail(key + ": " + error.what());
+        } catch (const vk::SystemError& error) {
+            fail(key + ": " + error.what());
+        }
     }
 
     void checkNames(const compiler::ShaderReflection& reflection) const {

@@ -10,7 +10,12 @@ namespace iblkit::vulkan {
 Buffer::Buffer(const VulkanContext& context, vk::DeviceSize size, vk::BufferUsageFlags usage, const std::string& name)
     : name_(name), size_(size) {
     if (size == 0) throw VulkanError("buffer '" + name + "' has size 0");
-    buffer_ = vk::raii::Buffer(context.device(), vk::BufferCreateInfo({}, size, usage, vk::SharingMode::eExclusive));
+    try {
+        buffer_ = vk::raii::Buffer(context.device(), vk::BufferCreateInfo({}, size, usage, vk::SharingMode::eExclusive));
+    } catch (const vk::SystemError& error) {
+        throw VulkanError("buffer '" + name + "' of " + std::to_string(size) + " bytes cannot be made on this device (" +
+                          error.what() + ")");
+    }
     memory_ = allocateMemory(context, buffer_.getMemoryRequirements(),
                              vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent,
                              "buffer '" + name + "'");

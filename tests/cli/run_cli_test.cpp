@@ -162,6 +162,22 @@ TEST_F(RunCli, ASaveOntoAnInputOrOntoAnotherSaveIsRefused) {
     EXPECT_FALSE(fs::exists(folder / "a.npy"));
 }
 
+// The driver's refusals named neither the run file nor the resource.
+TEST_F(RunCli, ABufferTooLargeForTheDeviceIsNamedByItsKey) {
+    std::ofstream(folder / "out.hlsl") << "RWStructuredBuffer<float> Out;\n"
+                                          "[numthreads(1, 1, 1)] void main(uint3 id : SV_DispatchThreadId) { Out[id.x] = 1.f; }\n";
+    const json run = {{"shader", (folder / "out.hlsl").string()},
+                      {"resources", {{"Out", {{"kind", "buffer"}, {"count", 4294967295u}}}}},
+                      {"dispatch", {{"threads", {1, 1, 1}}}}};
+    expectError(run, "test.run.json: error: resources.Out: buffer 'Out' of 17179869180 bytes cannot be made on this device");
+}
+
+TEST_F(RunCli, ADispatchPastTheDevicesLimitNamesTheRunFile) {
+    auto run = fastPrefilter();
+    run["dispatch"] = {{"groups", {65536, 1, 1}}};
+    expectError(run, "test.run.json: error: dispatch: dispatch of 65536 groups on axis 0 exceeds the device's limit of 65535");
+}
+
 TEST_F(RunCli, PushConstantsForAShaderThatHasNone) {
     auto run = fastPrefilter();
     run["push_constants"] = {{"Roughness", 0.5}};
