@@ -121,6 +121,14 @@ TEST_F(Cli, UnknownFlag) {
     expectFailure({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "--fast-math"}, "iblkit: error:");
 }
 
+// It said "A subcommand is required".
+TEST_F(Cli, AnUnknownCommandIsNamedWithTheCommands) {
+    const auto result = iblkit({"frobnicate"});
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_EQ(result.err, "iblkit: error: unknown command 'frobnicate' (commands: compile, compile-all, devices, run, "
+                          "consistency, stress, bake, bench, lut-fit)\n");
+}
+
 TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {
     const auto result = iblkit({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("lut.spv"), "--glsl",
                                 at("no/such/folder/lut.glsl")});

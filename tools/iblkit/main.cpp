@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 int main(int argc, char** argv) {
@@ -28,6 +29,17 @@ int main(int argc, char** argv) {
     iblkit::cli::addBakeCommand(app);
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);
+    // CLI11 calls a word it does not know "A subcommand is required"; name it and the commands.
+    const auto commands = app.get_subcommands({});
+    const auto known = [&](const std::string& word) {
+        return std::any_of(commands.begin(), commands.end(), [&](const CLI::App* command) { return command->get_name() == word; });
+    };
+    if (argc > 1 && argv[1][0] != '-' && !known(argv[1])) {
+        std::string names;
+        for (const auto* command : commands) names += (names.empty() ? "" : ", ") + command->get_name();
+        fmt::print(stderr, "iblkit: error: unknown command '{}' (commands: {})\n", argv[1], names);
+        return 2;
+    }
     try {
         app.parse(iblkit::cli::normalizeArguments(argc, argv));
     } catch (const CLI::CallForHelp& help) {
