@@ -5,6 +5,8 @@
 #include "shader_manifest.hpp"
 #include "suite_run.hpp"
 
+#include <filesystem>
+
 namespace iblkit::consistency {
 namespace {
 
@@ -20,8 +22,11 @@ bool isSampled(kernels::KernelRole role) {
 SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCount) {
     SuiteOptions options;
     options.sampleCount = sampleCount;
+    // Outside a source tree there is no hlsl/shaders.json: the copy built into the program serves.
+    std::error_code error;
+    const bool onDisk = std::filesystem::exists(manifest, error);
     for (const auto& kernel : kernels::kernelTable()) {
-        auto shader = compiler::manifestShaderOptions(manifest, kernel.name);
+        auto shader = onDisk ? compiler::manifestShaderOptions(manifest, kernel.name) : kernels::optionsReading(kernel);
         if (isSampled(kernel.role)) shader.defines["SAMPLE_COUNT"] = std::to_string(sampleCount);
         if (kernel.belongsTo(kernels::kQuadratureLutMethod))
             shader.defines["SAMPLE_COUNT"] = std::to_string(kernels::kDefaultQuadratureNodes);

@@ -49,8 +49,9 @@ struct SuiteOptions {
     std::map<std::string, compiler::CompileOptions> shaders;
 };
 
-// The options the suite runs every kernel with: the manifest's, with SAMPLE_COUNT set and the
-// LUTs written as R32G32_SFLOAT (so that the comparison measures arithmetic, not storage).
+// The options the suite runs every kernel with: the manifest's (or, when there is no such file,
+// those of the hlsl/ built into the program), with SAMPLE_COUNT set and the LUTs written as
+// R32G32_SFLOAT (so that the comparison measures arithmetic, not storage).
 SuiteOptions defaultSuiteOptions(const std::string& manifest = "hlsl/shaders.json", uint32_t sampleCount = 1024);
 
 // Bounds on the largest absolute error and the RMS error of a path, against each reference.

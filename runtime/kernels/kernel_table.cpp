@@ -86,14 +86,19 @@ std::vector<std::string> methodsOf(KernelRole role) {
     return methods;
 }
 
-KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::string, std::string>& defines,
-                            const std::map<std::string, std::string>& imageFormats, const ShaderFiles& files) {
+compiler::CompileOptions optionsReading(const KernelEntry& kernel, const ShaderFiles& files) {
     auto options = kernel.options;
     const auto source = options.source.generic_string();
     const auto text = files.find(source);
     if (text == files.end()) throw std::out_of_range("the shader files have no " + source);
     options.sourceText = text->second;
     options.virtualFiles = files;
+    return options;
+}
+
+KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::string, std::string>& defines,
+                            const std::map<std::string, std::string>& imageFormats, const ShaderFiles& files) {
+    auto options = optionsReading(kernel, files);
     for (const auto& [name, value] : defines) options.defines[name] = value;
     for (const auto& [name, format] : imageFormats) options.imageFormats[name] = format;
     const auto shader = compiler::compileShader(options);

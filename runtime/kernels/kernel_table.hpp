@@ -65,6 +65,9 @@ struct KernelProgram {
 // Shader files to compile from: the built-in hlsl/, with some files replaced (by path).
 using ShaderFiles = std::map<std::string, std::string>;
 
+// The kernel's compile options with its source and includes served from `files`.
+compiler::CompileOptions optionsReading(const KernelEntry& kernel, const ShaderFiles& files = embeddedShaderFiles());
+
 // Compiles a kernel from `files` with the kit's compiler, adding defines and storage image
 // formats to the manifest's. Throws compiler::CompileError.
 KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::string, std::string>& defines = {},

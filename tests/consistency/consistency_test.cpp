@@ -72,6 +72,18 @@ TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     }
 }
 
+// Outside a source tree `iblkit consistency` said only "hlsl/shaders.json: no such file"; it now
+// runs the copy of hlsl/ built into the program.
+TEST(ConsistencyOptions, WithoutAManifestOnDiskTheBuiltInShadersServe) {
+    const auto options = defaultSuiteOptions("no/such/folder/shaders.json", 16);
+    ASSERT_EQ(options.shaders.size(), kernels::kernelTable().size());
+    for (const auto& [name, shader] : options.shaders) {
+        ASSERT_TRUE(shader.sourceText.has_value()) << name;
+        EXPECT_FALSE(shader.virtualFiles.empty()) << name;
+    }
+    EXPECT_NO_THROW(compileForPath(ShaderPath::Glslang, options.shaders.at("PbrProbeCS")));
+}
+
 // A copy of hlsl/ with one change, compiled through the same paths.
 class BrokenVariant : public ::testing::Test {
 protected:
