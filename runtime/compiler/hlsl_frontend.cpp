@@ -5,6 +5,7 @@
 #include "glslang_process.hpp"
 #include "hlsl_register_resolver.hpp"
 #include "bounded_child.hpp"
+
 #include "include_resolver.hpp"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -16,6 +17,9 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+
+#include <algorithm>
+#include <cctype>
 
 namespace iblkit::compiler {
 namespace {
@@ -74,15 +78,44 @@ std::string preprocess(const CompileOptions& options, const std::string& sourceN
     return preprocessed;
 }
 
+// No definition of the entry point was found: a syntax error in it is the likelier cause, and
+// glslang names its place; only when it finds none is the entry point missing.
+ShaderStage deduceOrReportSyntax(const std::string& preprocessed, const CompileOptions& options,
+                                 const std::string& sourceName, const std::string& text) {
+    try {
+        return deduceStage(preprocessed, options.entryPoint, sourceName);
+    } catch (const CompileError&) {
+        IncludeResolver includes(options.includeDirs, &options.virtualFiles);
+        includes.addSource(sourceName, text);
+        ConfiguredShader configured(EShLangFragment, options, sourceName, text);
+        if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes) &&
+            configured.shader.getInfoLog() != std::string() &&
+            std::string(configured.shader.getInfoLog()).find("Entry point not found") == std::string::npos)
+            failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
+        throw;
+    }
+}
+
+// -D names reach glslang as "#define NAME VALUE" in a preamble, whose errors have no place.
+void requireMacroNames(const CompileOptions& options, const std::string& sourceName) {
+    for (const auto& [name, value] : options.defines) {
+        const bool identifier = !name.empty() && !std::isdigit(static_cast<unsigned char>(name.front())) &&
+                                std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+        if (!identifier)
+            throw CompileError(sourceName + ": error: define '" + name + (value.empty() ? "" : "=" + value) +
+                               "': '" + name + "' is not a macro name (letters, digits and '_', not starting with a digit)");
+    }
+}
+
 ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
     if (options.boundPreprocessing) {
         const auto preprocessed = runInBoundedChild([&] { return preprocess(options, sourceName, text); }, {}, sourceName,
                                                     "preprocessing",
                                                     ": a macro that expands without bound, or an #include that never ends?");
-        return options.stage ? *options.stage : deduceStage(preprocessed, options.entryPoint, sourceName);
+        return options.stage ? *options.stage : deduceOrReportSyntax(preprocessed, options, sourceName, text);
     }
     if (options.stage) return *options.stage;
-    return deduceStage(preprocess(options, sourceName, text), options.entryPoint, sourceName);
+    return deduceOrReportSyntax(preprocess(options, sourceName, text), options, sourceName, text);
 }
 
 } // namespace
@@ -104,6 +137,7 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     initializeGlslangOnce();
     const std::string sourceName = options.source.string();
     const std::string text = options.sourceText ? *options.sourceText : readSource(options.source);
+    requireMacroNames(options, sourceName);
     const ShaderStage stage = stageOf(options, sourceName, text);
     const EShLanguage language = toGlslang(stage);
 

@@ -114,6 +114,32 @@ TEST_F(CompileErrors, AMacroThatExpandsWithoutBoundEndsAtTheLimit) {
     EXPECT_NE(message.find("a macro that expands without bound"), std::string::npos) << message;
 }
 
+// A syntax error in the entry's own signature was reported as "entry point 'main' is not
+// defined", with no place; glslang's first parse error is reported instead.
+TEST_F(CompileErrors, ASyntaxErrorInTheEntrysSignatureIsReportedWhereItIs) {
+    const auto source = folder.write("signature.hlsl", "RWStructuredBuffer<float> O;\n[numthreads(1, 1, 1)]\n"
+                                                       "void main( : SV_DispatchThreadID) { O[0] = 1; }\n");
+    EXPECT_EQ(errorOf(source), source.string() + ":3:33: error: ')' : Expected");
+    const auto missing = folder.write("missing.hlsl", "RWStructuredBuffer<float> O;\n[numthreads(1, 1, 1)] void CSMain() { O[0] = 1; }\n");
+    EXPECT_EQ(errorOf(missing), missing.string() + ": error: entry point 'main' is not defined");
+}
+
+// "-D =5" was reported at -1:1:1, and "-D FOO-BAR" passed with a warning.
+TEST_F(CompileErrors, ADefineWhoseNameIsNoIdentifierIsRefused) {
+    const auto source = folder.write("ok.hlsl", kValidBody);
+    for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{{"", "5"}, {"FOO-BAR", ""}, {"1X", "2"}}) {
+        CompileOptions options;
+        options.source = source;
+        options.defines[name] = value;
+        try {
+            compileShader(options);
+            ADD_FAILURE() << "'" << name << "' was taken";
+        } catch (const CompileError& error) {
+            EXPECT_NE(std::string(error.what()).find("'" + name + "' is not a macro name"), std::string::npos) << error.what();
+        }
+    }
+}
+
 TEST_F(CompileErrors, BoundedPreprocessingReportsTheSameErrors) {
     const auto source = folder.write("syntax.hlsl", "#include \"Nowhere.fxh\"\n");
     EXPECT_EQ(errorOf(source, "main", true), errorOf(source));
