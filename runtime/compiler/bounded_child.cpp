@@ -33,7 +33,7 @@ void writeAll(int fd, const std::string& bytes) {
 
 [[noreturn]] void runChild(int fd, const std::function<std::string()>& work, const ChildLimits& limits,
                            size_t addressSpace) {
-    const rlimit cpu{limits.cpuSeconds, limits.cpuSeconds};
+    const rlimit cpu{limits.cpuSeconds, limits.cpuSeconds + 2}; // SIGXCPU at the soft limit, SIGKILL only later
     setrlimit(RLIMIT_CPU, &cpu);
     const rlim_t bytes = addressSpace + limits.extraMegabytes * (size_t(1) << 20);
     const rlimit memory{bytes, bytes};

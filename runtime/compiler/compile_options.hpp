@@ -30,9 +30,10 @@ struct CompileOptions {
     // Storage image formats by HLSL resource name, in glslang's spelling ("rg16f", "rgba8", ...).
     std::map<std::string, std::string> imageFormats;
     BindingShifts bindingShifts;
-    // Preprocess first in a child process with time and memory limits (bounded_child.hpp), so
-    // that a source from a user whose macros expand without bound is an error, not a hang: the
-    // command-line tool sets it; the kit's own shaders need no such guard.
+    // Run glslang's front end first in a child process with time and memory limits
+    // (bounded_child.hpp), so that a source from a user whose macros expand without bound, or on
+    // which glslang crashes, is an error, not a hang or a crash: the command-line tool sets it;
+    // the kit's own shaders need no such guard.
     bool boundPreprocessing = false;
 };
 

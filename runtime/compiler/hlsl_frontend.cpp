@@ -108,12 +108,6 @@ void requireMacroNames(const CompileOptions& options, const std::string& sourceN
 }
 
 ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
-    if (options.boundPreprocessing) {
-        const auto preprocessed = runInBoundedChild([&] { return preprocess(options, sourceName, text); }, {}, sourceName,
-                                                    "preprocessing",
-                                                    ": a macro that expands without bound, or an #include that never ends?");
-        return options.stage ? *options.stage : deduceOrReportSyntax(preprocessed, options, sourceName, text);
-    }
     if (options.stage) return *options.stage;
     return deduceOrReportSyntax(preprocess(options, sourceName, text), options, sourceName, text);
 }
@@ -138,6 +132,16 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     const std::string sourceName = options.source.string();
     const std::string text = options.sourceText ? *options.sourceText : readSource(options.source);
     requireMacroNames(options, sourceName);
+    if (options.boundPreprocessing) {
+        // The whole front end first in a child with limits: glslang loops on a macro that
+        // expands without bound, and crashes on some sources (an unnamed entry-point parameter).
+        auto trial = options;
+        trial.boundPreprocessing = false;
+        trial.sourceText = text;
+        runInBoundedChild([&] { return (compileHlsl(trial), std::string()); }, {}, sourceName, "glslang",
+                          " on this source (a macro that expands without bound, an #include that never ends, "
+                          "or a glslang bug)");
+    }
     const ShaderStage stage = stageOf(options, sourceName, text);
     const EShLanguage language = toGlslang(stage);
 

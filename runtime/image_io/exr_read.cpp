@@ -91,15 +91,16 @@ FloatImage readExrBytes(std::span<const std::byte> bytes, const std::filesystem:
 
 } // namespace
 
-FloatImage readExr(const std::filesystem::path& path) {
-    const auto bytes = readFileBytes(path);
+FloatImage decodeExr(std::span<const std::byte> bytes, const std::filesystem::path& name) {
     try {
-        return readExrBytes(bytes, path);
+        return readExrBytes(bytes, name);
     } catch (const ImageError&) {
         throw;
     } catch (const std::exception& error) {
-        throw ImageError(quoted(path) + " is not a readable OpenEXR image: " + oneLine(error.what()));
+        throw ImageError(quoted(name) + " is not a readable OpenEXR image: " + oneLine(error.what()));
     }
 }
+
+FloatImage readExr(const std::filesystem::path& path) { return decodeExr(readFileBytes(path), path); }
 
 } // namespace iblkit::image_io

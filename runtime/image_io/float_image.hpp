@@ -17,10 +17,13 @@ struct FloatImage {
 // #?RGBE are refused rather than converted from 8 bits, and truncated or corrupt pixel data is
 // refused before stb_image sees it (it would read black past the end, or loop forever).
 FloatImage readRadianceHdr(const std::filesystem::path& path);
+// The same from bytes in memory; `name` names them in messages.
+FloatImage decodeRadianceHdr(std::span<const std::byte> bytes, const std::filesystem::path& name);
 // OpenEXR through Imf::InputFile with a 32-bit float frame buffer, so half, float and uint
 // channels and every compression read without loss; R, G, B and A (1 where absent) over the data
 // window. Luminance/chroma files (Y, RY, BY) go through Imf::RgbaInputFile instead. 4 channels.
 FloatImage readExr(const std::filesystem::path& path);
+FloatImage decodeExr(std::span<const std::byte> bytes, const std::filesystem::path& name);
 // By extension, case-insensitive: .hdr/.pic -> readRadianceHdr, .exr -> readExr.
 FloatImage readFloatImage(const std::filesystem::path& path);
 

@@ -11,8 +11,9 @@
 
 namespace iblkit::image_io {
 
-FloatImage readRadianceHdr(const std::filesystem::path& path) {
-    const auto bytes = readFileBytes(path);
+FloatImage readRadianceHdr(const std::filesystem::path& path) { return decodeRadianceHdr(readFileBytes(path), path); }
+
+FloatImage decodeRadianceHdr(std::span<const std::byte> bytes, const std::filesystem::path& path) {
     const RadianceLayout layout = readRadianceLayout(bytes, path.string());
     requireCompletePixelData(bytes, layout, path.string());
     if (bytes.size() > size_t(INT_MAX)) throw ImageError(quoted(path) + " is larger than stb_image reads (2 GiB)");

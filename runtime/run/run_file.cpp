@@ -182,9 +182,13 @@ RunSpec readRunFile(const std::filesystem::path& path) {
     if (!stream) throw RunError(path.string() + ": error: cannot read the run file");
     std::ostringstream text;
     text << stream.rdbuf();
+    return parseRunFile(text.str(), path);
+}
+
+RunSpec parseRunFile(const std::string& text, const std::filesystem::path& path) {
     const Reader reader(path);
     try {
-        return reader.read(json::parse(text.str()), path);
+        return reader.read(json::parse(text), path);
     } catch (const json::parse_error& error) {
         throw RunError(path.string() + ": error: not valid JSON: " + error.what());
     } catch (const json::exception& error) {

@@ -67,5 +67,7 @@ struct RunSpec {
 // Reads a run file (docs/run-files.md); paths in it are relative to the file.
 // Throws RunError naming the file, the key and the problem.
 RunSpec readRunFile(const std::filesystem::path& path);
+// The same from the file's text; paths in it are relative to `path`'s folder.
+RunSpec parseRunFile(const std::string& text, const std::filesystem::path& path);
 
 } // namespace iblkit::run

@@ -1,0 +1,1 @@
+float4 main(float4  : SV_Position) : SV_Target { return p; }

@@ -1,0 +1,79 @@
+#include "fuzz_targets.hpp"
+
+#include "compile_error.hpp"
+#include "compiler.hpp"
+#include "dds.hpp"
+#include "float_image.hpp"
+#include "image_error.hpp"
+#include "ktx2.hpp"
+#include "run_error.hpp"
+#include "run_file.hpp"
+#include "shader_manifest.hpp"
+
+#include <string>
+
+namespace iblkit::fuzz {
+namespace {
+
+std::string text(std::span<const std::byte> bytes) { return {reinterpret_cast<const char*>(bytes.data()), bytes.size()}; }
+
+void radianceHdr(std::span<const std::byte> bytes) {
+    try {
+        image_io::decodeRadianceHdr(bytes, "fuzz.hdr");
+    } catch (const image_io::ImageError&) {}
+}
+
+void exr(std::span<const std::byte> bytes) {
+    try {
+        image_io::decodeExr(bytes, "fuzz.exr");
+    } catch (const image_io::ImageError&) {}
+}
+
+void ktx2(std::span<const std::byte> bytes) {
+    try {
+        image_io::decodeKtx2(bytes, "fuzz.ktx2");
+    } catch (const image_io::ImageError&) {}
+}
+
+void dds(std::span<const std::byte> bytes) {
+    try {
+        image_io::decodeDds(bytes, "fuzz.dds");
+    } catch (const image_io::ImageError&) {}
+}
+
+void runFile(std::span<const std::byte> bytes) {
+    try {
+        run::parseRunFile(text(bytes), "fuzz.run.json");
+    } catch (const run::RunError&) {}
+}
+
+void shaderManifest(std::span<const std::byte> bytes) {
+    try {
+        compiler::parseShaderManifest(text(bytes), "fuzz/shaders.json");
+    } catch (const compiler::CompileError&) {}
+}
+
+// The whole compile entry as the command-line tool runs it (glslang first in a bounded child,
+// since glslang itself crashes on some sources): preprocessing, glslang, SPIRV-Tools,
+// reflection; no file is read.
+void hlsl(std::span<const std::byte> bytes) {
+    compiler::CompileOptions options;
+    options.source = "fuzz.hlsl";
+    options.sourceText = text(bytes);
+    options.boundPreprocessing = true;
+    try {
+        compiler::compileShader(options);
+    } catch (const compiler::CompileError&) {}
+}
+
+} // namespace
+
+const std::vector<Target>& targets() {
+    static const std::vector<Target> all{{"radiance_hdr", radianceHdr}, {"exr", exr},
+                                         {"ktx2", ktx2},                 {"dds", dds},
+                                         {"run_file", runFile},          {"shader_manifest", shaderManifest},
+                                         {"hlsl", hlsl}};
+    return all;
+}
+
+} // namespace iblkit::fuzz
