@@ -61,8 +61,10 @@ void checkTexels(EnvironmentInput& input, std::span<float> values, uint32_t chan
     input.negative.mostNegative = std::min(input.negative.mostNegative, negative.mostNegative);
 }
 
+// The input's bytes are read once: hashed for the manifest and decoded from the same copy.
 EnvironmentInput loadPanorama(const fs::path& path, const InputPolicy& policy) {
-    EnvironmentInput input{InputKind::Panorama, {{path, sha256OfFile(path)}}, image_io::readFloatImage(path), 0, {}, 0, {}};
+    const auto bytes = image_io::readFileBytes(path);
+    EnvironmentInput input{InputKind::Panorama, {{path, sha256Hex(bytes)}}, image_io::decodeFloatImage(bytes, path), 0, {}, 0, {}};
     auto& image = input.panorama;
     if (image.width != 2 * image.height)
         throw BakeError(fmt::format("{} is {}x{}; an equirectangular panorama must be twice as wide as it is high",
@@ -92,7 +94,8 @@ EnvironmentInput loadFaces(const fs::path& folder, const InputPolicy& policy) {
     EnvironmentInput input{InputKind::Faces, {}, {}, 0, {}, 0, {}};
     for (int face = 0; face < 6; ++face) {
         const auto path = findFace(folder, face);
-        auto image = image_io::readFloatImage(path);
+        const auto bytes = image_io::readFileBytes(path);
+        auto image = image_io::decodeFloatImage(bytes, path);
         if (image.width != image.height)
             throw BakeError(fmt::format("{} is {}x{}; a cube face must be square", quoted(path), image.width, image.height));
         if (face == 0) input.cubeSize = image.width;
@@ -102,13 +105,14 @@ EnvironmentInput loadFaces(const fs::path& folder, const InputPolicy& policy) {
         checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
         const auto rgba = image_io::rgbaValues(image);
         input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
-        input.files.push_back({path, sha256OfFile(path)});
+        input.files.push_back({path, sha256Hex(bytes)});
     }
     return input;
 }
 
 EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
-    const auto texture = image_io::readTextureFile(path);
+    const auto bytes = image_io::readFileBytes(path);
+    const auto texture = image_io::decodeTextureFile(bytes, path);
     if (texture.faces != 6) throw BakeError(quoted(path) + " is a 2D texture, not a cube");
     if (texture.width != texture.height) throw BakeError(quoted(path) + " has faces that are not square");
     if (image_io::channelCount(texture.format) != 4)
@@ -116,7 +120,7 @@ EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
                                     image_io::vulkanFormatName(texture.format)));
     auto values = image_io::textureValues(texture);
     values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
-    EnvironmentInput input{InputKind::Cube, {{path, sha256OfFile(path)}}, {}, texture.width, std::move(values), 0, {}};
+    EnvironmentInput input{InputKind::Cube, {{path, sha256Hex(bytes)}}, {}, texture.width, std::move(values), 0, {}};
     // Face by face, so that a texel is named by its face's own column and row.
     const size_t faceValues = size_t(texture.width) * texture.height * 4;
     for (size_t face = 0; face < 6; ++face)

@@ -40,7 +40,9 @@ std::string sha256Hex(std::span<const std::byte> bytes) {
 }
 
 std::string sha256OfFile(const std::filesystem::path& path) {
-    return sha256Hex(image_io::readFileBytes(path)); // refuses devices and pipes, which never end
+    Sha256 digest; // a chunk at a time: outputs can be larger than memory wants to hold twice
+    image_io::readFileInChunks(path, [&](std::span<const std::byte> chunk) { digest.add(chunk.data(), chunk.size()); });
+    return digest.hex();
 }
 
 } // namespace iblkit::bake

@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <utility>
+
 namespace iblkit::image_io {
 namespace {
 
@@ -22,6 +24,7 @@ public:
     }
     FileDescriptor(const FileDescriptor&) = delete;
     FileDescriptor& operator=(const FileDescriptor&) = delete;
+    FileDescriptor(FileDescriptor&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
     int get() const { return fd_; }
 
 private:
@@ -32,36 +35,70 @@ private:
     throw ImageError(std::string(verb) + " " + quoted(path) + ": " + std::strerror(error));
 }
 
-} // namespace
-
-std::vector<std::byte> readFileBytes(const std::filesystem::path& path) {
-    // O_NONBLOCK: opening a FIFO would wait for a writer. A device (/dev/zero) has no end.
-    const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+// A regular file opened for reading, and its size. O_NONBLOCK: opening a FIFO would wait for a
+// writer. A device (/dev/zero) has no end.
+FileDescriptor openRegularFile(const std::filesystem::path& path, size_t& size) {
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (file.get() < 0) fail("cannot open", path, errno);
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) fail("cannot open", path, errno);
     if (S_ISDIR(status.st_mode)) fail("cannot open", path, EISDIR);
     if (!S_ISREG(status.st_mode))
         throw ImageError("cannot open " + quoted(path) + ": not a regular file (a device, a pipe or a socket)");
-    std::vector<std::byte> bytes(size_t(status.st_size));
+    size = size_t(status.st_size);
+    return file;
+}
+
+// Reads into `buffer` until it is full or the file ends; the bytes read.
+size_t readInto(const FileDescriptor& file, const std::filesystem::path& path, std::span<std::byte> buffer) {
     size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::read(file.get(), bytes.data() + done, bytes.size() - done);
+    while (done < buffer.size()) {
+        const ssize_t n = ::read(file.get(), buffer.data() + done, buffer.size() - done);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) fail("cannot read", path, errno);
-        if (n == 0) break; // the file shrank while being read
+        if (n == 0) break; // the end, or the file shrank while being read
         done += size_t(n);
     }
-    bytes.resize(done);
+    return done;
+}
+
+} // namespace
+
+std::vector<std::byte> readFileBytes(const std::filesystem::path& path) {
+    size_t size = 0;
+    const FileDescriptor file = openRegularFile(path, size);
+    std::vector<std::byte> bytes(size);
+    bytes.resize(readInto(file, path, bytes));
     return bytes;
 }
 
-Texture readTextureFile(const std::filesystem::path& path) {
+void readFileInChunks(const std::filesystem::path& path, const std::function<void(std::span<const std::byte>)>& chunk) {
+    size_t size = 0;
+    const FileDescriptor file = openRegularFile(path, size);
+    std::vector<std::byte> buffer(size_t(1) << 20);
+    for (size_t got; (got = readInto(file, path, buffer)) > 0;) chunk(std::span(buffer).first(got));
+}
+
+namespace {
+
+// Checked before the file is opened, so that an unsupported name is named as such.
+void requireTextureName(const std::filesystem::path& path) {
     const auto extension = lowerExtension(path);
-    if (extension == ".ktx2") return decodeKtx2(readFileBytes(path), path.string());
-    if (extension == ".dds") return decodeDds(readFileBytes(path), path.string());
-    throw ImageError("unsupported texture format " + describedExtension(path) + " for " + quoted(path) +
-                     " (supported: .ktx2, .dds)");
+    if (extension != ".ktx2" && extension != ".dds")
+        throw ImageError("unsupported texture format " + describedExtension(path) + " for " + quoted(path) +
+                         " (supported: .ktx2, .dds)");
+}
+
+} // namespace
+
+Texture readTextureFile(const std::filesystem::path& path) {
+    requireTextureName(path);
+    return decodeTextureFile(readFileBytes(path), path);
+}
+
+Texture decodeTextureFile(std::span<const std::byte> bytes, const std::filesystem::path& path) {
+    requireTextureName(path);
+    return lowerExtension(path) == ".ktx2" ? decodeKtx2(bytes, path.string()) : decodeDds(bytes, path.string());
 }
 
 } // namespace iblkit::image_io

@@ -1,16 +1,31 @@
 #include "float_image.hpp"
+#include "files.hpp"
 
 #include "file_names.hpp"
 #include "image_error.hpp"
 
 namespace iblkit::image_io {
 
-FloatImage readFloatImage(const std::filesystem::path& path) {
+namespace {
+
+// Checked before the file is opened, so that an unsupported name is named as such.
+void requireFloatImageName(const std::filesystem::path& path) {
     const auto extension = lowerExtension(path);
-    if (extension == ".hdr" || extension == ".pic") return readRadianceHdr(path);
-    if (extension == ".exr") return readExr(path);
-    throw ImageError("unsupported image format " + describedExtension(path) + " for " + quoted(path) +
-                     " (supported: .hdr, .exr)");
+    if (extension != ".hdr" && extension != ".pic" && extension != ".exr")
+        throw ImageError("unsupported image format " + describedExtension(path) + " for " + quoted(path) +
+                         " (supported: .hdr, .exr)");
+}
+
+} // namespace
+
+FloatImage readFloatImage(const std::filesystem::path& path) {
+    requireFloatImageName(path);
+    return decodeFloatImage(readFileBytes(path), path);
+}
+
+FloatImage decodeFloatImage(std::span<const std::byte> bytes, const std::filesystem::path& path) {
+    requireFloatImageName(path);
+    return lowerExtension(path) == ".exr" ? decodeExr(bytes, path) : decodeRadianceHdr(bytes, path);
 }
 
 std::vector<float> rgbaValues(const FloatImage& image) {

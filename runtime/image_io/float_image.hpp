@@ -26,6 +26,8 @@ FloatImage readExr(const std::filesystem::path& path);
 FloatImage decodeExr(std::span<const std::byte> bytes, const std::filesystem::path& name);
 // By extension, case-insensitive: .hdr/.pic -> readRadianceHdr, .exr -> readExr.
 FloatImage readFloatImage(const std::filesystem::path& path);
+// The same from the file's bytes, read once by the caller (who also hashes them).
+FloatImage decodeFloatImage(std::span<const std::byte> bytes, const std::filesystem::path& path);
 
 // The image's texels as RGBA (alpha 1 where the image has none), rows top first.
 std::vector<float> rgbaValues(const FloatImage& image);

@@ -45,7 +45,6 @@ void judgeRows(const std::string& name, uint32_t size, const std::vector<consist
         result.relativeError = row.colourError;
         result.bound = boundOf(row.kernel);
         result.knownIssue = row.knownIssue;
-        result.isReference = row.isReference;
         result.passed = result.nonFinite == 0 && (result.relativeError <= result.bound || !row.knownIssue.empty());
         results.push_back(std::move(result));
     }

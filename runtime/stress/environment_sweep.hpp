@@ -19,7 +19,6 @@ struct EnvironmentRow {
     double relativeError = 0;
     double bound = 0;
     std::string knownIssue = {}; // the consistency suite's known divergence: reported, not judged
-    bool isReference = false; // the C++ float reference's own row
     bool passed = false;
 };
 

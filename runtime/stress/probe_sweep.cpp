@@ -60,6 +60,23 @@ bool prefilterDomain(const glm::vec4& argument) { return argument.y >= kSmallest
 // The sample's roughness is the LUT's (the smaller); xi comes from Hammersley, whose xi.y < 1.
 bool sampleDomain(const glm::vec4& argument) { return argument.y >= kSmallestLutArgument && argument.w < 1.f; }
 
+// How each function's arguments read in the list of singular points.
+std::string ofNdotvAndRoughness(const ProbeArguments& arguments, size_t i) {
+    return fmt::format("c = {:g}, r = {:g}", arguments.values[i].x, arguments.values[i].y);
+}
+std::string ofSmith(const ProbeArguments& arguments, size_t i) {
+    const auto& v = arguments.values[i];
+    return fmt::format("N.L = {:g}, N.V = {:g}, r = {:g}", v.z, v.x, v.y);
+}
+std::string ofFresnel(const ProbeArguments& arguments, size_t i) { return fmt::format("cos = {:g}", arguments.values[i].w); }
+std::string ofSample(const ProbeArguments& arguments, size_t i) {
+    const auto& v = arguments.values[i];
+    return fmt::format("xi = ({:g}, {:g}), normal {}, r = {:g}", v.z, v.w, i % 5, v.y);
+}
+std::string ofHammersley(const ProbeArguments& arguments, size_t i) {
+    return fmt::format("i = {}, n = {}", arguments.sampleIndices[i].x, arguments.sampleIndices[i].y);
+}
+
 // A function's place in its probe's results, how its error is measured and where the bake calls
 // it. Each bound is twice the largest error measured on lavapipe where the bake calls the
 // function, rounded up (why each is what it is: docs/stability.md).
@@ -70,30 +87,18 @@ struct ProbeFunction {
     bool relative;
     double bound;
     bool (*calledByBake)(const glm::vec4& argument);
+    std::string (*describe)(const ProbeArguments& arguments, size_t index);
 };
 const ProbeFunction kFunctions[] = {
-    {"DistributionGGX (D)", false, 0, 1, true, 1e-6, prefilterDomain},
-    {"GeometrySmithForIBL (G)", false, 1, 1, false, 2e-7, lutDomain},
-    {"GeometrySchlickGGXForIBL (G1)", false, 2, 1, false, 1e-7, lutDomain},
-    {"FresnelSchlick (F)", false, 4, 3, false, 2.4e-7, anywhere},
-    {"ImportanceSampleGGX", false, 8, 3, false, 0.56, sampleDomain},
-    {"Hammersley", false, 12, 2, false, 4e-8, anywhere},
-    {"IntegrateBRDF (1024 samples)", false, 14, 2, false, 0.35, lutDomain},
-    {"IntegrateBrdfQuadrature (the kit's LUT)", true, 0, 2, false, 3e-6, anywhere},
+    {"DistributionGGX (D)", false, 0, 1, true, 1e-6, prefilterDomain, ofNdotvAndRoughness},
+    {"GeometrySmithForIBL (G)", false, 1, 1, false, 2e-7, lutDomain, ofSmith},
+    {"GeometrySchlickGGXForIBL (G1)", false, 2, 1, false, 1e-7, lutDomain, ofNdotvAndRoughness},
+    {"FresnelSchlick (F)", false, 4, 3, false, 2.4e-7, anywhere, ofFresnel},
+    {"ImportanceSampleGGX", false, 8, 3, false, 0.56, sampleDomain, ofSample},
+    {"Hammersley", false, 12, 2, false, 4e-8, anywhere, ofHammersley},
+    {"IntegrateBRDF (1024 samples)", false, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
+    {"IntegrateBrdfQuadrature (the kit's LUT)", true, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
 };
-
-std::string argumentText(const ProbeFunction& function, const ProbeArguments& arguments, size_t index) {
-    const auto& v = arguments.values[index];
-    const std::string name = function.name;
-    if (function.lutProbe || name.starts_with("IntegrateBRDF") || name.starts_with("Distribution") ||
-        name.starts_with("GeometrySchlick"))
-        return fmt::format("c = {:g}, r = {:g}", v.x, v.y);
-    if (name.starts_with("GeometrySmith")) return fmt::format("N.L = {:g}, N.V = {:g}, r = {:g}", v.z, v.x, v.y);
-    if (name.starts_with("Fresnel")) return fmt::format("cos = {:g}", v.w);
-    if (name.starts_with("Hammersley"))
-        return fmt::format("i = {}, n = {}", arguments.sampleIndices[index].x, arguments.sampleIndices[index].y);
-    return fmt::format("xi = ({:g}, {:g}), normal {}, r = {:g}", v.z, v.w, index % 5, v.y);
-}
 
 const char* finiteness(double value) {
     return std::isnan(value) ? "NaN" : std::isinf(value) ? "Inf" : "finite";
@@ -141,7 +146,7 @@ void recordSingularPoints(const ProbeFunction& function, const ProbeArguments& a
         for (uint32_t k = 0; k < function.count; ++k) {
             const size_t at = a * references.stride + function.first + k;
             if (std::isfinite(references.inDouble[at]) && std::isfinite(references.inFloat[at])) continue;
-            auto text = argumentText(function, arguments, a);
+            auto text = function.describe(arguments, a);
             if (!seen.insert(text).second) continue;
             singular.push_back({function.name, std::move(text), finiteness(references.inDouble[at]),
                                 finiteness(references.inFloat[at]), function.calledByBake(arguments.values[a])});

@@ -36,6 +36,7 @@ double maxError(const std::vector<float>& values, const std::vector<double>& ref
 
 struct Estimator {
     const char* output;
+    bool lut; // else the prefilter
     const char* documentKernel;
     const char* chunkKernel;
     double bound;
@@ -45,7 +46,7 @@ GrowthRow measure(const consistency::SuiteRun& run, const Estimator& estimator, 
     const auto& context = run.vulkan;
     const auto& gl = run.gl;
     using namespace consistency;
-    const bool lut = std::string(estimator.documentKernel) == "PrecomputedBrdfCS";
+    const bool lut = estimator.lut;
     const reference::CubeEnvironment environment(kEnvironmentSize, testSuiteEnvironment().cube(kEnvironmentSize));
     const auto inDouble = lut ? reference::referenceBrdfLut<double>(kLutSize, samples)
                               : reference::referencePrefilter<double>(environment, double(kRoughness), kPrefilterSize, samples);
@@ -82,8 +83,8 @@ GrowthRow measure(const consistency::SuiteRun& run, const Estimator& estimator, 
 
 std::vector<GrowthRow> sweepSampleCounts(const consistency::SuiteRun& run, bool reduced) {
     const Estimator estimators[] = {
-        {"LUT 8² (IntegrateBRDF)", "PrecomputedBrdfCS", "PrecomputedBrdfChunkCS", kLutBound},
-        {"prefilter 2², r = 0.5", "PrefilterSpecularCS", "PrefilterSpecularChunkCS", kPrefilterBound},
+        {"LUT 8² (IntegrateBRDF)", true, "PrecomputedBrdfCS", "PrecomputedBrdfChunkCS", kLutBound},
+        {"prefilter 2², r = 0.5", false, "PrefilterSpecularCS", "PrefilterSpecularChunkCS", kPrefilterBound},
     };
     std::vector<uint32_t> counts;
     for (uint32_t exponent = 0; exponent <= 20; exponent += reduced ? 8 : 2) counts.push_back(1u << exponent);
