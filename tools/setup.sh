@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages iblkit needs (when missing), then configures and builds it.
-# Sourced by tools/run-main.sh and tools/run-tests.sh.
+# Sourced by tools/run-main.sh and tools/run-tests.sh (the default preset) and by tools/fuzz.sh,
+# which sets IBLKIT_PRESET=fuzz and IBLKIT_EXTRA_PACKAGES (its compiler) first.
 set -euo pipefail
+IBLKIT_PRESET=${IBLKIT_PRESET:-default}
 
 readonly IBLKIT_PACKAGES=(
   cmake ninja-build g++ pkg-config
@@ -11,6 +13,7 @@ readonly IBLKIT_PACKAGES=(
   libegl-dev libgl-dev libgl1-mesa-dri
   libopenexr-dev libstb-dev libssl-dev
   python3-matplotlib
+  ${IBLKIT_EXTRA_PACKAGES[@]+"${IBLKIT_EXTRA_PACKAGES[@]}"}
 )
 
 missing_packages() {
@@ -36,8 +39,8 @@ install_missing_packages() {
 }
 
 build_iblkit() {
-  cmake --preset default
-  cmake --build --preset default
+  cmake --preset "$IBLKIT_PRESET"
+  cmake --build --preset "$IBLKIT_PRESET"
 }
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

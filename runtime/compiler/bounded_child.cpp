@@ -31,8 +31,15 @@ void writeAll(int fd, const std::string& bytes) {
     }
 }
 
+// The child dies of a crash's signal itself, not through a handler it inherited (a sanitizer's or
+// a fuzzer's would report glslang's crash as the parent's and write its own files).
+void restoreDefaultCrashHandlers() {
+    for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+}
+
 [[noreturn]] void runChild(int fd, const std::function<std::string()>& work, const ChildLimits& limits,
                            size_t addressSpace) {
+    restoreDefaultCrashHandlers();
     const rlimit cpu{limits.cpuSeconds, limits.cpuSeconds + 2}; // SIGXCPU at the soft limit, SIGKILL only later
     setrlimit(RLIMIT_CPU, &cpu);
     const rlim_t bytes = addressSpace + limits.extraMegabytes * (size_t(1) << 20);

@@ -40,9 +40,9 @@ void requireFileName(const std::string& name) {
 
 void requireKnownKeys(const nlohmann::json& object, const std::string& where, std::initializer_list<const char*> keys) {
     if (!object.is_object()) throw CompileError(where + " must be an object");
-    for (const auto& [key, value] : object.items())
-        if (std::find_if(keys.begin(), keys.end(), [&](const char* known) { return key == known; }) == keys.end())
-            throw CompileError(where + " has an unknown key '" + key + "'");
+    for (const auto& item : object.items())
+        if (std::find(keys.begin(), keys.end(), item.key()) == keys.end())
+            throw CompileError(where + " has an unknown key '" + item.key() + "'");
 }
 
 ManifestShader parseShader(const nlohmann::json& entry, const std::filesystem::path& folder) {

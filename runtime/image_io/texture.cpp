@@ -1,5 +1,6 @@
 #include "texture.hpp"
 
+#include "half_float.hpp"
 #include "image_error.hpp"
 #include "texture_shape.hpp"
 
@@ -9,16 +10,15 @@
 namespace iblkit::image_io {
 namespace {
 
-// g++ 12 converts float to _Float16 with IEEE round-to-nearest-even, overflowing to infinity.
 void storeHalf(std::byte* to, float value) {
-    const _Float16 half = static_cast<_Float16>(value);
+    const uint16_t half = numeric::toHalfBits(value);
     std::memcpy(to, &half, sizeof half);
 }
 
 float loadHalf(const std::byte* from) {
-    _Float16 half;
+    uint16_t half;
     std::memcpy(&half, from, sizeof half);
-    return static_cast<float>(half);
+    return numeric::fromHalfBits(half);
 }
 
 size_t valueCount(const Texture& texture) {

@@ -1,11 +1,13 @@
 #include "data_file.hpp"
 
+#include "half_float.hpp"
 #include "run_error.hpp"
 
 #include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <type_traits>
 
 namespace iblkit::run {
 namespace {
@@ -20,12 +22,17 @@ std::string slurp(const std::filesystem::path& path) {
 
 bool isNpy(const std::filesystem::path& path) { return path.extension() == ".npy"; }
 
+struct HalfBits {
+    uint16_t bits;
+};
+
 template <typename T>
 void appendAll(const char* data, size_t count, std::vector<float>& values) {
     for (size_t i = 0; i < count; ++i) {
         T value;
         std::memcpy(&value, data + i * sizeof(T), sizeof(T));
-        values.push_back(static_cast<float>(value));
+        if constexpr (std::is_same_v<T, HalfBits>) values.push_back(numeric::fromHalfBits(value.bits));
+        else values.push_back(static_cast<float>(value));
     }
 }
 
@@ -52,7 +59,7 @@ std::vector<float> readNpy(const std::filesystem::path& path) {
     std::vector<float> values;
     values.reserve(count);
     if (kind == 'f' && size == 4) appendAll<float>(data, count, values);
-    else if (kind == 'f' && size == 2) appendAll<_Float16>(data, count, values);
+    else if (kind == 'f' && size == 2) appendAll<HalfBits>(data, count, values);
     else if (kind == 'f' && size == 8) appendAll<double>(data, count, values);
     else if (kind == 'i' && size == 4) appendAll<int32_t>(data, count, values);
     else if (kind == 'u' && size == 4) appendAll<uint32_t>(data, count, values);

@@ -1,5 +1,7 @@
 #include "expectation_check.hpp"
 
+#include "half_float.hpp"
+
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -14,9 +16,7 @@ int64_t orderedFloat(float value) {
 }
 
 int64_t orderedHalf(float value) {
-    const _Float16 half = static_cast<_Float16>(value);
-    int16_t bits;
-    std::memcpy(&bits, &half, 2);
+    const auto bits = std::bit_cast<int16_t>(numeric::toHalfBits(value));
     return bits < 0 ? int64_t(INT16_MIN) - bits : bits;
 }
 

@@ -65,7 +65,7 @@ std::vector<std::byte> packBlock(const std::string& blockName, const std::vector
                                  uint32_t size, const std::map<std::string, std::vector<double>>& values) {
     std::vector<std::byte> bytes(size);
     for (const auto& [name, components] : values) {
-        const auto member = std::find_if(members.begin(), members.end(), [&](const auto& m) { return m.name == name; });
+        const auto member = std::find_if(members.begin(), members.end(), [&wanted = name](const auto& m) { return m.name == wanted; });
         if (member == members.end()) {
             std::string known;
             for (const auto& m : members) known += (known.empty() ? "" : ", ") + m.name;

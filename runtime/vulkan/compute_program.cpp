@@ -30,7 +30,7 @@ std::vector<std::byte> specializationBytes(const compiler::ShaderReflection& ref
     std::vector<std::byte> bytes;
     for (const auto& [name, value] : values) {
         const auto constant = std::find_if(reflection.specializationConstants.begin(), reflection.specializationConstants.end(),
-                                           [&](const auto& c) { return c.name == name; });
+                                           [&wanted = name](const auto& c) { return c.name == wanted; });
         if (constant == reflection.specializationConstants.end())
             throw VulkanError("the shader has no specialization constant '" + name + "'");
         std::byte word[4];

@@ -1,5 +1,6 @@
 #include "texel_format.hpp"
 
+#include "half_float.hpp"
 #include "vulkan_error.hpp"
 
 #include <array>
@@ -25,9 +26,9 @@ float decodeOne(const TexelFormat& format, const std::byte* bytes) {
     switch (format.kind) {
     case ComponentKind::Float:
         if (format.bytesPerChannel == 2) {
-            _Float16 half;
+            uint16_t half;
             std::memcpy(&half, bytes, 2);
-            return static_cast<float>(half);
+            return numeric::fromHalfBits(half);
         } else {
             float value;
             std::memcpy(&value, bytes, 4);
@@ -52,7 +53,7 @@ void encodeOne(const TexelFormat& format, float value, std::byte* bytes) {
     switch (format.kind) {
     case ComponentKind::Float:
         if (format.bytesPerChannel == 2) {
-            const _Float16 half = static_cast<_Float16>(value);
+            const uint16_t half = numeric::toHalfBits(value);
             std::memcpy(bytes, &half, 2);
         } else {
             std::memcpy(bytes, &value, 4);

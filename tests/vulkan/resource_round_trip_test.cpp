@@ -2,6 +2,7 @@
 // writes every storage format the kit uses at every mip.
 #include "block_writer.hpp"
 #include "compute_program.hpp"
+#include "half_float.hpp"
 #include "vulkan_error.hpp"
 #include "vulkan_test_support.hpp"
 
@@ -51,14 +52,11 @@ INSTANTIATE_TEST_SUITE_P(
 // either representable neighbour is correct (lavapipe truncates, round-to-nearest-even is the
 // other common choice). For positive values only, as the test writes.
 bool isAHalfNeighbour(float value, float written) {
-    const _Float16 nearest = static_cast<_Float16>(written);
-    if (float(nearest) == written) return value == written;
-    uint16_t bits;
-    std::memcpy(&bits, &nearest, 2);
-    bits = float(nearest) < written ? bits + 1 : bits - 1;
-    _Float16 other;
-    std::memcpy(&other, &bits, 2);
-    return value == float(nearest) || value == float(other);
+    const uint16_t nearestBits = numeric::toHalfBits(written);
+    const float nearest = numeric::fromHalfBits(nearestBits);
+    if (nearest == written) return value == written;
+    const float other = numeric::fromHalfBits(nearest < written ? nearestBits + 1 : nearestBits - 1);
+    return value == nearest || value == other;
 }
 
 class StorageWrite : public testing::VulkanTest, public ::testing::WithParamInterface<std::tuple<const char*, const char*, int>> {};
