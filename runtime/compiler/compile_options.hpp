@@ -1,5 +1,6 @@
 #pragma once
 
+#include "lowering.hpp"
 #include "register_binding.hpp"
 #include "shader_stage.hpp"
 
@@ -35,6 +36,8 @@ struct CompileOptions {
     // which glslang crashes, is an error, not a hang or a crash: the command-line tool sets it;
     // the kit's own shaders need no such guard.
     bool boundPreprocessing = false;
+    // HLSL 2021 (DXC's default) is lowered to what glslang reads (runtime/lowering/); 2018 is not.
+    lowering::HlslVersion hlslVersion = lowering::HlslVersion::Hlsl2021;
 };
 
 } // namespace iblkit::compiler

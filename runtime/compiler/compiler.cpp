@@ -37,7 +37,9 @@ CompiledShader compileShader(const CompileOptions& options) {
     auto frontend = compileHlsl(options);
     CompiledShader shader;
     shader.sourceName = options.source.string();
-    const auto legal = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), options.imageFormats,
+    auto imageFormats = frontend.imageFormats; // [[vk::image_format]], where --image-format does not say otherwise
+    for (const auto& [resource, format] : options.imageFormats) imageFormats[resource] = format;
+    const auto legal = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats,
                                          shader.sourceName);
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);

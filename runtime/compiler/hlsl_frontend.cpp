@@ -5,8 +5,11 @@
 #include "glslang_process.hpp"
 #include "hlsl_register_resolver.hpp"
 #include "bounded_child.hpp"
+#include "image_formats.hpp"
 
 #include "include_resolver.hpp"
+#include "lowering.hpp"
+#include "lowering_error.hpp"
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -44,9 +47,11 @@ std::string preambleOf(const CompileOptions& options) {
 
 // One TShader configured the same way for the preprocessing pass and the real parse.
 struct ConfiguredShader {
+    // Lowered text was preprocessed already: its macros are expanded, and their defines must
+    // not apply twice.
     ConfiguredShader(EShLanguage language, const CompileOptions& options, const std::string& sourceName,
-                     const std::string& text)
-        : shader(language), preamble(preambleOf(options)), name(sourceName), source(text.c_str()),
+                     const std::string& text, bool preprocessed = false)
+        : shader(language), preamble(preprocessed ? "" : preambleOf(options)), name(sourceName), source(text.c_str()),
           length(static_cast<int>(text.size())) {
         nameText = name.c_str();
         shader.setStringsWithLengthsAndNames(&source, &length, &nameText, 1);
@@ -67,9 +72,8 @@ struct ConfiguredShader {
     const char* nameText = nullptr;
 };
 
-std::string preprocess(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
-    IncludeResolver includes(options.includeDirs, &options.virtualFiles);
-    includes.addSource(sourceName, text);
+std::string preprocess(const CompileOptions& options, const std::string& sourceName, const std::string& text,
+                       IncludeResolver& includes) {
     ConfiguredShader configured(EShLangCompute, options, sourceName, text);
     std::string preprocessed;
     if (!configured.shader.preprocess(GetDefaultResources(), kHlslVersion, ENoProfile, false, false, kMessages,
@@ -81,13 +85,13 @@ std::string preprocess(const CompileOptions& options, const std::string& sourceN
 // No definition of the entry point was found: a syntax error in it is the likelier cause, and
 // glslang names its place; only when it finds none is the entry point missing.
 ShaderStage deduceOrReportSyntax(const std::string& preprocessed, const CompileOptions& options,
-                                 const std::string& sourceName, const std::string& text) {
+                                 const std::string& sourceName, const std::string& text, bool textIsPreprocessed) {
     try {
         return deduceStage(preprocessed, options.entryPoint, sourceName);
     } catch (const CompileError&) {
         IncludeResolver includes(options.includeDirs, &options.virtualFiles);
         includes.addSource(sourceName, text);
-        ConfiguredShader configured(EShLangFragment, options, sourceName, text);
+        ConfiguredShader configured(EShLangFragment, options, sourceName, text, textIsPreprocessed);
         if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes) &&
             configured.shader.getInfoLog() != std::string() &&
             std::string(configured.shader.getInfoLog()).find("Entry point not found") == std::string::npos)
@@ -107,9 +111,33 @@ void requireMacroNames(const CompileOptions& options, const std::string& sourceN
     }
 }
 
-ShaderStage stageOf(const CompileOptions& options, const std::string& sourceName, const std::string& text) {
-    if (options.stage) return *options.stage;
-    return deduceOrReportSyntax(preprocess(options, sourceName, text), options, sourceName, text);
+lowering::LoweredSource lower(const CompileOptions& options, const std::string& sourceName, const std::string& preprocessed) {
+    try {
+        return lowering::lowerHlsl(preprocessed, sourceName, options.hlslVersion);
+    } catch (const lowering::LoweringError& error) {
+        throw CompileError(error.what());
+    }
+}
+
+// The [[vk::image_format]] attributes in glslang's spelling ("r11g11b10f" is DXC's
+// r11f_g11f_b10f, "rgba8snorm" its rgba8_snorm).
+std::map<std::string, std::string> attributeImageFormats(const lowering::VulkanAttributes& vulkan, const std::string& sourceName) {
+    std::map<std::string, std::string> formats;
+    for (const auto& [resource, written] : vulkan.imageFormats) {
+        const auto* format = findImageFormatByAttributeName(written);
+        if (!format)
+            throw CompileError(sourceName + ": error: [[vk::image_format(\"" + written + "\")]] on '" + resource +
+                               "' is not a storage image format");
+        formats[resource] = std::string(format->glslName);
+    }
+    return formats;
+}
+
+std::map<std::string, ExplicitBinding> attributeBindings(const lowering::VulkanAttributes& vulkan) {
+    std::map<std::string, ExplicitBinding> bindings;
+    for (const auto& [resource, binding] : vulkan.bindings)
+        bindings[resource] = ExplicitBinding{binding.set, binding.binding, binding.place.describe()};
+    return bindings;
 }
 
 } // namespace
@@ -142,12 +170,19 @@ FrontendResult compileHlsl(const CompileOptions& options) {
                           " on this source (a macro that expands without bound, an #include that never ends, "
                           "or a glslang bug)");
     }
-    const ShaderStage stage = stageOf(options, sourceName, text);
+    IncludeResolver preprocessedIncludes(options.includeDirs, &options.virtualFiles);
+    preprocessedIncludes.addSource(sourceName, text);
+    const auto lowered = lower(options, sourceName, preprocess(options, sourceName, text, preprocessedIncludes));
+    // A shader that needs no lowering is parsed from its own text, as it was written.
+    const std::string& parsed = lowered.changed ? lowered.text : text;
+    const ShaderStage stage =
+        options.stage ? *options.stage : deduceOrReportSyntax(lowered.text, options, sourceName, parsed, lowered.changed);
     const EShLanguage language = toGlslang(stage);
 
-    IncludeResolver includes(options.includeDirs, &options.virtualFiles);
-    includes.addSource(sourceName, text);
-    ConfiguredShader configured(language, options, sourceName, text);
+    IncludeResolver ownIncludes(options.includeDirs, &options.virtualFiles);
+    ownIncludes.addSource(sourceName, text);
+    IncludeResolver& includes = lowered.changed ? preprocessedIncludes : ownIncludes;
+    ConfiguredShader configured(language, options, sourceName, parsed, lowered.changed);
     if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes))
         failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
 
@@ -158,17 +193,20 @@ FrontendResult compileHlsl(const CompileOptions& options) {
 
     glslang::TIntermediate& intermediate = *program.getIntermediate(language);
 
-    HlslRegisterResolver resolver(intermediate, options.bindingShifts, sourceName);
+    HlslRegisterResolver resolver(intermediate, options.bindingShifts, attributeBindings(lowered.vulkan), sourceName);
     const bool mapped = program.mapIO(&resolver);
     if (resolver.error()) throw CompileError(*resolver.error());
     if (!mapped) failWith(program.getInfoLog(), includes, sourceName, "resource binding failed");
 
-    FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {}};
+    FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {},
+                          attributeImageFormats(lowered.vulkan, sourceName)};
     glslang::SpvOptions spvOptions;
     spvOptions.disableOptimizer = true;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
-    result.warnings = parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings;
+    result.warnings = lowered.vulkan.warnings;
+    for (auto& warning : parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings)
+        result.warnings.push_back(std::move(warning));
     const std::string spvMessages = logger.getAllMessages();
     if (!spvMessages.empty()) result.warnings.push_back(sourceName + ": warning: " + spvMessages);
     return result;

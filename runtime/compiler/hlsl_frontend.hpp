@@ -5,6 +5,7 @@
 #include "shader_stage.hpp"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct FrontendResult {
     std::vector<ResourceRegister> registers; // in declaration order
     std::vector<std::string> includedFiles;  // every file #included, directly or not
     std::vector<std::string> warnings;
+    std::map<std::string, std::string> imageFormats; // from [[vk::image_format]], by resource name
 };
 
 // HLSL -> SPIR-V (Vulkan 1.1, SPIR-V 1.3) with glslang's HLSL frontend: the preprocessor

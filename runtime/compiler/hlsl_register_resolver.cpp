@@ -36,8 +36,9 @@ std::string hlslNameOf(const glslang::TIntermSymbol& symbol) {
 } // namespace
 
 HlslRegisterResolver::HlslRegisterResolver(const glslang::TIntermediate& intermediate, BindingShifts shifts,
-                                           std::string sourceName)
-    : TDefaultIoResolverBase(intermediate), shifts_(shifts), sourceName_(std::move(sourceName)) {}
+                                           std::map<std::string, ExplicitBinding> vulkanBindings, std::string sourceName)
+    : TDefaultIoResolverBase(intermediate), shifts_(shifts), vulkanBindings_(std::move(vulkanBindings)),
+      sourceName_(std::move(sourceName)) {}
 
 bool HlslRegisterResolver::validateBinding(EShLanguage, glslang::TVarEntryInfo&) { return true; }
 
@@ -59,7 +60,9 @@ void HlslRegisterResolver::notifyBinding(EShLanguage, glslang::TVarEntryInfo& en
     DeclaredResource resource{hlslNameOf(*entry.symbol), *registerClass, std::nullopt,
                               qualifier.hasSet() ? static_cast<uint32_t>(qualifier.layoutSet) : 0u,
                               registerCount(type)};
-    if (qualifier.hasBinding()) resource.explicitRegister = static_cast<uint32_t>(qualifier.layoutBinding);
+    // glslang keeps [[vk::binding]] in the same place as a register: the attribute is told apart by name.
+    if (const auto vulkan = vulkanBindings_.find(resource.name); vulkan != vulkanBindings_.end()) resource.vulkanBinding = vulkan->second;
+    else if (qualifier.hasBinding()) resource.explicitRegister = static_cast<uint32_t>(qualifier.layoutBinding);
     declared_.emplace(entry.id, std::move(resource));
 }
 

@@ -16,7 +16,8 @@ namespace iblkit::compiler {
 // each one's set and binding.
 class HlslRegisterResolver : public glslang::TDefaultIoResolverBase {
 public:
-    HlslRegisterResolver(const glslang::TIntermediate& intermediate, BindingShifts shifts, std::string sourceName);
+    HlslRegisterResolver(const glslang::TIntermediate& intermediate, BindingShifts shifts,
+                         std::map<std::string, ExplicitBinding> vulkanBindings, std::string sourceName);
 
     bool validateBinding(EShLanguage stage, glslang::TVarEntryInfo& entry) override;
     glslang::TResourceType getResourceType(const glslang::TType& type) override;
@@ -33,6 +34,7 @@ private:
     const ResourceRegister* find(const glslang::TVarEntryInfo& entry) const;
 
     BindingShifts shifts_;
+    std::map<std::string, ExplicitBinding> vulkanBindings_; // by HLSL name
     std::string sourceName_;
     std::map<long long, DeclaredResource> declared_; // by symbol id: declaration order
     std::vector<ResourceRegister> registers_;

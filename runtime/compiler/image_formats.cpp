@@ -3,6 +3,7 @@
 #include <spirv_cross/spirv.hpp>
 
 #include <array>
+#include <string>
 
 namespace iblkit::compiler {
 namespace {
@@ -60,6 +61,16 @@ const ImageFormatInfo* findImageFormat(unsigned spirvFormat) {
 const ImageFormatInfo* findImageFormatByGlslName(std::string_view glslName) {
     for (const auto& format : kFormats)
         if (format.glslName == glslName) return &format;
+    return nullptr;
+}
+
+const ImageFormatInfo* findImageFormatByAttributeName(std::string_view attributeName) {
+    if (attributeName == "r11g11b10f") return findImageFormat(spv::ImageFormatR11fG11fB10f);
+    for (const auto& format : kFormats) {
+        std::string unseparated(format.glslName);
+        std::erase(unseparated, '_');
+        if (unseparated == attributeName) return &format;
+    }
     return nullptr;
 }
 

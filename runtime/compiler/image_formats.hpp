@@ -18,6 +18,9 @@ struct ImageFormatInfo {
 
 const ImageFormatInfo* findImageFormat(unsigned spirvFormat);
 const ImageFormatInfo* findImageFormatByGlslName(std::string_view glslName);
+// A format as [[vk::image_format("...")]] spells it (DXC's names: glslang's without '_', and
+// "r11g11b10f").
+const ImageFormatInfo* findImageFormatByAttributeName(std::string_view attributeName);
 bool isEssl310Format(std::string_view glslName);
 
 } // namespace iblkit::compiler

@@ -223,14 +223,16 @@ nlohmann::json toJson(const ShaderReflection& reflection) {
     };
     json resources = json::array();
     for (const auto& resource : reflection.resources) {
+        const auto& location = resource.location;
         json entry = {{"name", resource.name},
                       {"kind", resourceKindName(resource.kind)},
-                      {"register", resource.location.registerName()},
-                      {"space", resource.location.space},
-                      {"explicit_register", resource.location.explicitRegister},
-                      {"count", resource.location.count},
-                      {"set", resource.location.set},
-                      {"binding", resource.location.binding}};
+                      {"register", location.vulkanBinding ? json(nullptr) : json(location.registerName())},
+                      {"space", location.vulkanBinding ? json(nullptr) : json(location.space)},
+                      {"explicit_register", location.explicitRegister},
+                      {"vk_binding", location.vulkanBinding},
+                      {"count", location.count},
+                      {"set", location.set},
+                      {"binding", location.binding}};
         if (!resource.dimension.empty()) {
             entry["dimension"] = resource.dimension;
             entry["component_type"] = resource.componentType;

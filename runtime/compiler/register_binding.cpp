@@ -29,6 +29,7 @@ uint32_t BindingShifts::capacity(RegisterClass registerClass) const {
 }
 
 std::string ResourceRegister::registerName() const {
+    if (vulkanBinding) return "vk::binding";
     return std::string(1, registerLetter(registerClass)) + std::to_string(registerIndex);
 }
 
@@ -58,6 +59,32 @@ ResourceRegister bindResource(const DeclaredResource& resource, uint32_t registe
                             shifts.of(resource.registerClass) + registerIndex};
 }
 
+ResourceRegister bindExplicitly(const DeclaredResource& resource) {
+    const auto& vulkan = *resource.vulkanBinding;
+    if (uint64_t(vulkan.binding) + resource.count - 1 > kLargestBinding)
+        throw CompileError(vulkan.place + ": error: [[vk::binding(" + std::to_string(vulkan.binding) + ")]] on '" +
+                           resource.name + "': bindings end at " + std::to_string(kLargestBinding) + " (glslang's largest)");
+    return ResourceRegister{resource.name, resource.registerClass, 0, resource.count, resource.space, false,
+                            vulkan.set, vulkan.binding, true};
+}
+
+std::string describeBinding(const ResourceRegister& resource) {
+    return resource.vulkanBinding ? "[[vk::binding]]" : "register " + resource.registerName() + ", space" + std::to_string(resource.space);
+}
+
+// No two resources on one set and binding (arrays take a binding for each element).
+void requireDistinctBindings(const std::vector<ResourceRegister>& assigned, const std::string& sourceName) {
+    std::map<std::pair<uint32_t, uint32_t>, const ResourceRegister*> taken;
+    for (const auto& resource : assigned)
+        for (uint32_t binding = resource.binding; binding < resource.binding + resource.count; ++binding) {
+            const auto [it, inserted] = taken.emplace(std::make_pair(resource.set, binding), &resource);
+            if (!inserted)
+                throw CompileError(sourceName + ": error: '" + it->second->name + "' (" + describeBinding(*it->second) +
+                                   ") and '" + resource.name + "' (" + describeBinding(resource) + ") are both on set " +
+                                   std::to_string(resource.set) + ", binding " + std::to_string(binding));
+        }
+}
+
 } // namespace
 
 std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
@@ -70,7 +97,7 @@ std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource
                                    "; each class needs a range of its own");
     std::map<ClassAndSpace, std::map<uint32_t, std::string>> taken;
     for (const auto& resource : declared) {
-        if (!resource.explicitRegister) continue;
+        if (!resource.explicitRegister || resource.vulkanBinding) continue;
         auto& users = taken[{resource.registerClass, resource.space}];
         for (uint32_t index = *resource.explicitRegister; index < *resource.explicitRegister + resource.count; ++index) {
             auto [it, inserted] = users.emplace(index, resource.name);
@@ -84,6 +111,10 @@ std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource
     std::vector<ResourceRegister> assigned;
     assigned.reserve(declared.size());
     for (const auto& resource : declared) {
+        if (resource.vulkanBinding) {
+            assigned.push_back(bindExplicitly(resource));
+            continue;
+        }
         uint32_t registerIndex = 0;
         if (resource.explicitRegister) {
             registerIndex = *resource.explicitRegister;
@@ -100,6 +131,7 @@ std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource
         }
         assigned.push_back(bindResource(resource, registerIndex, shifts, sourceName));
     }
+    requireDistinctBindings(assigned, sourceName);
     return assigned;
 }
 

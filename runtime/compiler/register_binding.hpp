@@ -36,6 +36,14 @@ struct BindingShifts {
     uint32_t capacity(RegisterClass registerClass) const;
 };
 
+// A set and binding written in the source with [[vk::binding(binding, set)]]: it wins over the
+// register rule, as in DXC.
+struct ExplicitBinding {
+    uint32_t set = 0;
+    uint32_t binding = 0;
+    std::string place; // "file:line:col" of the attribute, for messages
+};
+
 // A resource as declared in HLSL, in declaration order.
 struct DeclaredResource {
     std::string name;
@@ -43,6 +51,7 @@ struct DeclaredResource {
     std::optional<uint32_t> explicitRegister; // from ": register(x#)"
     uint32_t space = 0;
     uint32_t count = 1; // registers taken: the array size of an array of resources
+    std::optional<ExplicitBinding> vulkanBinding = std::nullopt;
 };
 
 struct ResourceRegister {
@@ -54,13 +63,16 @@ struct ResourceRegister {
     bool explicitRegister;
     uint32_t set;
     uint32_t binding;
+    bool vulkanBinding = false; // set and binding from [[vk::binding]]; no register
 
-    std::string registerName() const; // "t0", "u3"
+    std::string registerName() const; // "t0", "u3", or "vk::binding" for one without a register
 };
 
 // Gives each resource without a register the lowest free register of its class and space,
-// in declaration order (as FXC and DXC do), then applies the binding rule.
-// Throws CompileError on a register used twice or one outside its class's range.
+// in declaration order (as FXC and DXC do), then applies the binding rule; a resource with
+// [[vk::binding]] takes its own set and binding and no register.
+// Throws CompileError on a register used twice, one outside its class's range, or a set and
+// binding that two resources would share.
 std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
                                               const BindingShifts& shifts, const std::string& sourceName);
 

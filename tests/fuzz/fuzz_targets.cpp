@@ -6,6 +6,8 @@
 #include "float_image.hpp"
 #include "image_error.hpp"
 #include "ktx2.hpp"
+#include "lowering.hpp"
+#include "lowering_error.hpp"
 #include "run_error.hpp"
 #include "run_file.hpp"
 #include "shader_manifest.hpp"
@@ -63,13 +65,20 @@ void hlsl(std::span<const std::byte> bytes) {
     } catch (const compiler::CompileError&) {}
 }
 
+// The HLSL 2021 lowering alone, in process (the hlsl target runs it too, but forks per input).
+void hlslLowering(std::span<const std::byte> bytes) {
+    try {
+        lowering::lowerHlsl(text(bytes), "fuzz.hlsl", lowering::HlslVersion::Hlsl2021);
+    } catch (const lowering::LoweringError&) {}
+}
+
 } // namespace
 
 const std::vector<Target>& targets() {
     static const std::vector<Target> all{{"radiance_hdr", radianceHdr}, {"exr", exr},
                                          {"ktx2", ktx2},                 {"dds", dds},
                                          {"run_file", runFile},          {"shader_manifest", shaderManifest},
-                                         {"hlsl", hlsl}};
+                                         {"hlsl", hlsl},                 {"hlsl_lowering", hlslLowering}};
     return all;
 }
 

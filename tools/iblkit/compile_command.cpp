@@ -28,6 +28,7 @@ struct CompileArguments {
     std::string reflect;
     bool writeDepfile = false;
     std::string depfile;
+    int hlslVersion = 2021;
 };
 
 compiler::CompileOptions toOptions(const CompileArguments& arguments) {
@@ -53,6 +54,7 @@ compiler::CompileOptions toOptions(const CompileArguments& arguments) {
                            : arguments.optimize   ? compiler::OptimizationLevel::Performance
                                                   : compiler::OptimizationLevel::None;
     options.stripDebugInfo = arguments.strip;
+    options.hlslVersion = arguments.hlslVersion == 2018 ? lowering::HlslVersion::Hlsl2018 : lowering::HlslVersion::Hlsl2021;
     return options;
 }
 
@@ -110,6 +112,9 @@ void addCompileCommand(CLI::App& app) {
         command->add_option_function<std::string>(
             flag, [arguments, target = target](const std::string& path) { arguments->forms[target] = path; },
             std::string("Also write the ") + (flag + 2) + " form");
+    command->add_option("--HV,--hlsl-version", arguments->hlslVersion,
+                        "HLSL version, 2021 (the default, as in DXC: select, enum, namespace lowered) or 2018; spelled -HV")
+        ->check(CLI::IsMember({2018, 2021}));
     command->add_option("--reflect", arguments->reflect, "Write the reflection JSON");
     command->add_flag("--MD", arguments->writeDepfile, "Write a depfile (spelled -MD; OUT.d unless -MF)");
     command->add_option("--MF", arguments->depfile, "Depfile path (spelled -MF)");

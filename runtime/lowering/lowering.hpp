@@ -1,0 +1,24 @@
+#pragma once
+
+#include "vulkan_attributes.hpp"
+
+#include <string>
+
+namespace iblkit::lowering {
+
+enum class HlslVersion { Hlsl2018, Hlsl2021 };
+
+struct LoweredSource {
+    std::string text;     // the preprocessed text with every construct lowered, #line kept
+    bool changed = false; // false: the shader needs no lowering, and its own text is what to parse
+    VulkanAttributes vulkan;
+};
+
+// HLSL as DXC reads it -> HLSL as glslang's frontend reads it, on the tokens of the
+// preprocessed text (glslang's, with its #line directives, so that every line still names its
+// file and line). For HLSL 2021: select/and/or (intrinsics.hpp), enums (enums.hpp), namespaces
+// (namespaces.hpp), and a refusal by name for what cannot be lowered (refusals.hpp); for
+// every version: the [[vk::...]] attributes (vulkan_attributes.hpp). Throws LoweringError.
+LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sourceName, HlslVersion version);
+
+} // namespace iblkit::lowering

@@ -1,0 +1,122 @@
+// HLSL as Direct3D code bases write it, through the whole compile: HLSL 2021 lowered for
+// glslang, [[vk::...]] attributes honoured as written, errors pointing at the user's files.
+#include "compile_error.hpp"
+#include "compiler.hpp"
+#include "temp_folder.hpp"
+
+#include <gtest/gtest.h>
+
+namespace iblkit::compiler {
+namespace {
+
+class Hlsl2021 : public ::testing::Test {
+protected:
+    CompiledShader compile(const std::string& text, lowering::HlslVersion version = lowering::HlslVersion::Hlsl2021) {
+        CompileOptions options;
+        options.source = folder.write("shader.hlsl", text);
+        options.includeDirs.push_back(folder.path());
+        options.hlslVersion = version;
+        return compileShader(options);
+    }
+    std::string errorOf(const std::string& text, lowering::HlslVersion version = lowering::HlslVersion::Hlsl2021) {
+        try {
+            compile(text, version);
+        } catch (const CompileError& error) {
+            std::string message = error.what();
+            const std::string folderName = folder.path().string() + "/";
+            for (size_t at; (at = message.find(folderName)) != std::string::npos;) message.erase(at, folderName.size());
+            return message;
+        }
+        return "(compiled)";
+    }
+    const ReflectedResource& resource(const CompiledShader& shader, const std::string& name) {
+        for (const auto& resource : shader.reflection.resources)
+            if (resource.name == name) return resource;
+        throw std::runtime_error("no resource " + name);
+    }
+    testing::TempFolder folder;
+};
+
+constexpr const char* kEntry = "[numthreads(1, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID) { Out[id.x] = f(id.x); }\n";
+
+TEST_F(Hlsl2021, SelectEnumAndNamespaceCompile) {
+    const auto shader = compile(std::string("namespace Colour {\nenum class Space : uint { Linear, Srgb };\n"
+                                            "float3 toLinear(float3 c) { return select(c <= 0.04045, c / 12.92, "
+                                            "pow((c + 0.055) / 1.055, 2.4)); }\n}\n"
+                                            "RWStructuredBuffer<float3> Out : register(u0);\n"
+                                            "float3 f(uint i) { return Colour::toLinear(i) * (uint)Colour::Space::Srgb; }\n") +
+                                kEntry);
+    EXPECT_EQ(resource(shader, "Out").location.binding, 96u);
+}
+
+TEST_F(Hlsl2021, Hlsl2018KeepsEnumAReservedWord) {
+    EXPECT_EQ(errorOf("enum E { A };\n", lowering::HlslVersion::Hlsl2018), "shader.hlsl:1:1: error: 'enum' : Reserved word.");
+}
+
+TEST_F(Hlsl2021, AnErrorAfterALoweredConstructPointsAtTheUsersFileAndLine) {
+    folder.write("colour.hlsli", "enum class Space { Linear };\n\nfloat g() { return undefinedThing; }\n");
+    EXPECT_EQ(errorOf(std::string("#include \"colour.hlsli\"\nRWStructuredBuffer<float> Out;\nfloat f(uint i) { return 0; }\n") + kEntry),
+              "In file included from shader.hlsl:1:\ncolour.hlsli:3:20: error: 'undefinedThing' : unknown variable");
+}
+
+TEST_F(Hlsl2021, ALoweringErrorNamesTheConstructAndItsPlace) {
+    EXPECT_EQ(errorOf("RWStructuredBuffer<float> Out;\ntemplate <typename T> T f(T x) { return x; }\n"),
+              "shader.hlsl:2:1: error: a template cannot be lowered to the HLSL glslang reads: write the function or struct "
+              "for each type");
+}
+
+// Before, glslang's binding from the attribute was taken for a register and shifted: binding
+// 101 of set 1, and two attributed resources "clashed".
+TEST_F(Hlsl2021, VulkanBindingWinsOverTheRegisterRule) {
+    const auto shader = compile(std::string("[[vk::binding(5, 1)]] RWStructuredBuffer<float> Out;\n"
+                                            "[[vk::binding(5, 0)]] RWStructuredBuffer<float> Other : register(u3);\n"
+                                            "RWStructuredBuffer<float> Derived;\n"
+                                            "float f(uint i) { return Other[i] + Derived[i]; }\n") + kEntry);
+    const auto& out = resource(shader, "Out").location;
+    EXPECT_EQ(out.set, 1u);
+    EXPECT_EQ(out.binding, 5u);
+    EXPECT_TRUE(out.vulkanBinding);
+    EXPECT_EQ(resource(shader, "Other").location.binding, 5u);
+    EXPECT_EQ(resource(shader, "Other").location.set, 0u);
+    EXPECT_EQ(resource(shader, "Derived").location.registerName(), "u0");
+    EXPECT_EQ(resource(shader, "Derived").location.binding, 96u);
+}
+
+TEST_F(Hlsl2021, AnExplicitBindingOnADerivedOneIsAnError) {
+    EXPECT_EQ(errorOf(std::string("[[vk::binding(96)]] RWStructuredBuffer<float> Out;\n"
+                                  "RWStructuredBuffer<float> Derived : register(u0);\n"
+                                  "float f(uint i) { return Derived[i]; }\n") + kEntry),
+              "shader.hlsl: error: 'Out' ([[vk::binding]]) and 'Derived' (register u0, space0) are both on set 0, binding 96");
+}
+
+TEST_F(Hlsl2021, ImageFormatAttributeSetsTheFormat) {
+    const auto shader = compile(std::string("[[vk::image_format(\"r11g11b10f\")]] RWTexture2D<float4> Img;\n"
+                                            "RWStructuredBuffer<float> Out;\n"
+                                            "float f(uint i) { Img[uint2(i, 0)] = 1; return 0; }\n") + kEntry);
+    EXPECT_EQ(resource(shader, "Img").format, "r11f_g11f_b10f");
+    EXPECT_TRUE(shader.warnings.empty()) << shader.warnings.front();
+}
+
+TEST_F(Hlsl2021, AnUnknownImageFormatAttributeIsRefused) {
+    EXPECT_EQ(errorOf(std::string("[[vk::image_format(\"rgb9e5\")]] RWTexture2D<float4> Img;\n"
+                                  "RWStructuredBuffer<float> Out;\nfloat f(uint i) { Img[uint2(i, 0)] = 1; return 0; }\n") + kEntry),
+              "shader.hlsl: error: [[vk::image_format(\"rgb9e5\")]] on 'Img' is not a storage image format");
+}
+
+TEST_F(Hlsl2021, PushConstantOnAPlainStructIsAPushConstantBlock) {
+    const auto shader = compile(std::string("struct P { float scale; };\n[[vk::push_constant]] P pc;\n"
+                                            "RWStructuredBuffer<float> Out;\nfloat f(uint i) { return pc.scale; }\n") + kEntry);
+    EXPECT_EQ(shader.reflection.pushConstantBlock, "pc");
+    EXPECT_EQ(shader.reflection.pushConstants.size(), 1u);
+}
+
+TEST_F(Hlsl2021, AnAttributeTheKitDoesNotHonourIsAWarning) {
+    const auto shader = compile(std::string("[[vk::combinedImageSampler]] RWStructuredBuffer<float> Out;\n"
+                                            "float f(uint i) { return 0; }\n") + kEntry);
+    ASSERT_FALSE(shader.warnings.empty());
+    EXPECT_NE(shader.warnings.front().find("[[vk::combinedImageSampler]] is not honoured by the kit"), std::string::npos)
+        << shader.warnings.front();
+}
+
+} // namespace
+} // namespace iblkit::compiler
