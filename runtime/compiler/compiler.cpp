@@ -2,6 +2,7 @@
 
 #include "hlsl_frontend.hpp"
 #include "spirv_image_format.hpp"
+#include "spirv_texel_widening.hpp"
 #include "spirv_tools.hpp"
 
 #include <nlohmann/json.hpp>
@@ -39,8 +40,8 @@ CompiledShader compileShader(const CompileOptions& options) {
     shader.sourceName = options.source.string();
     auto imageFormats = frontend.imageFormats; // [[vk::image_format]], where --image-format does not say otherwise
     for (const auto& [resource, format] : options.imageFormats) imageFormats[resource] = format;
-    const auto legal = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats,
-                                         shader.sourceName);
+    const auto legal = widenStorageImageWrites(
+        applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats, shader.sourceName));
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);

@@ -22,13 +22,6 @@ Component componentOfFormat(std::string_view name) {
     return Component::Float;
 }
 
-uint32_t channelsOfFormat(std::string name) {
-    if (auto at = name.find("_snorm"); at != std::string::npos) name.erase(at);
-    return static_cast<uint32_t>(std::count_if(name.begin(), name.end(), [](char c) {
-        return c == 'r' || c == 'g' || c == 'b' || c == 'a';
-    }));
-}
-
 const char* componentName(Component component) {
     return component == Component::Float ? "float" : component == Component::Int ? "int" : "uint";
 }
@@ -42,7 +35,7 @@ public:
         if (!format) fail("unknown image format '" + formatName + "' (known: " + knownFormats() + ")");
         const uint32_t variable = storageImageVariable(name);
         const uint32_t imageType = imageTypeOf(variable);
-        check(name, variable, imageType, formatName);
+        check(name, imageType, formatName);
         auto* image = module_.definition(imageType);
         if (image->operands[kImageFormat] == format->spirvFormat) return;
         retarget(variable, imageType, format->spirvFormat);
@@ -74,7 +67,9 @@ private:
         return module_.pointeeOf(module_.definition(variable)->operands[0]);
     }
 
-    void check(const std::string& name, uint32_t variable, uint32_t imageType, const std::string& formatName) const {
+    // The component type must match; the channel counts need not: a write narrower than the
+    // format is widened later (spirv_texel_widening.hpp), a wider one's extra channels dropped.
+    void check(const std::string& name, uint32_t imageType, const std::string& formatName) const {
         const auto* sampled = module_.definition(module_.definition(imageType)->operands[kImageSampledType]);
         const Component component = sampled->opcode == spv::OpTypeFloat ? Component::Float
                                     : sampled->operands[2] ? Component::Int
@@ -82,11 +77,6 @@ private:
         if (component != componentOfFormat(formatName))
             fail("image format " + formatName + " of '" + name + "' does not match the component type of its element (" +
                  componentName(component) + ")");
-        const uint32_t channels = channelsOfFormat(formatName);
-        for (uint32_t written : module_.componentsWrittenTo(variable))
-            if (written < channels)
-                fail("image format " + formatName + " of '" + name + "' has " + std::to_string(channels) +
-                     " channels but its element type has " + std::to_string(written));
     }
 
     // Gives the variable an image type of the wanted format: its own type changed in place when

@@ -112,19 +112,6 @@ std::vector<uint32_t> SpirvModule::loadsOf(uint32_t variable) const {
     return loads;
 }
 
-std::vector<uint32_t> SpirvModule::componentsWrittenTo(uint32_t variable) const {
-    const auto loads = loadsOf(variable);
-    std::vector<uint32_t> components;
-    for (const auto& instruction : instructions_) {
-        if (instruction.opcode != spv::OpImageWrite) continue;
-        if (std::find(loads.begin(), loads.end(), instruction.operands[0]) == loads.end()) continue;
-        const auto* texel = definition(instruction.operands[2]);
-        const auto* type = texel ? definition(texel->operands[0]) : nullptr;
-        components.push_back(type && type->opcode == spv::OpTypeVector ? type->operands[2] : 1);
-    }
-    return components;
-}
-
 uint32_t SpirvModule::findTypeLike(const SpirvInstruction& type) const {
     for (const auto& instruction : instructions_)
         if (instruction.opcode == type.opcode && instruction.operands.size() == type.operands.size() &&
@@ -154,6 +141,32 @@ void SpirvModule::retypeVariable(uint32_t variable, uint32_t newPointer, uint32_
     for (auto& instruction : instructions_)
         if (instruction.opcode == spv::OpLoad && instruction.operands[2] == variable && instruction.operands[0] == oldImage)
             instruction.operands[0] = newImage;
+}
+
+void SpirvModule::insertBefore(size_t index, SpirvInstruction instruction) {
+    instructions_.insert(instructions_.begin() + static_cast<std::ptrdiff_t>(index), std::move(instruction));
+}
+
+uint32_t SpirvModule::typeOf(uint32_t id) const {
+    const auto* value = definition(id);
+    return value && resultIndex(value->opcode) == 1 ? value->operands[0] : 0;
+}
+
+uint32_t SpirvModule::declareOnce(SpirvInstruction declaration) {
+    const int result = resultIndex(declaration.opcode);
+    for (const auto& instruction : instructions_) {
+        if (instruction.opcode != declaration.opcode || instruction.operands.size() != declaration.operands.size()) continue;
+        bool same = true;
+        for (size_t i = 0; i < instruction.operands.size() && same; ++i)
+            same = static_cast<int>(i) == result || instruction.operands[i] == declaration.operands[i];
+        if (same) return instruction.operands[result];
+    }
+    const uint32_t id = newId();
+    declaration.operands[result] = id;
+    const auto firstFunction = std::find_if(instructions_.begin(), instructions_.end(),
+                                            [](const SpirvInstruction& instruction) { return instruction.opcode == spv::OpFunction; });
+    instructions_.insert(firstFunction, std::move(declaration));
+    return id;
 }
 
 void SpirvModule::requireCapability(uint32_t capability) {

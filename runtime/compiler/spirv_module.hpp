@@ -28,8 +28,6 @@ public:
     size_t usesOf(uint32_t id) const;
     // The result ids of every OpLoad from variable.
     std::vector<uint32_t> loadsOf(uint32_t variable) const;
-    // The component count of every texel OpImageWrite stores through a load of variable.
-    std::vector<uint32_t> componentsWrittenTo(uint32_t variable) const;
 
     // A type declared exactly like `type` (same opcode and operands but the result id), or 0.
     uint32_t findTypeLike(const SpirvInstruction& type) const;
@@ -40,6 +38,18 @@ public:
     // Gives variable the new pointer type and its loads the new image type.
     void retypeVariable(uint32_t variable, uint32_t newPointer, uint32_t oldImage, uint32_t newImage);
     void requireCapability(uint32_t capability);
+
+    // For passes that walk the functions: the instructions in order, an insertion before one of
+    // them, a fresh id.
+    size_t size() const { return instructions_.size(); }
+    SpirvInstruction& instruction(size_t index) { return instructions_[index]; }
+    void insertBefore(size_t index, SpirvInstruction instruction);
+    uint32_t newId() { return header_[3]++; }
+    // The result type of a value, 0 for an id without one.
+    uint32_t typeOf(uint32_t id) const;
+    // A type or constant declared like `declaration` (its result id ignored), declared at the end
+    // of the global declarations when there is none yet; returns its id.
+    uint32_t declareOnce(SpirvInstruction declaration);
     // Rewrites the format of every storage-image type with format `from`.
     void replaceStorageImageFormat(uint32_t from, uint32_t to);
 

@@ -107,6 +107,21 @@ TEST_F(RunCli, AFailedExpectationNamesItsWorstValueAndExitsWith3) {
     EXPECT_NE(result.out.find("0 of 1 expectations passed"), std::string::npos);
 }
 
+// RWTexture2D<float3> is rgba32f; glslang wrote its texels with 3 components, which the
+// validation layer rejects (VUID-RuntimeSpirv-OpImageWrite-07112) and which left alpha 0.
+TEST_F(RunCli, AThreeComponentStorageImageIsWrittenWithFourUnderValidation) {
+    std::ofstream(folder / "colour.hlsl") << "RWTexture2D<float3> Colour : register(u0);\n[numthreads(2, 2, 1)]\n"
+                                             "void main(uint3 id : SV_DispatchThreadID) { Colour[id.xy] = float3(id.x, id.y, 7); }\n";
+    const json run = {
+        {"shader", (folder / "colour.hlsl").string()},
+        {"resources", {{"Colour", {{"kind", "storage_image"}, {"dim", "2d"}, {"format", "R32G32B32A32_SFLOAT"}, {"size", {2, 2}}}}}},
+        {"dispatch", {{"threads", {2, 2, 1}}}},
+        {"expect", {{{"resource", "Colour"}, {"values", {0, 0, 7, 1, 1, 0, 7, 1, 0, 1, 7, 1, 1, 1, 7, 1}}}}}};
+    const auto result = iblkitRun(run);
+    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_NE(result.out.find("PASS Colour: 16 values exactly"), std::string::npos) << result.out;
+}
+
 TEST_F(RunCli, BindingANameTheShaderLacks) {
     auto run = fastPrefilter();
     run["resources"]["Extra"] = {{"kind", "sampler"}};

@@ -62,8 +62,18 @@ void expectRefused(std::map<std::string, std::string> formats, const std::string
     }
 }
 
-TEST(ImageFormat, MoreChannelsThanTheElementTypeIsRefused) {
-    expectRefused({{"Precomputed", "rgba16f"}}, "has 4 channels but its element type has 2");
+// A format wider than the element (an R16G16B16A16 view of a float2 UAV) is legal: the writes
+// are widened to four components, which spirv-val and Vulkan's rule 07112 then accept.
+TEST(ImageFormat, MoreChannelsThanTheElementTypeWidensTheWrites) {
+    auto options = testing::manifestShader("PrecomputedBrdfCS").options;
+    options.imageFormats = {{"Precomputed", "rgba16f"}};
+    const auto text = disassembleSpirv(compileShader(options).spirv); // validated inside
+    EXPECT_NE(text.find("OpTypeImage %float 2D 0 0 0 2 Rgba16f"), std::string::npos);
+    const auto write = text.find("OpImageWrite");
+    ASSERT_NE(write, std::string::npos);
+    const std::string line = text.substr(write, text.find('\n', write) - write); // OpImageWrite %image %coordinate %texel
+    const std::string texel = line.substr(line.rfind(' ') + 1);
+    EXPECT_NE(text.find(texel + " = OpCompositeConstruct %v4float"), std::string::npos) << line;
 }
 
 TEST(ImageFormat, AnotherComponentTypeIsRefused) {
