@@ -1,8 +1,11 @@
 #include "compiler.hpp"
 
+#include "compile_error.hpp"
 #include "hlsl_frontend.hpp"
+#include "spirv_image_access.hpp"
 #include "spirv_image_format.hpp"
 #include "spirv_texel_widening.hpp"
+#include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
 
 #include <nlohmann/json.hpp>
@@ -40,8 +43,8 @@ CompiledShader compileShader(const CompileOptions& options) {
     shader.sourceName = options.source.string();
     auto imageFormats = frontend.imageFormats; // [[vk::image_format]], where --image-format does not say otherwise
     for (const auto& [resource, format] : options.imageFormats) imageFormats[resource] = format;
-    const auto legal = widenStorageImageWrites(
-        applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats, shader.sourceName));
+    const auto formatted = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats, shader.sourceName);
+    const auto legal = decorateStorageImageAccess(makeWavePrefixScansExclusive(widenStorageImageWrites(formatted)));
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
@@ -58,7 +61,20 @@ CrossCompiled crossCompileShader(const CompiledShader& shader, CrossTarget targe
     return crossCompile(shader.namedSpirv, shader.reflection, target, shader.sourceName);
 }
 
-std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTarget, CrossCompiled>& targets) {
+ShaderForms crossCompileForms(const CompiledShader& shader, const std::set<CrossTarget>& targets) {
+    ShaderForms forms;
+    for (const auto target : targets) {
+        try {
+            forms.produced[target] = crossCompileShader(shader, target);
+        } catch (const CompileError& error) {
+            forms.refused[target] = error.what();
+        }
+    }
+    return forms;
+}
+
+std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTarget, CrossCompiled>& targets,
+                           const std::map<CrossTarget, std::string>& refused) {
     nlohmann::json json = toJson(shader.reflection);
     json["source"] = shader.sourceName;
     nlohmann::json rule = nlohmann::json::object();
@@ -68,6 +84,11 @@ std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTar
     nlohmann::json targetBindings = nlohmann::json::object();
     for (const auto& [target, compiled] : targets) targetBindings[std::string(crossTargetName(target))] = targetJson(compiled);
     json["targets"] = targetBindings;
+    if (!refused.empty()) {
+        nlohmann::json reasons = nlohmann::json::object();
+        for (const auto& [target, reason] : refused) reasons[std::string(crossTargetName(target))] = reason;
+        json["refused_forms"] = reasons;
+    }
     return json.dump(2) + "\n";
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,18 @@ CompiledShader compileShader(const CompileOptions& options);
 
 CrossCompiled crossCompileShader(const CompiledShader& shader, CrossTarget target);
 
-// The reflection JSON: resources, workgroup size, constants, the binding rule, and where each
-// resource lands in every target of `targets`.
-std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTarget, CrossCompiled>& targets);
+// Each form asked for, produced or refused: a form that cannot express the shader (wave
+// operations in OpenGL GLSL, an image ESSL cannot read and write) does not stop the others.
+struct ShaderForms {
+    std::map<CrossTarget, CrossCompiled> produced;
+    std::map<CrossTarget, std::string> refused; // the one-line reason (CompileError's message)
+};
+ShaderForms crossCompileForms(const CompiledShader& shader, const std::set<CrossTarget>& targets);
+
+// The reflection JSON: resources, workgroup size, constants, the binding rule, where each
+// resource lands in every produced form, and why each refused form was refused.
+std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTarget, CrossCompiled>& targets,
+                           const std::map<CrossTarget, std::string>& refused = {});
 
 // A Makefile rule "target: source includes..." for Ninja's and Make's depfile support.
 std::string makeDepfile(const std::string& target, const CompiledShader& shader);

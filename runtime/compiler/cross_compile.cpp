@@ -57,10 +57,28 @@ std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, co
     return adaptedFrom;
 }
 
+// ESSL 3.10 reads and writes one storage image only in r32f, r32i or r32ui; any other format
+// must be readonly or writeonly (decorateStorageImageAccess states which).
+void requireEsslImageAccess(const spirv_cross::CompilerGLSL& compiler, const ShaderReflection& reflection,
+                            const std::string& sourceName) {
+    const auto ids = variablesByName(compiler);
+    for (const auto& resource : reflection.resources) {
+        if (resource.kind != ResourceKind::StorageImage || resource.format == "r32f" || resource.format == "r32i" ||
+            resource.format == "r32ui")
+            continue;
+        const auto& decorations = compiler.get_decoration_bitset(ids.at(resource.name));
+        if (decorations.get(spv::DecorationNonReadable) || decorations.get(spv::DecorationNonWritable)) continue;
+        throw CompileError(sourceName + ": error: essl cannot express the shader: storage image '" + resource.name + "' (" +
+                           resource.format + ") is both read and written, which ESSL 3.10 allows only in r32f, r32i "
+                           "and r32ui: write the --glsl or --vulkan-glsl form, or give it one of those formats");
+    }
+}
+
 CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
                        const std::string& sourceName) {
     const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
+    if (es) requireEsslImageAccess(compiler, reflection, sourceName);
     auto options = compiler.get_common_options();
     options.version = es ? 310 : 450;
     options.es = es;
@@ -119,11 +137,11 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
     return out;
 }
 
-CrossCompiled toVulkanGlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
+CrossCompiled toVulkanGlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, bool es) {
     spirv_cross::CompilerGLSL compiler(spirv);
     auto options = compiler.get_common_options();
-    options.version = 450;
-    options.es = false;
+    options.version = es ? 310 : 450;
+    options.es = es;
     options.vulkan_semantics = true;
     compiler.set_common_options(options);
     CrossCompiled out;
@@ -166,12 +184,33 @@ CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& 
     return out;
 }
 
+bool usesWaveOperations(const spirv_cross::Compiler& compiler) {
+    const auto& capabilities = compiler.get_declared_capabilities();
+    return std::any_of(capabilities.begin(), capabilities.end(), [](spv::Capability capability) {
+        return capability >= spv::CapabilityGroupNonUniform && capability <= spv::CapabilityGroupNonUniformQuad;
+    });
+}
+
+// SPIRV-Cross always names the HLSL entry point `main` (and the function it wraps `<stage>_main`):
+// the round trip keeps the entry point's own name, so the host code that names it still works.
+std::string withEntryName(std::string source, const std::string& entry) {
+    if (entry == "main") return source;
+    for (const std::string returned : {"void ", "SPIRV_Cross_Output "}) {
+        const std::string wrapper = "\n" + returned + "main(";
+        if (const auto at = source.find(wrapper); at != std::string::npos) {
+            source.replace(at + 1 + returned.size(), 4, entry);
+            return source;
+        }
+    }
+    return source;
+}
+
 CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
     spirv_cross::CompilerHLSL compiler(spirv);
     const bool usesSpaces = std::any_of(reflection.resources.begin(), reflection.resources.end(),
                                         [](const auto& resource) { return resource.location.space != 0; });
     auto options = compiler.get_hlsl_options();
-    options.shader_model = usesSpaces ? 51 : 50;
+    options.shader_model = usesWaveOperations(compiler) ? 60 : usesSpaces ? 51 : 50;
     compiler.set_hlsl_options(options);
 
     CrossCompiled out;
@@ -187,8 +226,18 @@ CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection&
         out.bindings.push_back({resource.name, std::string(1, registerLetter(resource.location.registerClass)),
                                 resource.location.registerIndex, "", "", ""});
     }
-    out.source = compiler.compile();
+    out.source = withEntryName(compiler.compile(), reflection.entryPoint);
     return out;
+}
+
+// SPIRV-Cross's reason, with the construct named in HLSL's terms and the form that can
+// express it.
+std::string explained(CrossTarget target, const std::string& reason) {
+    const bool openGl = target == CrossTarget::Glsl || target == CrossTarget::Essl;
+    if (openGl && reason.find("only supported in Vulkan semantics") != std::string::npos)
+        return "wave operations (Wave*, Quad*) exist in GLSL only with Vulkan semantics (GL_KHR_shader_subgroup): "
+               "write that form with --vulkan-" + std::string(crossTargetName(target)) + " FILE (" + reason + ")";
+    return reason;
 }
 
 } // namespace
@@ -200,6 +249,7 @@ std::string_view crossTargetName(CrossTarget target) {
     case CrossTarget::Msl: return "msl";
     case CrossTarget::Hlsl: return "hlsl";
     case CrossTarget::VulkanGlsl: return "vulkan-glsl";
+    case CrossTarget::VulkanEssl: return "vulkan-essl";
     }
     return "unknown";
 }
@@ -212,11 +262,12 @@ CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderRefle
         case CrossTarget::Essl: return toOpenGl(spirv, reflection, true, sourceName);
         case CrossTarget::Msl: return toMsl(spirv, reflection);
         case CrossTarget::Hlsl: return toHlsl(spirv, reflection);
-        case CrossTarget::VulkanGlsl: return toVulkanGlsl(spirv, reflection);
+        case CrossTarget::VulkanGlsl: return toVulkanGlsl(spirv, reflection, false);
+        case CrossTarget::VulkanEssl: return toVulkanGlsl(spirv, reflection, true);
         }
     } catch (const spirv_cross::CompilerError& error) {
         throw CompileError(sourceName + ": error: " + std::string(crossTargetName(target)) +
-                           " cannot express the shader: " + error.what());
+                           " cannot express the shader: " + explained(target, error.what()));
     }
     return {};
 }

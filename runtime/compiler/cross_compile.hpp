@@ -8,9 +8,10 @@
 
 namespace iblkit::compiler {
 
-// VulkanGlsl is GLSL 450 with Vulkan semantics (sets, bindings, separate textures and samplers
-// kept): the form that compiles back to SPIR-V for Vulkan.
-enum class CrossTarget { Glsl, Essl, Msl, Hlsl, VulkanGlsl };
+// VulkanGlsl and VulkanEssl are GLSL 450 and ESSL 310 with Vulkan semantics (sets, bindings,
+// separate textures and samplers kept, GL_KHR_shader_subgroup for wave operations): the forms
+// that compile back to SPIR-V for Vulkan.
+enum class CrossTarget { Glsl, Essl, Msl, Hlsl, VulkanGlsl, VulkanEssl };
 std::string_view crossTargetName(CrossTarget target);
 
 // Where one HLSL resource lands in a target language.
@@ -30,9 +31,9 @@ struct CrossCompiled {
 };
 
 // SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1, MSL 2.1 or HLSL (SM 5.0,
-// 5.1 where a register space is used) with SPIRV-Cross. Resources are numbered per target
-// namespace in register order (docs/bindings.md). Throws CompileError naming the construct a
-// target cannot express.
+// 5.1 where a register space is used, 6.0 where wave operations are) with SPIRV-Cross. Resources are numbered per target
+// namespace in register order (docs/bindings.md). Throws CompileError naming the form, the
+// construct it cannot express and, where another form can, the option that writes that form.
 CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, CrossTarget target,
                            const std::string& sourceName);
 

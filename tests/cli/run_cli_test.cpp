@@ -122,6 +122,23 @@ TEST_F(RunCli, AThreeComponentStorageImageIsWrittenWithFourUnderValidation) {
     EXPECT_NE(result.out.find("PASS Colour: 16 values exactly"), std::string::npos) << result.out;
 }
 
+// glslang emitted HLSL's exclusive prefix operations as inclusive scans: every lane's own value
+// was added (3 per lane here, where all must be 0).
+TEST_F(RunCli, WavePrefixOperationsLeaveTheirOwnLaneOut) {
+    std::ofstream(folder / "prefix.hlsl")
+        << "RWStructuredBuffer<uint> Out : register(u0);\n[numthreads(64, 1, 1)]\n"
+           "void main(uint3 id : SV_DispatchThreadID) {\n    uint lane = WaveGetLaneIndex();\n"
+           "    Out[id.x] = (WavePrefixSum(1u) - lane) + (WavePrefixCountBits(true) - lane) + "
+           "(uint(WavePrefixProduct(2.0)) - (1u << lane));\n}\n";
+    const json run = {{"shader", (folder / "prefix.hlsl").string()},
+                      {"resources", {{"Out", {{"kind", "buffer"}, {"type", "uint"}, {"count", 64}}}}},
+                      {"dispatch", {{"threads", {64, 1, 1}}}},
+                      {"expect", {{{"resource", "Out"}, {"fill", 0}}}}};
+    const auto result = iblkitRun(run);
+    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_NE(result.out.find("PASS Out: 64 values exactly"), std::string::npos) << result.out;
+}
+
 TEST_F(RunCli, BindingANameTheShaderLacks) {
     auto run = fastPrefilter();
     run["resources"]["Extra"] = {{"kind", "sampler"}};

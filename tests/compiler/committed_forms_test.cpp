@@ -21,11 +21,10 @@ TEST(CommittedForms, GlslFolderMatchesTheCompilersOutput) {
     std::set<fs::path> expectedFiles;
     for (const auto& entry : readShaderManifest(testing::kManifest)) {
         const auto shader = compileShader(entry.options);
-        std::map<CrossTarget, CrossCompiled> forms;
-        for (const auto& [target, extension] : extensions) forms[target] = crossCompileShader(shader, target);
+        const auto forms = crossCompileForms(shader, {CrossTarget::Glsl, CrossTarget::Essl, CrossTarget::Msl});
         std::map<fs::path, std::string> files;
-        for (const auto& [target, extension] : extensions) files["glsl/" + entry.name + extension] = forms[target].source;
-        files["glsl/" + entry.name + ".json"] = reflectionJson(shader, forms);
+        for (const auto& [target, form] : forms.produced) files["glsl/" + entry.name + extensions.at(target)] = form.source;
+        files["glsl/" + entry.name + ".json"] = reflectionJson(shader, forms.produced, forms.refused);
         for (const auto& [path, text] : files) {
             expectedFiles.insert(path);
             ASSERT_TRUE(fs::exists(path)) << path << " is missing; run: cmake --build build --target refresh-glsl";

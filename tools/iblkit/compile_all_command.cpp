@@ -23,19 +23,24 @@ struct CompileAllArguments {
 const std::map<std::string, compiler::CrossTarget> kForms = {{"glsl", compiler::CrossTarget::Glsl},
                                                              {"essl", compiler::CrossTarget::Essl},
                                                              {"msl", compiler::CrossTarget::Msl},
-                                                             {"hlsl", compiler::CrossTarget::Hlsl}};
+                                                             {"hlsl", compiler::CrossTarget::Hlsl},
+                                                             {"vulkan-glsl", compiler::CrossTarget::VulkanGlsl},
+                                                             {"vulkan-essl", compiler::CrossTarget::VulkanEssl}};
 const std::map<compiler::CrossTarget, std::string> kExtensions = {{compiler::CrossTarget::Glsl, ".glsl"},
                                                                   {compiler::CrossTarget::Essl, ".essl"},
                                                                   {compiler::CrossTarget::Msl, ".metal"},
-                                                                  {compiler::CrossTarget::Hlsl, ".hlsl"}};
+                                                                  {compiler::CrossTarget::Hlsl, ".hlsl"},
+                                                                  {compiler::CrossTarget::VulkanGlsl, ".vk.glsl"},
+                                                                  {compiler::CrossTarget::VulkanEssl, ".vk.essl"}};
 
+// The Vulkan-semantics forms are written only when asked for.
 std::set<std::string> selectedForms(const std::vector<std::string>& only) {
-    std::set<std::string> all = {"spirv", "glsl", "essl", "msl", "hlsl", "reflect"};
-    if (only.empty()) return all;
+    const std::set<std::string> byDefault = {"spirv", "glsl", "essl", "msl", "hlsl", "reflect"};
+    if (only.empty()) return byDefault;
     for (const auto& form : only)
-        if (!all.count(form))
+        if (!byDefault.count(form) && !kForms.count(form))
             throw compiler::CompileError("error: --only: unknown form '" + form +
-                                         "' (forms: spirv, glsl, essl, msl, hlsl, reflect)");
+                                         "' (forms: spirv, glsl, essl, msl, hlsl, vulkan-glsl, vulkan-essl, reflect)");
     return {only.begin(), only.end()};
 }
 
@@ -66,14 +71,16 @@ std::string compileForms(const compiler::ManifestShader& entry, const std::set<s
     if (forms.count("spirv"))
         outputs.emplace_back(base + ".spv", std::string(reinterpret_cast<const char*>(shader.spirv.data()),
                                                         shader.spirv.size() * sizeof(uint32_t)));
-    std::map<compiler::CrossTarget, compiler::CrossCompiled> compiled;
-    for (const auto& [form, target] : kForms) {
-        if (!forms.count(form)) continue;
-        compiled[target] = compiler::crossCompileShader(shader, target);
-        outputs.emplace_back(base + kExtensions.at(target), compiled[target].source);
-    }
-    if (forms.count("reflect")) outputs.emplace_back(base + ".json", compiler::reflectionJson(shader, compiled));
-    return summaryLine(entry.name, shader, forms.size(), std::chrono::steady_clock::now() - started);
+    std::set<compiler::CrossTarget> targets;
+    for (const auto& [form, target] : kForms)
+        if (forms.count(form)) targets.insert(target);
+    const auto compiled = compiler::crossCompileForms(shader, targets);
+    for (const auto& [target, form] : compiled.produced) outputs.emplace_back(base + kExtensions.at(target), form.source);
+    // A refused form is no failure of the manifest: its reason is printed and kept in the reflection.
+    for (const auto& [target, reason] : compiled.refused) fmt::print(stderr, "{}\n", reason);
+    if (forms.count("reflect"))
+        outputs.emplace_back(base + ".json", compiler::reflectionJson(shader, compiled.produced, compiled.refused));
+    return summaryLine(entry.name, shader, forms.size() - compiled.refused.size(), std::chrono::steady_clock::now() - started);
 }
 
 void runCompileAll(const CompileAllArguments& arguments) {
@@ -99,7 +106,7 @@ void addCompileAllCommand(CLI::App& app) {
     auto* command = app.add_subcommand("compile-all", "Compile every shader of a manifest into every form");
     command->add_option("manifest", arguments->manifest, "Shader manifest (default hlsl/shaders.json)");
     command->add_option("-o,--output-dir", arguments->outputDir, "Folder for the outputs")->required();
-    command->add_option("--only", arguments->only, "Forms to write: spirv, glsl, essl, msl, hlsl, reflect")
+    command->add_option("--only", arguments->only, "Forms to write: spirv, glsl, essl, msl, hlsl, reflect (the default), vulkan-glsl, vulkan-essl")
         ->delimiter(',');
     command->callback([arguments] { runCompileAll(*arguments); });
 }

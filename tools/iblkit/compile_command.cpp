@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <set>
 
 namespace iblkit::cli {
 namespace {
@@ -71,17 +72,19 @@ void runCompile(const CompileArguments& arguments) {
     inputs.insert(inputs.end(), shader.includedFiles.begin(), shader.includedFiles.end());
     output.protect(std::move(inputs));
     output.add(arguments.output, spirvBytes(shader.spirv));
-    std::map<compiler::CrossTarget, compiler::CrossCompiled> forms;
-    for (const auto& [target, path] : arguments.forms) {
-        forms[target] = compiler::crossCompileShader(shader, target);
-        output.add(path, forms[target].source);
-    }
-    if (!arguments.reflect.empty()) output.add(arguments.reflect, compiler::reflectionJson(shader, forms));
+    std::set<compiler::CrossTarget> targets;
+    for (const auto& [target, path] : arguments.forms) targets.insert(target);
+    const auto forms = compiler::crossCompileForms(shader, targets);
+    for (const auto& [target, form] : forms.produced) output.add(arguments.forms.at(target), form.source);
+    if (!arguments.reflect.empty()) output.add(arguments.reflect, compiler::reflectionJson(shader, forms.produced, forms.refused));
     if (arguments.writeDepfile || !arguments.depfile.empty()) {
         const std::string depfile = arguments.depfile.empty() ? arguments.output + ".d" : arguments.depfile;
         output.add(depfile, compiler::makeDepfile(arguments.output, shader));
     }
     output.commit();
+    // The forms that can express the shader are written; each refused one is a line, and exit 4.
+    for (const auto& [target, reason] : forms.refused) fmt::print(stderr, "{}\n", reason);
+    if (!forms.refused.empty()) throw FormsRefused{};
 }
 
 } // namespace
@@ -107,7 +110,9 @@ void addCompileCommand(CLI::App& app) {
     const std::pair<const char*, compiler::CrossTarget> forms[] = {{"--glsl", compiler::CrossTarget::Glsl},
                                                                    {"--essl", compiler::CrossTarget::Essl},
                                                                    {"--msl", compiler::CrossTarget::Msl},
-                                                                   {"--hlsl", compiler::CrossTarget::Hlsl}};
+                                                                   {"--hlsl", compiler::CrossTarget::Hlsl},
+                                                                   {"--vulkan-glsl", compiler::CrossTarget::VulkanGlsl},
+                                                                   {"--vulkan-essl", compiler::CrossTarget::VulkanEssl}};
     for (const auto& [flag, target] : forms)
         command->add_option_function<std::string>(
             flag, [arguments, target = target](const std::string& path) { arguments->forms[target] = path; },

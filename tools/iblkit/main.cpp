@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
         return 2;
     } catch (const iblkit::cli::ExpectationsFailed&) {
         return 3;
+    } catch (const iblkit::cli::FormsRefused&) {
+        return 4;
     } catch (const std::exception& error) {
         fmt::print(stderr, "{}\n", error.what());
         return 1;
