@@ -38,6 +38,9 @@ struct CompileOptions {
     bool boundPreprocessing = false;
     // HLSL 2021 (DXC's default) is lowered to what glslang reads (runtime/lowering/); 2018 is not.
     lowering::HlslVersion hlslVersion = lowering::HlslVersion::Hlsl2021;
+    // DXC's -enable-16bit-types: half, min16* and float16_t/int16_t/uint16_t are 16 bits wide.
+    // Without it they are 32 bits, as in DXC (min16* with a warning).
+    bool enable16BitTypes = false;
 };
 
 } // namespace iblkit::compiler

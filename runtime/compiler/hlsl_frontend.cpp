@@ -28,8 +28,11 @@ namespace iblkit::compiler {
 namespace {
 
 constexpr int kHlslVersion = 100;
-constexpr auto kMessages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules |
-                                                    EShMsgHlslOffsets);
+
+EShMessages messagesFor(const CompileOptions& options) {
+    const int sixteenBit = options.enable16BitTypes ? int(EShMsgHlslEnable16BitTypes) : 0;
+    return static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules | EShMsgHlslOffsets | sixteenBit);
+}
 
 std::string preambleOf(const CompileOptions& options) {
     std::string preamble;
@@ -40,9 +43,14 @@ std::string preambleOf(const CompileOptions& options) {
 [[noreturn]] void failWith(const std::string& log, const IncludeResolver& files, const std::string& sourceName,
                            const std::string& fallback) {
     if (files.cycle()) throw CompileError(*files.cycle()); // glslang only says it could not include
-    // glslang's HLSL frontend cascades after its first error; the first is the real one.
+    // glslang's HLSL frontend cascades after its first error; the first is the real one. Some of
+    // its errors have no place ("0:0: 'constructor' : can't convert", then the located one):
+    // the first located error says more.
     const auto diagnostics = parseGlslangLog(log, files, sourceName);
-    throw CompileError(diagnostics.errors.empty() ? sourceName + ": error: " + fallback : diagnostics.errors.front());
+    if (diagnostics.errors.empty()) throw CompileError(sourceName + ": error: " + fallback);
+    const auto located = std::find_if(diagnostics.errors.begin(), diagnostics.errors.end(),
+                                      [](const std::string& error) { return error.rfind("0:0:", 0) != 0; });
+    throw CompileError(located != diagnostics.errors.end() ? *located : diagnostics.errors.front());
 }
 
 // One TShader configured the same way for the preprocessing pass and the real parse.
@@ -76,28 +84,28 @@ std::string preprocess(const CompileOptions& options, const std::string& sourceN
                        IncludeResolver& includes) {
     ConfiguredShader configured(EShLangCompute, options, sourceName, text);
     std::string preprocessed;
-    if (!configured.shader.preprocess(GetDefaultResources(), kHlslVersion, ENoProfile, false, false, kMessages,
+    if (!configured.shader.preprocess(GetDefaultResources(), kHlslVersion, ENoProfile, false, false, messagesFor(options),
                                       &preprocessed, includes))
         failWith(configured.shader.getInfoLog(), includes, sourceName, "preprocessing failed");
     return preprocessed;
 }
 
-// No definition of the entry point was found: a syntax error in it is the likelier cause, and
-// glslang names its place; only when it finds none is the entry point missing.
-ShaderStage deduceOrReportSyntax(const std::string& preprocessed, const CompileOptions& options,
-                                 const std::string& sourceName, const std::string& text, bool textIsPreprocessed) {
-    try {
-        return deduceStage(preprocessed, options.entryPoint, sourceName);
-    } catch (const CompileError&) {
-        IncludeResolver includes(options.includeDirs, &options.virtualFiles);
-        includes.addSource(sourceName, text);
-        ConfiguredShader configured(EShLangFragment, options, sourceName, text, textIsPreprocessed);
-        if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes) &&
-            configured.shader.getInfoLog() != std::string() &&
-            std::string(configured.shader.getInfoLog()).find("Entry point not found") == std::string::npos)
-            failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
-        throw;
-    }
+// When no definition of the entry point is found, a syntax error in it is the likelier cause,
+// and glslang names its place; only when it finds none is the entry point missing.
+// The stage given (-S) or deduced; either way the entry point must be defined (glslang alone
+// would end in "resource binding failed").
+ShaderStage stageOrReportSyntax(const std::string& preprocessed, const CompileOptions& options,
+                                const std::string& sourceName, const std::string& text, bool textIsPreprocessed) {
+    if (definesEntryPoint(preprocessed, options.entryPoint))
+        return options.stage ? *options.stage : deduceStage(preprocessed, options.entryPoint, sourceName);
+    IncludeResolver includes(options.includeDirs, &options.virtualFiles);
+    includes.addSource(sourceName, text);
+    ConfiguredShader configured(EShLangFragment, options, sourceName, text, textIsPreprocessed);
+    if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, messagesFor(options), includes) &&
+        configured.shader.getInfoLog() != std::string() &&
+        std::string(configured.shader.getInfoLog()).find("Entry point not found") == std::string::npos)
+        failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
+    throw CompileError(sourceName + ": error: entry point '" + options.entryPoint + "' is not defined");
 }
 
 // -D names reach glslang as "#define NAME VALUE" in a preamble, whose errors have no place.
@@ -113,7 +121,7 @@ void requireMacroNames(const CompileOptions& options, const std::string& sourceN
 
 lowering::LoweredSource lower(const CompileOptions& options, const std::string& sourceName, const std::string& preprocessed) {
     try {
-        return lowering::lowerHlsl(preprocessed, sourceName, options.hlslVersion);
+        return lowering::lowerHlsl(preprocessed, sourceName, options.hlslVersion, options.enable16BitTypes);
     } catch (const lowering::LoweringError& error) {
         throw CompileError(error.what());
     }
@@ -175,20 +183,19 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     const auto lowered = lower(options, sourceName, preprocess(options, sourceName, text, preprocessedIncludes));
     // A shader that needs no lowering is parsed from its own text, as it was written.
     const std::string& parsed = lowered.changed ? lowered.text : text;
-    const ShaderStage stage =
-        options.stage ? *options.stage : deduceOrReportSyntax(lowered.text, options, sourceName, parsed, lowered.changed);
+    const ShaderStage stage = stageOrReportSyntax(lowered.text, options, sourceName, parsed, lowered.changed);
     const EShLanguage language = toGlslang(stage);
 
     IncludeResolver ownIncludes(options.includeDirs, &options.virtualFiles);
     ownIncludes.addSource(sourceName, text);
     IncludeResolver& includes = lowered.changed ? preprocessedIncludes : ownIncludes;
     ConfiguredShader configured(language, options, sourceName, parsed, lowered.changed);
-    if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, kMessages, includes))
+    if (!configured.shader.parse(GetDefaultResources(), kHlslVersion, false, messagesFor(options), includes))
         failWith(configured.shader.getInfoLog(), includes, sourceName, "compilation failed");
 
     glslang::TProgram program;
     program.addShader(&configured.shader);
-    if (!program.link(kMessages))
+    if (!program.link(messagesFor(options)))
         failWith(program.getInfoLog(), includes, sourceName, "link failed");
 
     glslang::TIntermediate& intermediate = *program.getIntermediate(language);
@@ -204,7 +211,7 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     spvOptions.disableOptimizer = true;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
-    result.warnings = lowered.vulkan.warnings;
+    result.warnings = lowered.warnings;
     for (auto& warning : parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings)
         result.warnings.push_back(std::move(warning));
     const std::string spvMessages = logger.getAllMessages();

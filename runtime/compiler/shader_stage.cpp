@@ -55,18 +55,32 @@ std::optional<ShaderStage> parseStageName(std::string_view name) {
     return std::nullopt;
 }
 
+// A definition: optional [attributes], a return type, the name, a parameter list, an optional
+// ": SEMANTIC", then the body's brace.
+std::regex definitionOf(const std::string& entry) {
+    return std::regex("((?:\\[[^\\]]*\\]\\s*)*)\\b[\\w<>,\\s]+?\\s+" + entry + "\\s*\\(([^)]*)\\)\\s*(:\\s*\\w+\\s*)?\\{");
+}
+
+bool definesEntryPoint(const std::string& source, const std::string& entry) {
+    return std::regex_search(source, definitionOf(entry));
+}
+
 ShaderStage deduceStage(const std::string& source, const std::string& entry, const std::string& sourceName) {
-    // A definition: optional [attributes], a return type, the name, a parameter list, an
-    // optional ": SEMANTIC", then the body's brace.
-    const std::regex definition("((?:\\[[^\\]]*\\]\\s*)*)\\b[\\w<>,\\s]+?\\s+" + entry +
-                                "\\s*\\(([^)]*)\\)\\s*(:\\s*\\w+\\s*)?\\{");
     std::smatch match;
-    if (!std::regex_search(source, match, definition))
+    if (!std::regex_search(source, match, definitionOf(entry)))
         throw CompileError(sourceName + ": error: entry point '" + entry + "' is not defined");
     const std::string attributes = match[1];
     const std::string signature = std::string(match[2]) + std::string(match[3]);
 
     if (auto stage = stageFromShaderAttribute(attributes, entry, sourceName)) return *stage;
+    // A hull shader has [outputtopology] too, but never [numthreads].
+    const bool mesh = (contains(attributes, "outputtopology") && contains(attributes, "numthreads")) ||
+                      std::regex_search(signature, std::regex(R"(\bout\s+(vertices|indices|primitives)\b)"));
+    const bool amplification = !mesh && contains(attributes, "numthreads") && contains(source, "DispatchMesh");
+    if (mesh || amplification)
+        throw CompileError(sourceName + ": error: entry point '" + entry + "' is " +
+                           (mesh ? "a mesh" : "an amplification") +
+                           " shader, an unsupported stage (supported: vertex, hull, domain, geometry, pixel, compute)");
     if (contains(attributes, "numthreads")) return ShaderStage::Compute;
     if (contains(attributes, "maxvertexcount")) return ShaderStage::Geometry;
     if (contains(attributes, "outputcontrolpoints") || contains(attributes, "patchconstantfunc"))

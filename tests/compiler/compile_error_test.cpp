@@ -153,5 +153,20 @@ TEST_F(CompileErrors, BoundedPreprocessingReportsTheSameErrors) {
     EXPECT_EQ(errorOf(source, "main", true), errorOf(source));
 }
 
+// With the stage given, glslang alone ended a missing entry point in "resource binding failed".
+TEST_F(CompileErrors, AMissingEntryPointIsNamedWhenTheStageIsGiven) {
+    const auto source = folder.write("compute.hlsl", kValidBody);
+    CompileOptions options;
+    options.source = source;
+    options.entryPoint = "CSMain";
+    options.stage = ShaderStage::Compute;
+    try {
+        compileShader(options);
+        FAIL() << "compiled";
+    } catch (const CompileError& error) {
+        EXPECT_EQ(std::string(error.what()), source.string() + ": error: entry point 'CSMain' is not defined");
+    }
+}
+
 } // namespace
 } // namespace iblkit::compiler

@@ -2,6 +2,7 @@
 // glslang, [[vk::...]] attributes honoured as written, errors pointing at the user's files.
 #include "compile_error.hpp"
 #include "compiler.hpp"
+#include "spirv_tools.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -116,6 +117,34 @@ TEST_F(Hlsl2021, AnAttributeTheKitDoesNotHonourIsAWarning) {
     ASSERT_FALSE(shader.warnings.empty());
     EXPECT_NE(shader.warnings.front().find("[[vk::combinedImageSampler]] is not honoured by the kit"), std::string::npos)
         << shader.warnings.front();
+}
+
+TEST_F(Hlsl2021, SixteenBitTypesAreSixteenBitsWideWithTheSwitch) {
+    CompileOptions options;
+    options.source = folder.write("half.hlsl", std::string("RWStructuredBuffer<float> Out;\n"
+                                                           "float f(uint i) { float16_t2 v = float16_t2(float16_t(1.5), float16_t(2.0)); "
+                                                           "min16float m = (min16float)2.5; float r = v.y * m; return r; }\n") +
+                                                   kEntry);
+    options.enable16BitTypes = true;
+    const auto shader = compileShader(options);
+    EXPECT_TRUE(shader.warnings.empty());
+    EXPECT_NE(disassembleSpirv(shader.spirv).find("OpTypeFloat 16"), std::string::npos);
+    options.enable16BitTypes = false;
+    EXPECT_THROW(compileShader(options), CompileError); // float16_t needs the switch
+}
+
+// glslang converts no float literal to a half vector's components; its first error had no place.
+TEST_F(Hlsl2021, AConversionGlslangLacksIsReportedAtItsLine) {
+    CompileOptions options;
+    options.source = folder.write("half.hlsl", "RWStructuredBuffer<float> Out;\nfloat f(uint i) { half2 v = half2(1.5, 2); return v.y; }\n");
+    options.enable16BitTypes = true;
+    try {
+        compileShader(options);
+        FAIL() << "compiled";
+    } catch (const CompileError& error) {
+        EXPECT_EQ(std::string(error.what()), options.source.string() + ":2:1: error: ' const 2-component vector of float16_t' : "
+                                                                        "cannot construct with these arguments");
+    }
 }
 
 } // namespace

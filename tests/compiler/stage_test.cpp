@@ -40,6 +40,31 @@ TEST(StageDeduction, UnsupportedStageIsNamed) {
     }
 }
 
+std::string refusalOf(const std::string& source) {
+    try {
+        stageOf(source);
+    } catch (const CompileError& error) {
+        return error.what();
+    }
+    return "(a stage)";
+}
+
+// Before, a mesh shader without [shader("mesh")] was taken for compute ([numthreads]) and ended in
+// glslang's parse error at its `out vertices` parameter.
+TEST(StageDeduction, MeshAndAmplificationShadersAreRecognizedAndRefusedByName) {
+    const std::string unsupported = ", an unsupported stage (supported: vertex, hull, domain, geometry, pixel, compute)";
+    EXPECT_EQ(refusalOf("[outputtopology(\"triangle\")]\n[numthreads(32, 1, 1)]\n"
+                        "void main(uint t : SV_GroupThreadID, out vertices V v[3], out indices uint3 i[1]) {}"),
+              "s.hlsl: error: entry point 'main' is a mesh shader" + unsupported);
+    EXPECT_EQ(refusalOf("[numthreads(32, 1, 1)]\nvoid main(out indices uint3 i[1]) {}"),
+              "s.hlsl: error: entry point 'main' is a mesh shader" + unsupported);
+    EXPECT_EQ(refusalOf("groupshared P p;\n[numthreads(32, 1, 1)]\nvoid main(uint i : SV_GroupIndex) { DispatchMesh(1, 1, 1, p); }"),
+              "s.hlsl: error: entry point 'main' is an amplification shader" + unsupported);
+    // A hull shader states [outputtopology] too.
+    EXPECT_EQ(stageOf("[domain(\"tri\")]\n[outputtopology(\"triangle_cw\")]\n[outputcontrolpoints(3)]\nHS main(InputPatch<VS, 3> p) {}"),
+              ShaderStage::TessControl);
+}
+
 TEST(StageDeduction, NoClueAsksForTheStage) {
     EXPECT_THROW(stageOf("void main() {}"), CompileError);
     EXPECT_THROW(stageOf("[numthreads(1,1,1)] void other() {}"), CompileError);

@@ -135,6 +135,25 @@ TEST(Lowering, Hlsl2018LowersNothingButTheAttributes) {
     EXPECT_EQ(lowerHlsl(text, "a.hlsl", HlslVersion::Hlsl2018).text, text);
 }
 
+TEST(SixteenBitTypes, DxcsExplicitTypesTakeGlslangsNames) {
+    const auto result = lowerHlsl("float16_t a; float16_t3x3 m; int16_t2 i; uint16_t u; s.float16_t;", "a.hlsl",
+                                  HlslVersion::Hlsl2021, true);
+    EXPECT_EQ(result.text, "half a; half3x3 m; min16int2 i; min16uint u; s.float16_t;");
+    EXPECT_TRUE(result.warnings.empty());
+}
+
+TEST(SixteenBitTypes, WithoutTheSwitchTheyAreRefusedAsDxcRefusesThem) {
+    EXPECT_EQ(errorOf("float x;\n  uint16_t2 u;"), "a.hlsl:2:3: error: 'uint16_t2' is a 16-bit type: compile with -enable-16bit-types");
+}
+
+TEST(SixteenBitTypes, MinimumPrecisionAt32BitsIsAWarning) {
+    const auto result = lowerHlsl("min16float a; min16float2 b; min16uint c; half d;", "a.hlsl", HlslVersion::Hlsl2021);
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_EQ(result.warnings[0], "a.hlsl: warning: min16float, min16float2, min16uint compiled at 32 bits (minimum "
+                                  "precision without -enable-16bit-types; docs/compiler.md)");
+    EXPECT_TRUE(lowerHlsl("min16float a;", "a.hlsl", HlslVersion::Hlsl2021, true).warnings.empty());
+}
+
 TEST(VulkanAttributes, BindingsAreReadByResourceName) {
     const auto result = lowerHlsl("[[vk::binding(5, 1)]] RWTexture2D<float4> Img : register(u0);\n"
                                   "[[vk::binding(2)]] cbuffer Params { float4 k; };\n"
@@ -166,8 +185,8 @@ TEST(VulkanAttributes, PushConstantOnAPlainStructBecomesAConstantBuffer) {
 
 TEST(VulkanAttributes, AnAttributeTheKitDoesNotHonourIsAWarning) {
     const auto result = lowerHlsl("[[vk::combinedImageSampler]] Texture2D t;", "a.hlsl", HlslVersion::Hlsl2021);
-    ASSERT_EQ(result.vulkan.warnings.size(), 1u);
-    EXPECT_EQ(result.vulkan.warnings[0], "a.hlsl:1:7: warning: [[vk::combinedImageSampler]] is not honoured by the kit "
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_EQ(result.warnings[0], "a.hlsl:1:7: warning: [[vk::combinedImageSampler]] is not honoured by the kit "
                                          "(it honours vk::binding, image_format, push_constant, constant_id and location)");
 }
 

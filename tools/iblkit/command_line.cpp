@@ -6,7 +6,7 @@
 namespace iblkit::cli {
 
 std::vector<std::string> normalizeArguments(int argc, char** argv) {
-    constexpr std::array kCompilerStyle{"-Os", "-MD", "-MF", "-HV"};
+    constexpr std::array kCompilerStyle{"-Os", "-MD", "-MF", "-HV", "-enable-16bit-types"};
     std::vector<std::string> arguments;
     for (int i = 1; i < argc; ++i) {
         std::string argument = argv[i];

@@ -30,6 +30,7 @@ struct CompileArguments {
     bool writeDepfile = false;
     std::string depfile;
     int hlslVersion = 2021;
+    bool enable16BitTypes = false;
 };
 
 compiler::CompileOptions toOptions(const CompileArguments& arguments) {
@@ -55,6 +56,7 @@ compiler::CompileOptions toOptions(const CompileArguments& arguments) {
                            : arguments.optimize   ? compiler::OptimizationLevel::Performance
                                                   : compiler::OptimizationLevel::None;
     options.stripDebugInfo = arguments.strip;
+    options.enable16BitTypes = arguments.enable16BitTypes;
     options.hlslVersion = arguments.hlslVersion == 2018 ? lowering::HlslVersion::Hlsl2018 : lowering::HlslVersion::Hlsl2021;
     return options;
 }
@@ -120,6 +122,8 @@ void addCompileCommand(CLI::App& app) {
     command->add_option("--HV,--hlsl-version", arguments->hlslVersion,
                         "HLSL version, 2021 (the default, as in DXC: select, enum, namespace lowered) or 2018; spelled -HV")
         ->check(CLI::IsMember({2018, 2021}));
+    command->add_flag("--enable-16bit-types", arguments->enable16BitTypes,
+                      "16-bit half, min16* and float16_t/int16_t/uint16_t, as DXC's flag; spelled -enable-16bit-types");
     command->add_option("--reflect", arguments->reflect, "Write the reflection JSON");
     command->add_flag("--MD", arguments->writeDepfile, "Write a depfile (spelled -MD; OUT.d unless -MF)");
     command->add_option("--MF", arguments->depfile, "Depfile path (spelled -MF)");
