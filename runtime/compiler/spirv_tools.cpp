@@ -64,7 +64,16 @@ void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& source
 std::vector<uint32_t> legalizeHlslSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
     spvtools::Optimizer optimizer(kEnvironment);
     optimizer.RegisterLegalizationPasses();
-    return runPasses(optimizer, spirv, sourceName, "legalization");
+    try {
+        return runPasses(optimizer, spirv, sourceName, "legalization");
+    } catch (const CompileError& error) {
+        // glslang keeps an HLSL integer matrix as one, which SPIR-V has no type for.
+        const std::string message = error.what();
+        if (message.find("Matrix types can only be parameterized with floating-point types") == std::string::npos) throw;
+        throw CompileError(sourceName + ": error: an integer matrix (uint4x4, int3x3, ...) has no SPIR-V type for Vulkan, "
+                                        "and glslang keeps it as one: hold its rows in vectors (uint4 rows[4]) and "
+                                        "convert them row by row (asfloat(rows[i])) (" + message.substr(message.find("SPIR-V")) + ")");
+    }
 }
 
 std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level,

@@ -168,5 +168,20 @@ TEST_F(CompileErrors, AMissingEntryPointIsNamedWhenTheStageIsGiven) {
     }
 }
 
+// asfloat(uint4x4(...)): glslang's integer matrix failed SPIRV-Tools' legalization with a message
+// about an OpTypeMatrix the user never wrote.
+TEST_F(CompileErrors, AnIntegerMatrixIsNamedWithTheWayAround) {
+    const auto source = folder.write("matrix.hlsl", "RWStructuredBuffer<uint4> Bits;\nRWStructuredBuffer<float> Out;\n"
+                                                    "[numthreads(1, 1, 1)]\nvoid main() {\n"
+                                                    "    float4x4 f = asfloat(uint4x4(Bits[0], Bits[1], Bits[2], Bits[3]));\n"
+                                                    "    Out[0] = f[1][2];\n}\n");
+    const auto message = errorOf(source);
+    EXPECT_EQ(message.rfind(source.string() + ": error: an integer matrix (uint4x4, int3x3, ...) has no SPIR-V type for "
+                                              "Vulkan, and glslang keeps it as one: hold its rows in vectors",
+                            0),
+              0u)
+        << message;
+}
+
 } // namespace
 } // namespace iblkit::compiler
