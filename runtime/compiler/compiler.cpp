@@ -4,6 +4,7 @@
 #include "hlsl_frontend.hpp"
 #include "spirv_image_access.hpp"
 #include "spirv_image_format.hpp"
+#include "spirv_module.hpp"
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
@@ -43,8 +44,13 @@ CompiledShader compileShader(const CompileOptions& options) {
     shader.sourceName = options.source.string();
     auto imageFormats = frontend.imageFormats; // [[vk::image_format]], where --image-format does not say otherwise
     for (const auto& [resource, format] : options.imageFormats) imageFormats[resource] = format;
-    const auto formatted = applyImageFormats(legalizeHlslSpirv(frontend.spirv, shader.sourceName), imageFormats, shader.sourceName);
-    const auto legal = decorateStorageImageAccess(makeWavePrefixScansExclusive(widenStorageImageWrites(formatted)));
+    // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
+    SpirvModule module(legalizeHlslSpirv(frontend.spirv, shader.sourceName));
+    applyImageFormats(module, imageFormats, shader.sourceName);
+    widenStorageImageWrites(module);
+    makeWavePrefixScansExclusive(module);
+    decorateStorageImageAccess(module);
+    const auto legal = module.words();
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);

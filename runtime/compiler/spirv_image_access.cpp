@@ -4,23 +4,14 @@
 
 #include <spirv/unified1/spirv.hpp>
 
-#include <algorithm>
 #include <set>
 
 namespace iblkit::compiler {
 namespace {
 
-constexpr size_t kImageSampled = 6;
-
 struct Access {
     bool read = false, written = false;
 };
-
-bool isStorageImageVariable(SpirvModule& module, const SpirvInstruction& instruction) {
-    if (instruction.opcode != spv::OpVariable) return false;
-    const auto* image = module.definition(module.pointeeOf(instruction.operands[0]));
-    return image && image->opcode == spv::OpTypeImage && image->operands[kImageSampled] == 2;
-}
 
 // How the shader uses the variable: through its loads (OpImageRead, OpImageWrite) or through
 // texel pointers (atomics, which both read and write).
@@ -51,12 +42,11 @@ size_t afterLastAnnotation(SpirvModule& module) {
 
 } // namespace
 
-std::vector<uint32_t> decorateStorageImageAccess(const std::vector<uint32_t>& spirv) {
-    SpirvModule module(spirv);
+void decorateStorageImageAccess(SpirvModule& module) {
     std::vector<std::pair<uint32_t, uint32_t>> decorations; // variable, decoration
     for (size_t i = 0; i < module.size(); ++i) {
         const auto& instruction = module.instruction(i);
-        if (!isStorageImageVariable(module, instruction)) continue;
+        if (instruction.opcode != spv::OpVariable || !module.storageImageTypeOf(instruction.operands[1])) continue;
         const uint32_t variable = instruction.operands[1];
         const Access access = accessOf(module, variable);
         if (access.read && !access.written) decorations.emplace_back(variable, spv::DecorationNonWritable);
@@ -64,7 +54,6 @@ std::vector<uint32_t> decorateStorageImageAccess(const std::vector<uint32_t>& sp
     }
     for (const auto& [variable, decoration] : decorations)
         module.insertBefore(afterLastAnnotation(module), {spv::OpDecorate, {variable, decoration}});
-    return module.words();
 }
 
 } // namespace iblkit::compiler

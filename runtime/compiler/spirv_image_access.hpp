@@ -1,13 +1,12 @@
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 namespace iblkit::compiler {
+
+class SpirvModule;
 
 // A storage image the shader only writes gets NonReadable, one it only reads NonWritable (glslang
 // states neither for an RWTexture), so that the GLSL and ESSL forms declare it writeonly or
 // readonly: ESSL 3.10 requires one of them for every format but r32f, r32i and r32ui.
-std::vector<uint32_t> decorateStorageImageAccess(const std::vector<uint32_t>& spirv);
+void decorateStorageImageAccess(SpirvModule& module);
 
 } // namespace iblkit::compiler

@@ -6,13 +6,9 @@
 
 #include <spirv/unified1/spirv.hpp>
 
-#include <algorithm>
 
 namespace iblkit::compiler {
 namespace {
-
-// Operand positions (after the opcode word) of the instructions this pass reads.
-constexpr size_t kImageSampledType = 1, kImageSampled = 6, kImageFormat = 7;
 
 enum class Component { Float, Int, Uint };
 
@@ -56,8 +52,7 @@ private:
         for (uint32_t id : module_.idsNamed(name)) {
             const auto* variable = module_.definition(id);
             if (!variable || variable->opcode != spv::OpVariable) continue;
-            const auto* image = module_.definition(module_.pointeeOf(variable->operands[0]));
-            if (image && image->opcode == spv::OpTypeImage && image->operands[kImageSampled] == 2) return id;
+            if (module_.storageImageTypeOf(id)) return id;
             fail("--image-format names '" + name + "', which is not a storage image (RWTexture*)");
         }
         fail("--image-format names '" + name + "', which the entry point does not use as a storage image");
@@ -111,14 +106,10 @@ private:
 
 } // namespace
 
-std::vector<uint32_t> applyImageFormats(const std::vector<uint32_t>& spirv,
-                                        const std::map<std::string, std::string>& formats,
-                                        const std::string& sourceName) {
-    if (formats.empty()) return spirv;
-    SpirvModule module(spirv);
+void applyImageFormats(SpirvModule& module, const std::map<std::string, std::string>& formats,
+                       const std::string& sourceName) {
     FormatApplier applier(module, sourceName);
     for (const auto& [name, format] : formats) applier.apply(name, format);
-    return module.words();
 }
 
 } // namespace iblkit::compiler

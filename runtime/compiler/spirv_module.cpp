@@ -130,7 +130,7 @@ uint32_t SpirvModule::findUniformConstantPointer(uint32_t pointee) const {
 
 uint32_t SpirvModule::cloneTypeAfter(uint32_t typeId, uint32_t afterId) {
     SpirvInstruction clone = *definition(typeId);
-    const uint32_t newId = header_[kIdBoundWord]++;
+    const uint32_t newId = this->newId();
     clone.operands[0] = newId;
     instructions_.insert(instructions_.begin() + static_cast<std::ptrdiff_t>(indexOfDefinition(afterId)) + 1, clone);
     return newId;
@@ -141,6 +141,15 @@ void SpirvModule::retypeVariable(uint32_t variable, uint32_t newPointer, uint32_
     for (auto& instruction : instructions_)
         if (instruction.opcode == spv::OpLoad && instruction.operands[2] == variable && instruction.operands[0] == oldImage)
             instruction.operands[0] = newImage;
+}
+
+uint32_t SpirvModule::newId() { return header_[kIdBoundWord]++; }
+
+const SpirvInstruction* SpirvModule::storageImageTypeOf(uint32_t variable) const {
+    const auto* declaration = definition(variable);
+    if (!declaration || declaration->opcode != spv::OpVariable) return nullptr;
+    const auto* image = definition(pointeeOf(declaration->operands[0]));
+    return image && image->opcode == spv::OpTypeImage && image->operands[kImageSampled] == 2 ? image : nullptr;
 }
 
 void SpirvModule::insertBefore(size_t index, SpirvInstruction instruction) {

@@ -12,6 +12,9 @@ struct SpirvInstruction {
     std::vector<uint32_t> operands; // every word after the opcode word
 };
 
+// Operand positions of OpTypeImage (after the opcode word: result id first).
+inline constexpr size_t kImageSampledType = 1, kImageSampled = 6, kImageFormat = 7;
+
 // A SPIR-V module as a list of instructions, for the few edits the compiler makes that
 // SPIRV-Tools has no pass for (storage image formats).
 class SpirvModule {
@@ -23,6 +26,8 @@ public:
     const SpirvInstruction* definition(uint32_t id) const;
     std::vector<uint32_t> idsNamed(const std::string& name) const;
     uint32_t pointeeOf(uint32_t pointerType) const; // 0 when not an OpTypePointer
+    // The image type of a storage image variable (a RWTexture*), or nullptr.
+    const SpirvInstruction* storageImageTypeOf(uint32_t variable) const;
     // How often id is referenced outside names, decorations and its own definition; may
     // over-count (a literal equal to the id), never under-count.
     size_t usesOf(uint32_t id) const;
@@ -44,7 +49,7 @@ public:
     size_t size() const { return instructions_.size(); }
     SpirvInstruction& instruction(size_t index) { return instructions_[index]; }
     void insertBefore(size_t index, SpirvInstruction instruction);
-    uint32_t newId() { return header_[3]++; }
+    uint32_t newId();
     // The result type of a value, 0 for an id without one.
     uint32_t typeOf(uint32_t id) const;
     // A type or constant declared like `declaration` (its result id ignored), declared at the end

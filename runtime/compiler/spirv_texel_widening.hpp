@@ -1,15 +1,14 @@
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 namespace iblkit::compiler {
+
+class SpirvModule;
 
 // Vulkan requires an image write to give at least as many components as the image's format
 // has (VUID-RuntimeSpirv-OpImageWrite-07112): RWTexture2D<float3> is rgba32f, and glslang
 // writes its float3 as it is. Every texel narrower than its storage image's format is widened
 // to four components here, the missing colour channels 0 and alpha 1, as a texture read fills
 // them. Reads need nothing: they always return four.
-std::vector<uint32_t> widenStorageImageWrites(const std::vector<uint32_t>& spirv);
+void widenStorageImageWrites(SpirvModule& module);
 
 } // namespace iblkit::compiler

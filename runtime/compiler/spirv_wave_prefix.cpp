@@ -18,15 +18,13 @@ bool takesAGroupOperation(uint32_t opcode) {
 
 } // namespace
 
-std::vector<uint32_t> makeWavePrefixScansExclusive(const std::vector<uint32_t>& spirv) {
-    SpirvModule module(spirv);
+void makeWavePrefixScansExclusive(SpirvModule& module) {
     for (size_t i = 0; i < module.size(); ++i) {
         auto& instruction = module.instruction(i);
         if (takesAGroupOperation(instruction.opcode) && instruction.operands.size() > kGroupOperation &&
             instruction.operands[kGroupOperation] == spv::GroupOperationInclusiveScan)
             instruction.operands[kGroupOperation] = spv::GroupOperationExclusiveScan;
     }
-    return module.words();
 }
 
 } // namespace iblkit::compiler

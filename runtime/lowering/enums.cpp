@@ -24,21 +24,8 @@ public:
 
     std::vector<Token> run() {
         for (size_t i = 0; i < tokens_.size(); ++i) {
-            const Token& token = tokens_[i];
-            if (token.is("struct") || token.is("class") || token.is("interface")) nextBraceIsStruct_ = true;
-            if (token.is("enum") && !(i > 0 && tokens_[i - 1].is("."))) {
-                i = lowerEnum(i);
-                continue;
-            }
-            if (token.is("{")) {
-                braces_.push_back(nextBraceIsStruct_);
-                nextBraceIsStruct_ = false;
-            } else if (token.is("}") && !braces_.empty()) {
-                braces_.pop_back();
-            } else if (token.is(";")) {
-                nextBraceIsStruct_ = false;
-            }
-            i = keepOrQualify(i, nullptr);
+            if (tokens_[i].is("enum") && !followsMemberAccess(tokens_, i)) i = lowerEnum(i);
+            else i = keepOrQualify(i, nullptr);
         }
         return writer_.finish();
     }
@@ -48,7 +35,7 @@ private:
     // Inside a scoped enum's own values (`within`), its enumerators are named without "E::".
     size_t keepOrQualify(size_t i, const std::pair<const std::string, EnumType>* within) {
         const Token& token = tokens_[i];
-        const bool member = i > 0 && (tokens_[i - 1].is(".") || tokens_[i - 1].is("->"));
+        const bool member = followsMemberAccess(tokens_, i);
         if (token.isIdentifier() && !member && i + 2 < tokens_.size() && tokens_[i + 1].is("::") && enums_.contains(token.text)) {
             const auto& [name, type] = *enums_.find(token.text);
             const Token& enumerator = tokens_[i + 2];
@@ -59,7 +46,7 @@ private:
             return i + 2;
         }
         if (within && token.isIdentifier() && !member && within->second.enumerators.contains(token.text) &&
-            !(i > 0 && tokens_[i - 1].is("::"))) {
+            !followsQualifier(tokens_, i)) {
             writer_.add(scopedEnumeratorName(within->first, token.text), token.place, token.leading);
             return i;
         }
@@ -69,7 +56,6 @@ private:
 
     // Returns the index of the enum's closing ';'.
     size_t lowerEnum(size_t at) {
-        if (!braces_.empty() && braces_.back()) refuse(tokens_[at], "an enum inside a struct cannot be lowered: declare it outside");
         size_t i = at + 1;
         const bool scoped = tokens_[i].is("class") || tokens_[i].is("struct");
         if (scoped) ++i;
@@ -152,8 +138,6 @@ private:
     TokenSpan tokens_;
     TokenWriter writer_;
     std::map<std::string, EnumType> enums_;
-    std::vector<bool> braces_; // for each open brace: whether it opens a struct
-    bool nextBraceIsStruct_ = false;
 };
 
 } // namespace

@@ -24,17 +24,11 @@ const Intrinsic* intrinsicNamed(const std::string& name) {
     return nullptr;
 }
 
-bool isStatementWord(const Token& token) {
-    static const std::set<std::string, std::less<>> words{"return", "else", "case", "do"};
-    return words.contains(token.text);
-}
-
 // "float select(" or "bool2 and(": a type before the name makes it the shader's own function.
 std::set<std::string> functionsTheShaderDefines(TokenSpan tokens) {
     std::set<std::string> defined;
     for (size_t i = 1; i + 1 < tokens.size(); ++i) {
-        const bool typeBefore = (tokens[i - 1].isIdentifier() && !isStatementWord(tokens[i - 1])) || tokens[i - 1].is(">");
-        if (tokens[i].isIdentifier() && intrinsicNamed(tokens[i].text) && typeBefore && tokens[i + 1].is("("))
+        if (tokens[i].isIdentifier() && intrinsicNamed(tokens[i].text) && isTypeLike(tokens[i - 1]) && tokens[i + 1].is("("))
             defined.insert(tokens[i].text);
     }
     return defined;
@@ -52,7 +46,7 @@ public:
 private:
     bool isCall(size_t i) const {
         if (!tokens_[i].isIdentifier() || !intrinsicNamed(tokens_[i].text) || ownFunctions_.contains(tokens_[i].text)) return false;
-        const bool member = i > 0 && (tokens_[i - 1].is(".") || tokens_[i - 1].is("::") || tokens_[i - 1].is("->"));
+        const bool member = followsMemberAccess(tokens_, i) || followsQualifier(tokens_, i);
         return !member && i + 1 < tokens_.size() && tokens_[i + 1].is("(");
     }
 

@@ -50,13 +50,6 @@ struct Frame {
     }
 };
 
-const std::set<std::string, std::less<>> kStatementWords{"return", "else", "case", "do", "goto", "in", "out", "inout",
-                                                          "if", "while", "for", "switch", "break", "continue", "discard"};
-
-bool isTypeLike(const Token& token) {
-    return (token.isIdentifier() && !kStatementWords.contains(token.text)) || token.is(">") || token.is("]");
-}
-
 class NamespaceLowering {
 public:
     explicit NamespaceLowering(TokenSpan tokens) : tokens_(tokens) { frames_.push_back({Scope::Namespace, &global_, {}}); }
@@ -71,23 +64,19 @@ private:
 
     size_t step(size_t i) {
         const Token& token = tokens_[i];
-        if (token.is("namespace") && !after(i, ".")) return openNamespace(i);
-        if (token.is("using") && !after(i, ".")) return lowerUsing(i);
+        if (token.is("namespace") && !followsMemberAccess(tokens_, i)) return openNamespace(i);
+        if (token.is("using") && !followsMemberAccess(tokens_, i)) return lowerUsing(i);
         if (token.is("struct") || token.is("class") || token.is("interface")) pendingScope_ = Scope::Struct;
         if (token.is("cbuffer") || token.is("tbuffer")) pendingScope_ = Scope::CBuffer;
         if (token.is("{")) return openBrace(i);
         if (token.is("}")) return closeBrace(i);
         trackStatement(token);
-        if (token.isIdentifier() && !after(i, ".") && !after(i, "->")) return name(i);
-        if (token.is("::") && i + 1 < tokens_.size() && tokens_[i + 1].isIdentifier() && !after(i, "identifier"))
-            return qualifiedName(i);
+        if (token.isIdentifier() && !followsMemberAccess(tokens_, i)) return name(i);
+        const bool globalName = token.is("::") && i + 1 < tokens_.size() && tokens_[i + 1].isIdentifier() &&
+                                !(i > 0 && tokens_[i - 1].isIdentifier());
+        if (globalName) return qualifiedName(i);
         writer_.keep(token);
         return i;
-    }
-
-    bool after(size_t i, std::string_view what) const {
-        if (i == 0) return false;
-        return what == "identifier" ? tokens_[i - 1].isIdentifier() : tokens_[i - 1].is(what);
     }
 
     void trackStatement(const Token& token) {

@@ -10,7 +10,7 @@ void refuseUnlowerable(const std::vector<Token>& tokens) {
     for (size_t i = 0; i + 1 < tokens.size(); ++i) {
         const Token& token = tokens[i];
         const Token& next = tokens[i + 1];
-        const bool member = i > 0 && (tokens[i - 1].is(".") || tokens[i - 1].is("::"));
+        const bool member = followsMemberAccess(tokens, i) || followsQualifier(tokens, i);
         if (member || !(token.isIdentifier() || token.kind == TokenKind::Punctuator)) continue;
         if (token.is("template"))
             refuse(token, "a template cannot be lowered to the HLSL glslang reads: write the function or struct for each type");
@@ -25,6 +25,7 @@ void refuseUnlowerable(const std::vector<Token>& tokens) {
         }
         if (token.is("}") && !braces.empty()) braces.pop_back();
         const bool inStruct = !braces.empty() && braces.back();
+        if (inStruct && token.is("enum")) refuse(token, "an enum inside a struct cannot be lowered: declare it outside");
         if (inStruct && token.isIdentifier() && next.is(":") && i + 3 < tokens.size() && tokens[i + 2].kind == TokenKind::Number &&
             (tokens[i + 3].is(";") || tokens[i + 3].is(",")))
             refuse(token, "the bitfield '" + token.text + " : " + tokens[i + 2].text +

@@ -43,7 +43,7 @@ std::vector<Token> lowerSixteenBitTypes(const std::vector<Token>& tokens, bool e
     std::set<std::string> minimumPrecision;
     for (size_t i = 0; i < tokens.size(); ++i) {
         const Token& token = tokens[i];
-        const bool member = i > 0 && (tokens[i - 1].is(".") || tokens[i - 1].is("->") || tokens[i - 1].is("::"));
+        const bool member = followsMemberAccess(tokens, i) || followsQualifier(tokens, i);
         std::string suffix;
         const Spelling* spelling = token.isIdentifier() && !member ? explicitType(token.text, suffix) : nullptr;
         if (spelling && !enabled)

@@ -3,6 +3,7 @@
 #include "lowering_error.hpp"
 
 #include <algorithm>
+#include <set>
 
 namespace iblkit::lowering {
 namespace {
@@ -70,6 +71,17 @@ void TokenWriter::add(std::string_view text, const SourcePlace& place, std::stri
 }
 
 std::vector<Token> TokenWriter::finish() { return std::move(tokens_); }
+
+bool followsMemberAccess(TokenSpan tokens, size_t i) { return i > 0 && (tokens[i - 1].is(".") || tokens[i - 1].is("->")); }
+
+bool followsQualifier(TokenSpan tokens, size_t i) { return i > 0 && tokens[i - 1].is("::"); }
+
+bool isTypeLike(const Token& token) {
+    static const std::set<std::string, std::less<>> statementWords{
+        "return", "else", "case", "do", "goto", "in", "out", "inout",
+        "if", "while", "for", "switch", "break", "continue", "discard"};
+    return (token.isIdentifier() && !statementWords.contains(token.text)) || token.is(">") || token.is("]");
+}
 
 void refuse(const Token& at, const std::string& what) {
     throw LoweringError(at.place.describe() + ": error: " + what);

@@ -39,6 +39,14 @@ private:
     std::string pendingNewlines_;
 };
 
+// Whether tokens[i] follows "." or "->": a member's name, not a name of its own scope.
+bool followsMemberAccess(TokenSpan tokens, size_t i);
+// Whether tokens[i] follows "::": a qualified name's later part.
+bool followsQualifier(TokenSpan tokens, size_t i);
+// A token that can stand right before a declared name: an identifier other than a statement
+// word (return, else, case, ...), or the end of a type (">" of a template, "]" of an array).
+bool isTypeLike(const Token& token);
+
 // For messages: "file:line:col: error: <what>".
 [[noreturn]] void refuse(const Token& at, const std::string& what);
 
