@@ -47,9 +47,10 @@ CompiledShader compileShader(const CompileOptions& options) {
     // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
     SpirvModule module(legalizeHlslSpirv(frontend.spirv, shader.sourceName));
     applyImageFormats(module, imageFormats, shader.sourceName);
-    widenStorageImageWrites(module);
-    makeWavePrefixScansExclusive(module);
-    decorateStorageImageAccess(module);
+    shader.kitEdits = frontend.kitEdits;
+    if (widenStorageImageWrites(module)) shader.kitEdits.emplace_back("texel-widening");
+    if (makeWavePrefixScansExclusive(module)) shader.kitEdits.emplace_back("exclusive-wave-scans");
+    if (decorateStorageImageAccess(module)) shader.kitEdits.emplace_back("image-access-qualifiers");
     const auto legal = module.words();
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);

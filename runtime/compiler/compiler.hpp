@@ -20,6 +20,9 @@ struct CompiledShader {
     BindingShifts bindingShifts;
     std::vector<std::string> includedFiles;
     std::vector<std::string> warnings;
+    // What the kit rewrote for glslang or for Vulkan, by id (kit_edits.hpp): empty when glslang's
+    // own output was enough.
+    std::vector<std::string> kitEdits;
 };
 
 // HLSL -> validated SPIR-V and its reflection. Throws CompileError.

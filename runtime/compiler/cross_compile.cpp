@@ -60,7 +60,7 @@ std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, co
 // ESSL 3.10 reads and writes one storage image only in r32f, r32i or r32ui; any other format
 // must be readonly or writeonly (decorateStorageImageAccess states which).
 void requireEsslImageAccess(const spirv_cross::CompilerGLSL& compiler, const ShaderReflection& reflection,
-                            const std::string& sourceName) {
+                            const std::string& sourceName, bool vulkan) {
     const auto ids = variablesByName(compiler);
     for (const auto& resource : reflection.resources) {
         if (resource.kind != ResourceKind::StorageImage || resource.format == "r32f" || resource.format == "r32i" ||
@@ -68,9 +68,10 @@ void requireEsslImageAccess(const spirv_cross::CompilerGLSL& compiler, const Sha
             continue;
         const auto& decorations = compiler.get_decoration_bitset(ids.at(resource.name));
         if (decorations.get(spv::DecorationNonReadable) || decorations.get(spv::DecorationNonWritable)) continue;
-        throw CompileError(sourceName + ": error: essl cannot express the shader: storage image '" + resource.name + "' (" +
-                           resource.format + ") is both read and written, which ESSL 3.10 allows only in r32f, r32i "
-                           "and r32ui: write the --glsl or --vulkan-glsl form, or give it one of those formats");
+        throw CompileError(sourceName + ": error: " + (vulkan ? "vulkan-essl" : "essl") +
+                           " cannot express the shader: storage image '" + resource.name + "' (" + resource.format +
+                           ") is both read and written, which ESSL 3.10 allows only in r32f, r32i and r32ui: write the " +
+                           (vulkan ? "--vulkan-glsl" : "--glsl or --vulkan-glsl") + " form, or give it one of those formats");
     }
 }
 
@@ -78,7 +79,7 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
                        const std::string& sourceName) {
     const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
-    if (es) requireEsslImageAccess(compiler, reflection, sourceName);
+    if (es) requireEsslImageAccess(compiler, reflection, sourceName, false);
     auto options = compiler.get_common_options();
     options.version = es ? 310 : 450;
     options.es = es;
@@ -137,17 +138,50 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
     return out;
 }
 
-CrossCompiled toVulkanGlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, bool es) {
-    spirv_cross::CompilerGLSL compiler(spirv);
+bool declaresAny(const spirv_cross::Compiler& compiler, spv::Capability first, spv::Capability last) {
+    const auto& capabilities = compiler.get_declared_capabilities();
+    return std::any_of(capabilities.begin(), capabilities.end(),
+                       [&](spv::Capability capability) { return capability >= first && capability <= last; });
+}
+
+bool declares(const spirv_cross::Compiler& compiler, spv::Capability capability) {
+    return declaresAny(compiler, capability, capability);
+}
+
+bool usesWaveOperations(const spirv_cross::Compiler& compiler) {
+    return declaresAny(compiler, spv::CapabilityGroupNonUniform, spv::CapabilityGroupNonUniformQuad);
+}
+
+bool usesSixteenBitTypes(const spirv_cross::Compiler& compiler) {
+    return declares(compiler, spv::CapabilityFloat16) || declares(compiler, spv::CapabilityInt16);
+}
+
+// The lowest shader model that has what the module uses: 16-bit types need 6.2, wave
+// operations and 64-bit integers 6.0, register spaces 5.1.
+uint32_t lowestShaderModel(const spirv_cross::Compiler& compiler, bool usesSpaces) {
+    if (usesSixteenBitTypes(compiler)) return 62;
+    if (usesWaveOperations(compiler) || declares(compiler, spv::CapabilityInt64)) return 60;
+    return usesSpaces ? 51 : 50;
+}
+
+CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
+                           const std::string& sourceName) {
+    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
+    spirv_cross::CompilerGLSL compiler(std::move(spirv));
+    if (es) requireEsslImageAccess(compiler, reflection, sourceName, true);
     auto options = compiler.get_common_options();
     options.version = es ? 310 : 450;
     options.es = es;
     options.vulkan_semantics = true;
     compiler.set_common_options(options);
     CrossCompiled out;
-    for (const auto& resource : reflection.resources)
-        out.bindings.push_back({resource.name, "set" + std::to_string(resource.location.set), resource.location.binding,
-                                "", "", ""});
+    for (const auto& resource : reflection.resources) {
+        const auto adapted = adaptedFrom.find(resource.name);
+        const bool standsIn = adapted != adaptedFrom.end();
+        out.bindings.push_back({resource.name, "set" + std::to_string(resource.location.set), resource.location.binding, "",
+                                standsIn ? std::string(findImageFormatByGlslName(resource.format)->esslStandIn) : "",
+                                standsIn ? adapted->second : ""});
+    }
     out.source = compiler.compile();
     return out;
 }
@@ -155,7 +189,8 @@ CrossCompiled toVulkanGlsl(const std::vector<uint32_t>& spirv, const ShaderRefle
 CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
     spirv_cross::CompilerMSL compiler(spirv);
     auto options = compiler.get_msl_options();
-    options.set_msl_version(2, 1);
+    // 64-bit integers came with MSL 2.2; everything else the kit's shaders use is in 2.1.
+    declares(compiler, spv::CapabilityInt64) ? options.set_msl_version(2, 2) : options.set_msl_version(2, 1);
     compiler.set_msl_options(options);
 
     CrossCompiled out;
@@ -184,13 +219,6 @@ CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& 
     return out;
 }
 
-bool usesWaveOperations(const spirv_cross::Compiler& compiler) {
-    const auto& capabilities = compiler.get_declared_capabilities();
-    return std::any_of(capabilities.begin(), capabilities.end(), [](spv::Capability capability) {
-        return capability >= spv::CapabilityGroupNonUniform && capability <= spv::CapabilityGroupNonUniformQuad;
-    });
-}
-
 // SPIRV-Cross always names the HLSL entry point `main` (and the function it wraps `<stage>_main`):
 // the round trip keeps the entry point's own name, so the host code that names it still works.
 std::string withEntryName(std::string source, const std::string& entry) {
@@ -210,7 +238,8 @@ CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection&
     const bool usesSpaces = std::any_of(reflection.resources.begin(), reflection.resources.end(),
                                         [](const auto& resource) { return resource.location.space != 0; });
     auto options = compiler.get_hlsl_options();
-    options.shader_model = usesWaveOperations(compiler) ? 60 : usesSpaces ? 51 : 50;
+    options.shader_model = lowestShaderModel(compiler, usesSpaces);
+    options.enable_16bit_types = usesSixteenBitTypes(compiler); // half and int16_t, not min16*
     compiler.set_hlsl_options(options);
 
     CrossCompiled out;
@@ -262,8 +291,8 @@ CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderRefle
         case CrossTarget::Essl: return toOpenGl(spirv, reflection, true, sourceName);
         case CrossTarget::Msl: return toMsl(spirv, reflection);
         case CrossTarget::Hlsl: return toHlsl(spirv, reflection);
-        case CrossTarget::VulkanGlsl: return toVulkanGlsl(spirv, reflection, false);
-        case CrossTarget::VulkanEssl: return toVulkanGlsl(spirv, reflection, true);
+        case CrossTarget::VulkanGlsl: return toVulkanGlsl(spirv, reflection, false, sourceName);
+        case CrossTarget::VulkanEssl: return toVulkanGlsl(spirv, reflection, true, sourceName);
         }
     } catch (const spirv_cross::CompilerError& error) {
         throw CompileError(sourceName + ": error: " + std::string(crossTargetName(target)) +

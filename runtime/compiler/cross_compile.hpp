@@ -12,6 +12,8 @@ namespace iblkit::compiler {
 // separate textures and samplers kept, GL_KHR_shader_subgroup for wave operations): the forms
 // that compile back to SPIR-V for Vulkan.
 enum class CrossTarget { Glsl, Essl, Msl, Hlsl, VulkanGlsl, VulkanEssl };
+inline constexpr CrossTarget kCrossTargets[] = {CrossTarget::Glsl, CrossTarget::Essl,       CrossTarget::Msl,
+                                              CrossTarget::Hlsl, CrossTarget::VulkanGlsl, CrossTarget::VulkanEssl};
 std::string_view crossTargetName(CrossTarget target);
 
 // Where one HLSL resource lands in a target language.

@@ -206,12 +206,13 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     if (!mapped) failWith(program.getInfoLog(), includes, sourceName, "resource binding failed");
 
     FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {},
-                          attributeImageFormats(lowered.vulkan, sourceName)};
+                          attributeImageFormats(lowered.vulkan, sourceName), {}};
     glslang::SpvOptions spvOptions;
     spvOptions.disableOptimizer = true;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
     result.warnings = lowered.warnings;
+    result.kitEdits = lowered.edits;
     for (auto& warning : parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings)
         result.warnings.push_back(std::move(warning));
     const std::string spvMessages = logger.getAllMessages();

@@ -18,6 +18,7 @@ struct FrontendResult {
     std::vector<std::string> includedFiles;  // every file #included, directly or not
     std::vector<std::string> warnings;
     std::map<std::string, std::string> imageFormats; // from [[vk::image_format]], by resource name
+    std::vector<std::string> kitEdits;               // what the lowering changed (lowering.hpp)
 };
 
 // HLSL -> SPIR-V (Vulkan 1.1, SPIR-V 1.3) with glslang's HLSL frontend: the preprocessor

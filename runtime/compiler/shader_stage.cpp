@@ -55,10 +55,12 @@ std::optional<ShaderStage> parseStageName(std::string_view name) {
     return std::nullopt;
 }
 
-// A definition: optional [attributes], a return type, the name, a parameter list, an optional
-// ": SEMANTIC", then the body's brace.
+// A definition: optional [attributes], a return type, the name, a parameter list (whose
+// parameters may hold one level of parentheses: [[vk::location(2)]]), an optional ": SEMANTIC",
+// then the body's brace.
 std::regex definitionOf(const std::string& entry) {
-    return std::regex("((?:\\[[^\\]]*\\]\\s*)*)\\b[\\w<>,\\s]+?\\s+" + entry + "\\s*\\(([^)]*)\\)\\s*(:\\s*\\w+\\s*)?\\{");
+    return std::regex("((?:\\[[^\\]]*\\]\\s*)*)\\b[\\w<>,\\s]+?\\s+" + entry +
+                      "\\s*\\(((?:[^()]|\\([^()]*\\))*)\\)\\s*(:\\s*\\w+\\s*)?\\{");
 }
 
 bool definesEntryPoint(const std::string& source, const std::string& entry) {

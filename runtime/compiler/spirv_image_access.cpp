@@ -42,7 +42,7 @@ size_t afterLastAnnotation(SpirvModule& module) {
 
 } // namespace
 
-void decorateStorageImageAccess(SpirvModule& module) {
+bool decorateStorageImageAccess(SpirvModule& module) {
     std::vector<std::pair<uint32_t, uint32_t>> decorations; // variable, decoration
     for (size_t i = 0; i < module.size(); ++i) {
         const auto& instruction = module.instruction(i);
@@ -54,6 +54,7 @@ void decorateStorageImageAccess(SpirvModule& module) {
     }
     for (const auto& [variable, decoration] : decorations)
         module.insertBefore(afterLastAnnotation(module), {spv::OpDecorate, {variable, decoration}});
+    return !decorations.empty();
 }
 
 } // namespace iblkit::compiler

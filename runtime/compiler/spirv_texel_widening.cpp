@@ -45,8 +45,9 @@ std::map<uint32_t, NarrowWrite> narrowWrites(SpirvModule& module) {
 
 } // namespace
 
-void widenStorageImageWrites(SpirvModule& module) {
+bool widenStorageImageWrites(SpirvModule& module) {
     const auto writes = narrowWrites(module);
+    if (writes.empty()) return false;
     // The declarations first (before the functions), then the widening before each write.
     std::map<uint32_t, std::array<uint32_t, 3>> declared; // component type: vector4, 0, 1
     for (const auto& [texel, write] : writes) {
@@ -68,6 +69,7 @@ void widenStorageImageWrites(SpirvModule& module) {
         write.operands[2] = operands[1];
         module.insertBefore(i++, {spv::OpCompositeConstruct, std::move(operands)});
     }
+    return true;
 }
 
 } // namespace iblkit::compiler

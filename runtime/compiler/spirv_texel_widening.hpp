@@ -9,6 +9,7 @@ class SpirvModule;
 // writes its float3 as it is. Every texel narrower than its storage image's format is widened
 // to four components here, the missing colour channels 0 and alpha 1, as a texture read fills
 // them. Reads need nothing: they always return four.
-void widenStorageImageWrites(SpirvModule& module);
+// Returns whether a write was widened.
+bool widenStorageImageWrites(SpirvModule& module);
 
 } // namespace iblkit::compiler

@@ -50,15 +50,17 @@ std::vector<uint32_t> runPasses(spvtools::Optimizer& optimizer, const std::vecto
 
 } // namespace
 
-void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
-    spvtools::SpirvTools tools(kEnvironment);
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName, SpirvEnvironment environment) {
+    const bool vulkan = environment == SpirvEnvironment::Vulkan11;
+    spvtools::SpirvTools tools(vulkan ? kEnvironment : SPV_ENV_OPENGL_4_5);
     MessageCollector messages;
     tools.SetMessageConsumer(
         [&](spv_message_level_t level, const char* source, const spv_position_t& position, const char* message) {
             messages(level, source, position, message);
         });
     if (!tools.Validate(spirv))
-        throw CompileError(sourceName + ": error: the SPIR-V is not valid for Vulkan 1.1: " + messages.text);
+        throw CompileError(sourceName + ": error: the SPIR-V is not valid for " + (vulkan ? "Vulkan 1.1" : "OpenGL 4.5") +
+                           ": " + messages.text);
 }
 
 std::vector<uint32_t> legalizeHlslSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {

@@ -13,7 +13,9 @@ namespace iblkit::compiler {
 // inlines functions and removes the by-value copies of textures and samplers that HLSL
 // parameters make, so each sampling names the global resources.
 std::vector<uint32_t> legalizeHlslSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName);
-void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName);
+enum class SpirvEnvironment { Vulkan11, OpenGl45 };
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName,
+                   SpirvEnvironment environment = SpirvEnvironment::Vulkan11);
 std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level,
                                     const std::string& sourceName);
 std::vector<uint32_t> stripDebugInfo(const std::vector<uint32_t>& spirv, const std::string& sourceName);

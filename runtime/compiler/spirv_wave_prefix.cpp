@@ -18,13 +18,17 @@ bool takesAGroupOperation(uint32_t opcode) {
 
 } // namespace
 
-void makeWavePrefixScansExclusive(SpirvModule& module) {
+bool makeWavePrefixScansExclusive(SpirvModule& module) {
+    bool changed = false;
     for (size_t i = 0; i < module.size(); ++i) {
         auto& instruction = module.instruction(i);
         if (takesAGroupOperation(instruction.opcode) && instruction.operands.size() > kGroupOperation &&
-            instruction.operands[kGroupOperation] == spv::GroupOperationInclusiveScan)
+            instruction.operands[kGroupOperation] == spv::GroupOperationInclusiveScan) {
             instruction.operands[kGroupOperation] = spv::GroupOperationExclusiveScan;
+            changed = true;
+        }
     }
+    return changed;
 }
 
 } // namespace iblkit::compiler

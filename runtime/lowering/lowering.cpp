@@ -5,19 +5,47 @@
 #include "namespaces.hpp"
 #include "refusals.hpp"
 #include "sixteen_bit.hpp"
+#include "unsupported_features.hpp"
+
+#include <algorithm>
 
 namespace iblkit::lowering {
+namespace {
+
+bool sameText(const std::vector<Token>& a, const std::vector<Token>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Token& x, const Token& y) {
+               return x.text == y.text;
+           });
+}
+
+// Runs one pass and names it among the edits when it changed a token.
+template <typename Pass>
+std::vector<Token> runPass(const std::vector<Token>& tokens, const char* edit, std::vector<std::string>& edits, Pass pass) {
+    auto lowered = pass(tokens);
+    if (!sameText(tokens, lowered)) edits.emplace_back(edit);
+    return lowered;
+}
+
+} // namespace
 
 LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sourceName, HlslVersion version,
                         bool enable16BitTypes) {
     LoweredSource lowered;
-    auto tokens = lowerSixteenBitTypes(tokenize(preprocessed, sourceName), enable16BitTypes, lowered.warnings);
+    auto& edits = lowered.edits;
+    auto tokens = runPass(tokenize(preprocessed, sourceName), "16-bit-type-names", edits, [&](const auto& in) {
+        return lowerSixteenBitTypes(in, enable16BitTypes, lowered.warnings);
+    });
+    refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) {
         refuseUnlowerable(tokens);
-        tokens = lowerNamespaces(lowerEnums(tokens));
-        tokens = lowerIntrinsics(tokens);
+        tokens = runPass(tokens, "enums", edits, lowerEnums);
+        tokens = runPass(tokens, "namespaces", edits, lowerNamespaces);
+        tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     }
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));
+    if (!lowered.vulkan.bindings.empty()) edits.emplace_back("vk-binding");
+    if (!lowered.vulkan.imageFormats.empty()) edits.emplace_back("vk-image-format");
+    if (lowered.vulkan.pushConstantStructs) edits.emplace_back("vk-push-constant");
     lowered.warnings.insert(lowered.warnings.end(), lowered.vulkan.warnings.begin(), lowered.vulkan.warnings.end());
     lowered.changed = lowered.text != preprocessed;
     return lowered;

@@ -14,6 +14,7 @@ struct LoweredSource {
     bool changed = false; // false: the shader needs no lowering, and its own text is what to parse
     VulkanAttributes vulkan;
     std::vector<std::string> warnings; // one line each: attributes not honoured, minimum precision at 32 bits
+    std::vector<std::string> edits;    // what was lowered, by id ("select-and-or", "enums", ...): kit_edits.hpp
 };
 
 // HLSL as DXC reads it -> HLSL as glslang's frontend reads it, on the tokens of the

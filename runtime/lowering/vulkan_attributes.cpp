@@ -97,6 +97,7 @@ private:
                                  tokens_[at + 1].isIdentifier() && tokens_[at + 2].is(";");
         if (!plainStruct) return at - 1;
         writer_.add("ConstantBuffer<" + type.text + ">", type.place, type.leading);
+        attributes_.pushConstantStructs = true;
         return at;
     }
 

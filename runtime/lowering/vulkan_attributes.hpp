@@ -20,6 +20,7 @@ struct VulkanAttributes {
     std::map<std::string, VulkanBinding> bindings;     // [[vk::binding(b, s)]]: wins over the register rule
     std::map<std::string, std::string> imageFormats;   // [[vk::image_format("rgba8")]], as written
     std::vector<std::string> warnings;                 // attributes the kit does not honour
+    bool pushConstantStructs = false;                  // a `[[vk::push_constant]] S pc;` became a ConstantBuffer<S>
 };
 
 // Reads every [[vk::...]] attribute and the declaration it stands before. glslang honours

@@ -27,16 +27,16 @@ struct HalfBits {
 };
 
 template <typename T>
-void appendAll(const char* data, size_t count, std::vector<float>& values) {
+void appendAll(const char* data, size_t count, std::vector<double>& values) {
     for (size_t i = 0; i < count; ++i) {
         T value;
         std::memcpy(&value, data + i * sizeof(T), sizeof(T));
         if constexpr (std::is_same_v<T, HalfBits>) values.push_back(numeric::fromHalfBits(value.bits));
-        else values.push_back(static_cast<float>(value));
+        else values.push_back(static_cast<double>(value));
     }
 }
 
-std::vector<float> readNpy(const std::filesystem::path& path) {
+std::vector<double> readNpy(const std::filesystem::path& path) {
     const std::string bytes = slurp(path);
     const auto fail = [&](const std::string& why) -> RunError { return RunError(path.string() + ": error: " + why); };
     if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0) throw fail("not a .npy file");
@@ -56,7 +56,7 @@ std::vector<float> readNpy(const std::filesystem::path& path) {
     const size_t count = (bytes.size() - dataStart) / size;
     if ((bytes.size() - dataStart) % size != 0) throw fail("data is not a whole number of elements");
     const char* data = bytes.data() + dataStart;
-    std::vector<float> values;
+    std::vector<double> values;
     values.reserve(count);
     if (kind == 'f' && size == 4) appendAll<float>(data, count, values);
     else if (kind == 'f' && size == 2) appendAll<HalfBits>(data, count, values);
@@ -68,7 +68,7 @@ std::vector<float> readNpy(const std::filesystem::path& path) {
     return values;
 }
 
-std::string npyBytes(const std::vector<float>& values, const std::vector<size_t>& shape) {
+std::string npyBytes(const std::vector<double>& values, const std::vector<size_t>& shape) {
     // Python's tuple spelling: "(7,)" for one dimension, "(2, 3)" for more.
     std::string shapeText = "(";
     for (size_t i = 0; i < shape.size(); ++i) shapeText += std::to_string(shape[i]) + (i + 1 < shape.size() ? ", " : "");
@@ -83,13 +83,14 @@ std::string npyBytes(const std::vector<float>& values, const std::vector<size_t>
     const auto length = static_cast<uint16_t>(header.size());
     bytes.append(reinterpret_cast<const char*>(&length), 2);
     bytes += header;
-    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+    const std::vector<float> singles(values.begin(), values.end());
+    bytes.append(reinterpret_cast<const char*>(singles.data()), singles.size() * sizeof(float));
     return bytes;
 }
 
 } // namespace
 
-std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format) {
+std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format) {
     std::error_code error;
     if (!std::filesystem::exists(path, error)) throw RunError(path.string() + ": error: no such data file");
     if (!std::filesystem::is_regular_file(path, error))
@@ -99,12 +100,12 @@ std::vector<float> readValues(const std::filesystem::path& path, const vulkan::T
     if (bytes.size() % format.bytesPerChannel != 0)
         throw RunError(path.string() + ": error: holds " + std::to_string(bytes.size()) + " bytes, not a whole number of " +
                        std::string(format.name) + " components");
-    std::vector<float> values(bytes.size() / format.bytesPerChannel);
+    std::vector<double> values(bytes.size() / format.bytesPerChannel);
     vulkan::decodeTexels(format, std::as_bytes(std::span(bytes.data(), bytes.size())), values);
     return values;
 }
 
-std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount) {
+std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount) {
     auto values = readValues(path, format);
     if (values.size() != expectedCount)
         throw RunError(path.string() + ": error: holds " + std::to_string(values.size()) + " values, not " +
@@ -113,7 +114,7 @@ std::vector<float> readValues(const std::filesystem::path& path, const vulkan::T
 }
 
 std::string encodeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format,
-                         const std::vector<float>& values, const std::vector<size_t>& shape) {
+                         const std::vector<double>& values, const std::vector<size_t>& shape) {
     if (isNpy(path)) return npyBytes(values, shape);
     std::string bytes(values.size() * format.bytesPerChannel, '\0');
     vulkan::encodeTexels(format, values, std::as_writable_bytes(std::span(bytes.data(), bytes.size())));

@@ -12,12 +12,12 @@ namespace iblkit::run {
 // Values read from a data file: a .npy array (float16/32/64, int32, uint32 or uint8, any
 // shape, C order), or raw little-endian data in the resource's own format. Throws RunError
 // when the file is missing or malformed, or (with expectedCount) holds another count of values.
-std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format);
-std::vector<float> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount);
+std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format);
+std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount);
 
 // The bytes of a data file: .npy, float32 with the given shape; anything else, raw data in the
 // resource's format.
 std::string encodeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format,
-                         const std::vector<float>& values, const std::vector<size_t>& shape);
+                         const std::vector<double>& values, const std::vector<size_t>& shape);
 
 } // namespace iblkit::run

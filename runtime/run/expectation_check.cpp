@@ -55,7 +55,7 @@ double ulpDistance(const vulkan::TexelFormat& format, double actual, double expe
     }
 }
 
-CheckResult compareValues(std::span<const float> actual, std::span<const double> expected, const Tolerance& tolerance,
+CheckResult compareValues(std::span<const double> actual, std::span<const double> expected, const Tolerance& tolerance,
                           const vulkan::TexelFormat& format) {
     CheckResult result;
     for (size_t i = 0; i < actual.size(); ++i) {
@@ -74,7 +74,7 @@ CheckResult compareValues(std::span<const float> actual, std::span<const double>
     return result;
 }
 
-CheckResult checkRange(std::span<const float> actual, double min, double max) {
+CheckResult checkRange(std::span<const double> actual, double min, double max) {
     CheckResult result;
     result.minimum = INFINITY;
     result.maximum = -INFINITY;

@@ -27,11 +27,11 @@ double ulpDistance(const vulkan::TexelFormat& format, double actual, double expe
 
 // A value passes when it equals the expected one, or is within any tolerance given (abs,
 // rel, ulp); NaN passes only against NaN. An empty tolerance means exact.
-CheckResult compareValues(std::span<const float> actual, std::span<const double> expected, const Tolerance& tolerance,
+CheckResult compareValues(std::span<const double> actual, std::span<const double> expected, const Tolerance& tolerance,
                           const vulkan::TexelFormat& format);
 
 // Every value within [min, max]; NaN and infinities fail.
-CheckResult checkRange(std::span<const float> actual, double min, double max);
+CheckResult checkRange(std::span<const double> actual, double min, double max);
 
 std::string describeTolerance(const Tolerance& tolerance);
 

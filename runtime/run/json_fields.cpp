@@ -38,6 +38,11 @@ std::string JsonFields::text(const json& value, const std::string& where) const 
     return value.get<std::string>();
 }
 
+bool JsonFields::flag(const json& value, const std::string& where) const {
+    if (!value.is_boolean()) fail(where, "must be true or false");
+    return value.get<bool>();
+}
+
 std::string JsonFields::oneOf(const json& value, const std::string& where, std::initializer_list<const char*> choices) const {
     const auto chosen = text(value, where);
     std::string list;

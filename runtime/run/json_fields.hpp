@@ -26,6 +26,7 @@ public:
                                    std::initializer_list<const char*> keys) const;
     const nlohmann::json& array(const nlohmann::json& value, const std::string& where) const;
     std::string text(const nlohmann::json& value, const std::string& where) const;
+    bool flag(const nlohmann::json& value, const std::string& where) const;
     std::string oneOf(const nlohmann::json& value, const std::string& where, std::initializer_list<const char*> choices) const;
     double number(const nlohmann::json& value, const std::string& where) const; // finite
     double nonNegative(const nlohmann::json& value, const std::string& where) const;

@@ -29,9 +29,10 @@ struct Program {
 
 Program loadShader(const RunSpec& spec) {
     if (spec.shader.extension() == ".spv") {
-        if (!spec.includeDirs.empty() || !spec.defines.empty() || !spec.imageFormats.empty())
-            throw RunError(spec.runFile.string() + ": error: \"include\", \"defines\" and \"image_formats\" apply to HLSL "
-                           "shaders, not to " + spec.shader.string());
+        if (!spec.includeDirs.empty() || !spec.defines.empty() || !spec.imageFormats.empty() || spec.enable16BitTypes ||
+            spec.hlslVersion != lowering::HlslVersion::Hlsl2021)
+            throw RunError(spec.runFile.string() + ": error: \"include\", \"defines\", \"image_formats\", "
+                           "\"enable_16bit_types\" and \"hlsl_version\" apply to HLSL shaders, not to " + spec.shader.string());
         const std::string bytes = compiler::readSource(spec.shader);
         if (bytes.size() % 4 != 0 || bytes.size() < 20)
             throw RunError(spec.shader.string() + ": error: not a SPIR-V module (" + std::to_string(bytes.size()) + " bytes)");
@@ -41,13 +42,8 @@ Program loadShader(const RunSpec& spec) {
         compiler::validateSpirv(words, spec.shader.string());
         return {words, compiler::reflectSpirv(words, spec.entry, spec.shader.string())};
     }
-    compiler::CompileOptions options;
-    options.source = spec.shader;
+    auto options = compileOptionsOf(spec);
     options.boundPreprocessing = true;
-    options.entryPoint = spec.entry;
-    options.includeDirs = spec.includeDirs;
-    options.defines = spec.defines;
-    options.imageFormats = spec.imageFormats;
     auto shader = compiler::compileShader(options);
     return {shader.spirv, shader.reflection};
 }
@@ -167,29 +163,35 @@ private:
     // The values of a fill, a list or a file, for a resource or an expectation of `count` values.
     std::vector<double> valuesOf(const ValueSource& source, const std::string& where, const vulkan::TexelFormat& format,
                                  size_t count, uint32_t channels) const {
-        if (!source.file.empty()) {
-            const auto values = readValues(source.file, format, count);
-            return {values.begin(), values.end()};
-        }
+        if (!source.file.empty()) return requireFormatValues(readValues(source.file, format, count), format, where + ".file");
         if (!source.values.empty()) {
             if (source.values.size() != count)
                 fail(where + ".values: " + std::to_string(source.values.size()) + " values for " + std::to_string(count));
-            return source.values;
+            return requireFormatValues(source.values, format, where + ".values");
         }
         std::vector<double> values(count, 0.0);
         if (!source.fill.empty()) {
             if (source.fill.size() != 1 && source.fill.size() != channels)
                 fail(where + ".fill: " + std::to_string(source.fill.size()) + " numbers for " + std::to_string(channels) +
                      " channels");
+            requireFormatValues(source.fill, format, where + ".fill");
             for (size_t i = 0; i < count; ++i) values[i] = source.fill[source.fill.size() == 1 ? 0 : i % channels];
         }
         return values;
     }
 
-    std::vector<float> initialValues(const ResourceSpec& spec, const vulkan::TexelFormat& format, size_t count,
-                                     uint32_t channels) const {
-        const auto values = valuesOf(spec.initial, "resources." + spec.name, format, count, channels);
-        return {values.begin(), values.end()};
+    // An integer resource's values must be its integers: 2^32 would wrap, 1.5 be cut.
+    const std::vector<double>& requireFormatValues(const std::vector<double>& values, const vulkan::TexelFormat& format,
+                                                   const std::string& where) const {
+        for (size_t i = 0; i < values.size(); ++i)
+            if (const auto problem = vulkan::integerValueProblem(format, values[i]); !problem.empty())
+                fail(where + "[" + std::to_string(i) + "]: " + problem);
+        return values;
+    }
+
+    std::vector<double> initialValues(const ResourceSpec& spec, const vulkan::TexelFormat& format, size_t count,
+                                      uint32_t channels) const {
+        return valuesOf(spec.initial, "resources." + spec.name, format, count, channels);
     }
 
     static const vulkan::TexelFormat& bufferFormat(const ResourceSpec& spec) {
@@ -230,7 +232,10 @@ private:
             auto image = std::make_unique<vulkan::Image>(
                 context_, vulkan::ImageDesc{spec.name, &format, spec.width, spec.height, spec.layers, mips,
                                             spec.dimension == "cube", spec.kind == "storage_image"});
-            image->upload(context_, initialValues(spec, format, image->valueCount(), format.channels));
+            const auto values = initialValues(spec, format, image->valueCount(), format.channels);
+            std::vector<std::byte> bytes(values.size() * format.bytesPerChannel);
+            vulkan::encodeTexels(format, values, bytes);
+            image->uploadBytes(context_, bytes);
             compute.bind(spec.name, *image, spec.mip);
             resources_[spec.name] = std::move(image);
         }
@@ -254,7 +259,7 @@ private:
     }
 
     struct Readback {
-        std::vector<float> values;
+        std::vector<double> values;
         const vulkan::TexelFormat* format;
         const vulkan::Image* image; // null for buffers
     };
@@ -262,13 +267,18 @@ private:
     Readback readback(const std::string& name) const {
         const auto found = resources_.find(name);
         if (found == resources_.end()) fail("no resource named '" + name + "' to check or save");
-        if (const auto* image = std::get_if<std::unique_ptr<vulkan::Image>>(&found->second))
-            return {(*image)->download(context_), (*image)->desc().format, image->get()};
+        if (const auto* image = std::get_if<std::unique_ptr<vulkan::Image>>(&found->second)) {
+            const auto& format = *(*image)->desc().format;
+            const auto bytes = (*image)->downloadBytes(context_);
+            std::vector<double> values(bytes.size() / format.bytesPerChannel);
+            vulkan::decodeTexels(format, bytes, values);
+            return {values, &format, image->get()};
+        }
         if (const auto* buffer = std::get_if<std::unique_ptr<vulkan::Buffer>>(&found->second)) {
             const auto spec = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
             const auto& format = spec->kind == "buffer" ? bufferFormat(*spec) : vulkan::texelFormatNamed("R32_SFLOAT");
             const auto bytes = (*buffer)->read();
-            std::vector<float> values(bytes.size() / 4);
+            std::vector<double> values(bytes.size() / 4);
             vulkan::decodeTexels(format, bytes, values);
             return {values, &format, nullptr};
         }
@@ -294,7 +304,7 @@ private:
 
     bool check(const Expectation& expectation) const {
         auto data = readback(expectation.resource);
-        std::vector<float> selected = data.values;
+        std::vector<double> selected = data.values;
         uint32_t firstMip = 0, firstLayer = 0;
         bool oneLayer = false;
         if (data.image && (expectation.mip || expectation.layer)) {
@@ -371,6 +381,18 @@ private:
 };
 
 } // namespace
+
+compiler::CompileOptions compileOptionsOf(const RunSpec& spec) {
+    compiler::CompileOptions options;
+    options.source = spec.shader;
+    options.entryPoint = spec.entry;
+    options.includeDirs = spec.includeDirs;
+    options.defines = spec.defines;
+    options.imageFormats = spec.imageFormats;
+    options.enable16BitTypes = spec.enable16BitTypes;
+    options.hlslVersion = spec.hlslVersion;
+    return options;
+}
 
 bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out) {
     return Executor(spec, options, out).run();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "compile_options.hpp"
 #include "run_file.hpp"
 
 #include <chrono>
@@ -17,6 +18,10 @@ struct RunOptions {
     std::chrono::milliseconds timeout = std::chrono::seconds(60);
     std::function<void(const std::string& message)> onDeviceFailure = {};
 };
+
+// How the run file's HLSL shader is compiled: its entry point, include folders, defines, image
+// formats, 16-bit types and HLSL version.
+compiler::CompileOptions compileOptionsOf(const RunSpec& spec);
 
 // Compiles the shader, makes and fills the resources, dispatches, checks every expectation
 // and saves what was asked, printing a line for each step to `out`. Returns true when every

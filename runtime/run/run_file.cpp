@@ -20,7 +20,8 @@ public:
     explicit Reader(std::filesystem::path file) : fields_(file), folder_(file.parent_path()) {}
 
     RunSpec read(const json& root, const std::filesystem::path& file) const {
-        fields_.objectOf(root, "the run file", {"shader", "entry", "include", "defines", "image_formats", "specialization",
+        fields_.objectOf(root, "the run file", {"shader", "entry", "include", "defines", "image_formats", "enable_16bit_types",
+                                                "hlsl_version", "specialization",
                                                 "push_constants", "resources", "dispatch", "expect", "save", "comment"});
         RunSpec spec;
         spec.runFile = file;
@@ -31,6 +32,9 @@ public:
             for (const auto& dir : fields_.textArray(root.at("include"), "include")) spec.includeDirs.push_back(folder_ / dir);
         if (root.contains("defines")) spec.defines = fields_.textMap(root.at("defines"), "defines");
         if (root.contains("image_formats")) spec.imageFormats = fields_.textMap(root.at("image_formats"), "image_formats");
+        if (root.contains("enable_16bit_types")) spec.enable16BitTypes = fields_.flag(root.at("enable_16bit_types"), "enable_16bit_types");
+        if (root.contains("hlsl_version") && fields_.oneOf(root.at("hlsl_version"), "hlsl_version", {"2018", "2021"}) == "2018")
+            spec.hlslVersion = lowering::HlslVersion::Hlsl2018;
         if (root.contains("specialization"))
             for (const auto& [name, value] : fields_.object(root.at("specialization"), "specialization").items())
                 spec.specialization[name] = fields_.number(value, "specialization." + name);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "lowering.hpp"
+
 #include <array>
 #include <filesystem>
 #include <map>
@@ -56,6 +58,8 @@ struct RunSpec {
     std::vector<std::filesystem::path> includeDirs;
     std::map<std::string, std::string> defines;
     std::map<std::string, std::string> imageFormats;
+    bool enable16BitTypes = false; // DXC's -enable-16bit-types
+    lowering::HlslVersion hlslVersion = lowering::HlslVersion::Hlsl2021;
     std::map<std::string, double> specialization;
     std::map<std::string, std::vector<double>> pushConstants;
     std::vector<ResourceSpec> resources;

@@ -83,6 +83,8 @@ ComputeProgram::ComputeProgram(const VulkanContext& context, const std::vector<u
         pushRanges.emplace_back(vk::ShaderStageFlagBits::eCompute, 0, reflection_.pushConstantSize);
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo({}, layouts, pushRanges));
 
+    if (const auto missing = missingShaderFeature(spirv, context.shaderFeatures()); !missing.empty())
+        throw VulkanError("the shader needs " + missing + ", which " + context.deviceInfo().name + " does not have");
     const vk::raii::ShaderModule module(context.device(), vk::ShaderModuleCreateInfo({}, spirv.size() * 4, spirv.data()));
     std::vector<vk::SpecializationMapEntry> entries;
     const auto data = specializationBytes(reflection_, specialization, entries);

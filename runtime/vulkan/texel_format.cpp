@@ -3,8 +3,11 @@
 #include "half_float.hpp"
 #include "vulkan_error.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 namespace iblkit::vulkan {
@@ -20,9 +23,13 @@ constexpr std::array kFormats{
     TexelFormat{vk::Format::eR8G8B8A8Unorm, "R8G8B8A8_UNORM", 4, 1, ComponentKind::UNorm},
     TexelFormat{vk::Format::eR32Uint, "R32_UINT", 1, 4, ComponentKind::UInt},
     TexelFormat{vk::Format::eR32Sint, "R32_SINT", 1, 4, ComponentKind::SInt},
+    TexelFormat{vk::Format::eR32G32Uint, "R32G32_UINT", 2, 4, ComponentKind::UInt},
+    TexelFormat{vk::Format::eR32G32Sint, "R32G32_SINT", 2, 4, ComponentKind::SInt},
+    TexelFormat{vk::Format::eR32G32B32A32Uint, "R32G32B32A32_UINT", 4, 4, ComponentKind::UInt},
+    TexelFormat{vk::Format::eR32G32B32A32Sint, "R32G32B32A32_SINT", 4, 4, ComponentKind::SInt},
 };
 
-float decodeOne(const TexelFormat& format, const std::byte* bytes) {
+double decodeOne(const TexelFormat& format, const std::byte* bytes) {
     switch (format.kind) {
     case ComponentKind::Float:
         if (format.bytesPerChannel == 2) {
@@ -34,41 +41,44 @@ float decodeOne(const TexelFormat& format, const std::byte* bytes) {
             std::memcpy(&value, bytes, 4);
             return value;
         }
-    case ComponentKind::UNorm: return std::to_integer<uint8_t>(bytes[0]) / 255.0f;
+    case ComponentKind::UNorm: return std::to_integer<uint8_t>(bytes[0]) / 255.0f; // the float a shader reads
     case ComponentKind::UInt: {
         uint32_t value;
         std::memcpy(&value, bytes, 4);
-        return static_cast<float>(value);
+        return value;
     }
     case ComponentKind::SInt: {
         int32_t value;
         std::memcpy(&value, bytes, 4);
-        return static_cast<float>(value);
+        return value;
     }
     }
     return 0;
 }
 
-void encodeOne(const TexelFormat& format, float value, std::byte* bytes) {
+// Integers out of the format's range are clamped (callers that take values from users refuse
+// them first: integerValueProblem).
+void encodeOne(const TexelFormat& format, double value, std::byte* bytes) {
     switch (format.kind) {
     case ComponentKind::Float:
         if (format.bytesPerChannel == 2) {
-            const uint16_t half = numeric::toHalfBits(value);
+            const uint16_t half = numeric::toHalfBits(static_cast<float>(value));
             std::memcpy(bytes, &half, 2);
         } else {
-            std::memcpy(bytes, &value, 4);
+            const auto single = static_cast<float>(value);
+            std::memcpy(bytes, &single, 4);
         }
         return;
     case ComponentKind::UNorm:
-        bytes[0] = static_cast<std::byte>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
+        bytes[0] = static_cast<std::byte>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
         return;
     case ComponentKind::UInt: {
-        const auto integer = static_cast<uint32_t>(value);
+        const auto integer = static_cast<uint32_t>(std::clamp(value, 0.0, double(UINT32_MAX)));
         std::memcpy(bytes, &integer, 4);
         return;
     }
     case ComponentKind::SInt: {
-        const auto integer = static_cast<int32_t>(value);
+        const auto integer = static_cast<int32_t>(std::clamp(value, double(INT32_MIN), double(INT32_MAX)));
         std::memcpy(bytes, &integer, 4);
         return;
     }
@@ -93,8 +103,27 @@ void encodeTexels(const TexelFormat& format, std::span<const float> values, std:
     for (size_t i = 0; i < values.size(); ++i) encodeOne(format, values[i], bytes.data() + i * format.bytesPerChannel);
 }
 
+void encodeTexels(const TexelFormat& format, std::span<const double> values, std::span<std::byte> bytes) {
+    for (size_t i = 0; i < values.size(); ++i) encodeOne(format, values[i], bytes.data() + i * format.bytesPerChannel);
+}
+
 void decodeTexels(const TexelFormat& format, std::span<const std::byte> bytes, std::span<float> values) {
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = static_cast<float>(decodeOne(format, bytes.data() + i * format.bytesPerChannel));
+}
+
+void decodeTexels(const TexelFormat& format, std::span<const std::byte> bytes, std::span<double> values) {
     for (size_t i = 0; i < values.size(); ++i) values[i] = decodeOne(format, bytes.data() + i * format.bytesPerChannel);
+}
+
+std::string integerValueProblem(const TexelFormat& format, double value) {
+    if (format.kind != ComponentKind::UInt && format.kind != ComponentKind::SInt) return "";
+    const bool unsignedInteger = format.kind == ComponentKind::UInt;
+    const double least = unsignedInteger ? 0.0 : double(INT32_MIN), most = unsignedInteger ? double(UINT32_MAX) : double(INT32_MAX);
+    if (value == std::floor(value) && value >= least && value <= most) return "";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g is not a%s 32-bit integer", value, unsignedInteger ? "n unsigned" : " signed");
+    return text;
 }
 
 } // namespace iblkit::vulkan

@@ -28,8 +28,14 @@ std::string supportedFormatNames();
 
 // Converts channel values (channels per texel, in order) to the format's bytes and back.
 // Halves round to nearest even; values out of a half's range become infinities, which the
-// caller checks for where it matters.
+// caller checks for where it matters. In doubles, every 32-bit integer is exact.
 void encodeTexels(const TexelFormat& format, std::span<const float> values, std::span<std::byte> bytes);
+void encodeTexels(const TexelFormat& format, std::span<const double> values, std::span<std::byte> bytes);
 void decodeTexels(const TexelFormat& format, std::span<const std::byte> bytes, std::span<float> values);
+void decodeTexels(const TexelFormat& format, std::span<const std::byte> bytes, std::span<double> values);
+
+// For an integer format, why `value` cannot be one of its components ("-1 is not an unsigned
+// 32-bit integer"); "" when it can, and for every other format.
+std::string integerValueProblem(const TexelFormat& format, double value);
 
 } // namespace iblkit::vulkan

@@ -122,6 +122,12 @@ size_t chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& r
 
 namespace {
 
+bool hasDeviceExtension(const vk::raii::PhysicalDevice& device, std::string_view name) {
+    const auto extensions = device.enumerateDeviceExtensionProperties();
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const vk::ExtensionProperties& extension) { return name == extension.extensionName.data(); });
+}
+
 uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device) {
     const auto families = device.getQueueFamilyProperties();
     for (uint32_t i = 0; i < families.size(); ++i)
@@ -182,7 +188,14 @@ VulkanContext::VulkanContext(const ContextOptions& options)
     if (family.timestampValidBits > 0) timestampPeriod_ = physicalDevice_.getProperties().limits.timestampPeriod;
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
-    device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo));
+    const bool float16Int8 = hasDeviceExtension(physicalDevice_, VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
+    shaderFeatures_ = supportedShaderFeatures(physicalDevice_, float16Int8);
+    std::vector<const char*> extensions;
+    if (shaderFeatures_.float16 || shaderFeatures_.int8) extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
+    const ShaderFeatureChain features(shaderFeatures_);
+    vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, extensions);
+    deviceInfo.pNext = features.chain();
+    device_ = vk::raii::Device(physicalDevice_, deviceInfo);
     queue_ = vk::raii::Queue(device_, queueFamily_, 0);
     commandPool_ = vk::raii::CommandPool(
         device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eTransient, queueFamily_));

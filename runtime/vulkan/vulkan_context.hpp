@@ -1,5 +1,7 @@
 #pragma once
 
+#include "shader_features.hpp"
+
 #include <vulkan/vulkan_raii.hpp>
 
 #include <chrono>
@@ -71,6 +73,7 @@ public:
     const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
     const vk::raii::PipelineCache& pipelineCache() const { return pipelineCache_; }
     bool validationEnabled() const { return validationEnabled_; }
+    const ShaderFeatures& shaderFeatures() const { return shaderFeatures_; } // enabled: all the device has
     uint64_t mostGroupsPerDispatch() const { return mostGroupsPerDispatch_; }
     // Nanoseconds per timestamp tick, 0 when the queue has no timestamps.
     double timestampPeriod() const { return timestampPeriod_; }
@@ -95,6 +98,7 @@ private:
     vk::raii::PhysicalDevice physicalDevice_{nullptr};
     DeviceInfo deviceInfo_;
     uint32_t queueFamily_ = 0;
+    ShaderFeatures shaderFeatures_;
     double timestampPeriod_ = 0;
     vk::raii::Device device_{nullptr};
     vk::raii::Queue queue_{nullptr};

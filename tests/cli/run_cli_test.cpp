@@ -139,6 +139,36 @@ TEST_F(RunCli, WavePrefixOperationsLeaveTheirOwnLaneOut) {
     EXPECT_NE(result.out.find("PASS Out: 64 values exactly"), std::string::npos) << result.out;
 }
 
+// Integers past 2^24 were once rounded through a float: 4294967294 went in as 2^32 and came
+// back as 0, and 16777217 compared equal to 16777216.
+class IntegerRuns : public RunCli {
+protected:
+    json copyRun(const json& input, const json& expected) const {
+        std::ofstream(folder / "copy.hlsl") << "StructuredBuffer<uint> In : register(t0);\n"
+                                               "RWStructuredBuffer<uint> Out : register(u0);\n"
+                                               "[numthreads(2, 1, 1)] void main(uint3 id : SV_DispatchThreadID) "
+                                               "{ Out[id.x] = In[id.x] + 1; }\n";
+        return {{"shader", (folder / "copy.hlsl").string()},
+                {"resources", {{"In", {{"kind", "buffer"}, {"type", "uint"}, {"values", input}}},
+                               {"Out", {{"kind", "buffer"}, {"type", "uint"}, {"count", 2}}}}},
+                {"dispatch", {{"threads", {2, 1, 1}}}},
+                {"expect", {{{"resource", "Out"}, {"values", expected}}}}};
+    }
+};
+
+TEST_F(IntegerRuns, EveryThirtyTwoBitIntegerGoesInAndComesBackExactly) {
+    const auto result = iblkitRun(copyRun({16777216, 4294967294u}, {16777217, 4294967295u}));
+    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+    const auto wrong = iblkitRun(copyRun({16777216, 4294967294u}, {16777216, 4294967295u}));
+    EXPECT_EQ(wrong.exitCode, 3) << "16777217 is not 16777216:\n" << wrong.out;
+}
+
+TEST_F(IntegerRuns, AValueTheIntegerFormatCannotHoldIsNamed) {
+    expectError(copyRun({1, 4294967296.0}, {0, 0}), "resources.In.values[1]: 4294967296 is not an unsigned 32-bit integer");
+    expectError(copyRun({1.5, 2}, {0, 0}), "resources.In.values[0]: 1.5 is not an unsigned 32-bit integer");
+    expectError(copyRun({1, -1}, {0, 0}), "resources.In.values[1]: -1 is not an unsigned 32-bit integer");
+}
+
 TEST_F(RunCli, BindingANameTheShaderLacks) {
     auto run = fastPrefilter();
     run["resources"]["Extra"] = {{"kind", "sampler"}};

@@ -1,89 +1,92 @@
-// hlsl/porting/ holds a shader for each porting feature (HLSL 2021 syntax, Vulkan attributes,
-// wave operations, typed UAVs, groupshared memory, atomics). Each one compiles to SPIR-V (which
-// the compiler validates) and to every form it can have: the GLSL and ESSL forms compile back
-// through glslang, the Vulkan-semantics forms too, the HLSL round trip compiles again, and a
-// form is refused only where the list below says so. Each run file passes on lavapipe with the
-// validation layer on.
-#include "compile_error.hpp"
-#include "compiler.hpp"
-#include "glsl_frontend.hpp"
-#include "glslang_round_trip.hpp"
+// hlsl/porting/ holds a shader for each porting feature, and corpus.json says what each feature
+// must show. Each shader compiles (or is refused with the stated words), goes into every form,
+// each form reads back with the compiler that reads it, a form is refused only where the
+// manifest says so, and each run file passes on lavapipe with the validation layer on.
+// docs/porting.md is what `iblkit porting` makes of the corpus.
+#include "corpus_run.hpp"
+#include "porting_error.hpp"
 #include "run_process.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <map>
-#include <set>
+#include <fstream>
+#include <sstream>
 
-namespace iblkit::compiler {
+namespace iblkit::porting {
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kCorpus = "hlsl/porting";
 
-const std::set<CrossTarget> kEveryForm = {CrossTarget::Glsl, CrossTarget::Essl,       CrossTarget::Msl,
-                                          CrossTarget::Hlsl, CrossTarget::VulkanGlsl, CrossTarget::VulkanEssl};
+const CorpusManifest& manifest() {
+    static const CorpusManifest corpus = readCorpusManifest(kCorpus);
+    return corpus;
+}
 
-// The forms that cannot express a corpus shader, and why.
-const std::map<std::string, std::set<CrossTarget>> kRefused = {
-    {"WavePrefix", {CrossTarget::Glsl, CrossTarget::Essl}}, // wave operations need Vulkan semantics
-};
-
-std::vector<std::string> corpusShaders() {
+// Called while the tests are registered, where an exception would end the program: a manifest
+// that cannot be read gives no shaders here, and fails ItsManifestIsRead instead.
+std::vector<std::string> shaderNames() {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(kCorpus))
-        if (entry.path().extension() == ".hlsl") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
+    try {
+        for (const auto& shader : manifest().shaders) names.push_back(shader.name);
+    } catch (const PortingError&) {
+    }
     return names;
 }
 
-class PortingCorpus : public ::testing::TestWithParam<std::string> {
-protected:
-    CompiledShader compile() const {
-        CompileOptions options;
-        options.source = kCorpus / (GetParam() + ".hlsl");
-        return compileShader(options);
-    }
-};
+std::string readText(const fs::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
 
-TEST_P(PortingCorpus, EveryFormIsProducedAndReadBackOrRefusedAsListed) {
-    const auto shader = compile();
-    const auto forms = crossCompileForms(shader, kEveryForm);
-    const auto refused = kRefused.count(GetParam()) ? kRefused.at(GetParam()) : std::set<CrossTarget>{};
-    for (const auto target : kEveryForm)
-        EXPECT_EQ(forms.refused.count(target), refused.count(target))
-            << crossTargetName(target) << ": " << (forms.refused.count(target) ? forms.refused.at(target) : "produced");
-    for (const auto& [target, form] : forms.produced) {
-        SCOPED_TRACE(std::string(crossTargetName(target)));
-        if (target == CrossTarget::Glsl || target == CrossTarget::Essl) {
-            EXPECT_EQ(testing::compileGlslBack(form.source), "") << form.source;
-        }
-        if (target == CrossTarget::VulkanGlsl || target == CrossTarget::VulkanEssl) {
-            EXPECT_NO_THROW(compileVulkanGlsl(form.source, shader.reflection.stage, GetParam())) << form.source;
-        }
-        if (target == CrossTarget::Hlsl) {
-            testing::TempFolder folder;
-            CompileOptions again;
-            again.source = folder.write("round_trip.hlsl", form.source);
-            again.entryPoint = shader.reflection.entryPoint;
-            EXPECT_NO_THROW(compileShader(again)) << form.source;
-        }
+class PortingCorpus : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PortingCorpus, EveryFeatureOfTheShaderIsAsTheManifestSays) {
+    const auto& shaders = manifest().shaders;
+    const auto shader = std::find_if(shaders.begin(), shaders.end(), [](const auto& s) { return s.name == GetParam(); });
+    run::RunOptions options;
+    options.validation = true;
+    const auto outcome = runCorpusShader(*shader, options);
+    for (const auto& feature : manifest().features) {
+        if (feature.shader != GetParam()) continue;
+        for (const auto& mismatch : judgeFeature(feature, outcome).mismatches) ADD_FAILURE() << feature.id << ": " << mismatch;
     }
 }
 
-TEST_P(PortingCorpus, ItsRunFilePassesOnLavapipeWithValidation) {
-    const auto runFile = kCorpus / (GetParam() + ".run.json");
-    ASSERT_TRUE(fs::exists(runFile)) << "every corpus shader is a compute shader with a run file";
-    const auto result = testing::runProcess({IBLKIT_EXECUTABLE, "run", runFile.string(), "--validate"});
-    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+std::string testName(const ::testing::TestParamInfo<std::string>& info) {
+    std::string name = fs::path(info.param).replace_extension().string();
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Shaders, PortingCorpus, ::testing::ValuesIn(corpusShaders()),
-                         [](const auto& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(Shaders, PortingCorpus, ::testing::ValuesIn(shaderNames()), testName);
+
+TEST(PortingCorpusFiles, ItsManifestIsRead) {
+    EXPECT_NO_THROW(readCorpusManifest(kCorpus));
+}
+
+TEST(PortingCorpusFiles, EveryShaderInTheCorpusIsInTheManifest) {
+    const auto names = shaderNames();
+    for (const auto& entry : fs::recursive_directory_iterator(kCorpus)) {
+        if (entry.path().extension() != ".hlsl") continue;
+        const auto name = fs::relative(entry.path(), kCorpus).string();
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << " is in no feature of corpus.json";
+    }
+}
+
+TEST(PortingDoc, IsWhatThePortingCommandMakesOfTheCorpus) {
+    testing::TempFolder folder;
+    const auto out = folder.path() / "porting.md";
+    const auto result = testing::runProcess({IBLKIT_EXECUTABLE, "porting", "--out", out.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+    EXPECT_EQ(readText(out), readText("docs/porting.md"))
+        << "docs/porting.md is stale: regenerate it with `iblkit porting --out docs/porting.md`";
+}
 
 } // namespace
-} // namespace iblkit::compiler
+} // namespace iblkit::porting

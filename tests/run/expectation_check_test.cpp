@@ -22,7 +22,7 @@ TEST(UlpDistance, CountsRepresentableStepsOfTheFormat) {
 }
 
 TEST(CompareValues, ExactUnlessAToleranceIsGiven) {
-    const std::vector<float> actual = {1.0f, 2.0f, 3.001f};
+    const std::vector<double> actual = {1.0f, 2.0f, 3.001f};
     const std::vector<double> expected = {1.0, 2.0, 3.0};
     EXPECT_FALSE(compareValues(actual, expected, {}, single).passed);
     EXPECT_TRUE(compareValues(actual, expected, {0.002, {}, {}}, single).passed);
@@ -32,7 +32,7 @@ TEST(CompareValues, ExactUnlessAToleranceIsGiven) {
 }
 
 TEST(CompareValues, ReportsTheWorstFailingValue) {
-    const std::vector<float> actual = {1.5f, 2.0f, 3.2f, 4.0f};
+    const std::vector<double> actual = {1.5f, 2.0f, 3.2f, 4.0f};
     const std::vector<double> expected = {1.0, 2.0, 3.0, 4.0};
     const auto result = compareValues(actual, expected, {0.3, {}, {}}, single);
     EXPECT_FALSE(result.passed);
@@ -42,16 +42,16 @@ TEST(CompareValues, ReportsTheWorstFailingValue) {
 }
 
 TEST(CompareValues, NanMatchesOnlyNan) {
-    EXPECT_TRUE(compareValues(std::vector<float>{NAN}, std::vector<double>{NAN}, {}, single).passed);
-    EXPECT_FALSE(compareValues(std::vector<float>{NAN}, std::vector<double>{1.0}, {1e9, {}, {}}, single).passed);
-    EXPECT_FALSE(compareValues(std::vector<float>{1.0f}, std::vector<double>{NAN}, {1e9, {}, {}}, single).passed);
+    EXPECT_TRUE(compareValues(std::vector<double>{NAN}, std::vector<double>{NAN}, {}, single).passed);
+    EXPECT_FALSE(compareValues(std::vector<double>{NAN}, std::vector<double>{1.0}, {1e9, {}, {}}, single).passed);
+    EXPECT_FALSE(compareValues(std::vector<double>{1.0f}, std::vector<double>{NAN}, {1e9, {}, {}}, single).passed);
 }
 
 TEST(CheckRange, InfinitiesAndNansAreOutside) {
-    EXPECT_TRUE(checkRange(std::vector<float>{0.0f, 1.0f, 0.5f}, 0, 1).passed);
-    EXPECT_FALSE(checkRange(std::vector<float>{0.0f, INFINITY}, 0, 1e30).passed);
-    EXPECT_FALSE(checkRange(std::vector<float>{NAN}, -1e30, 1e30).passed);
-    const auto result = checkRange(std::vector<float>{0.25f, -0.5f, 0.75f}, 0, 1);
+    EXPECT_TRUE(checkRange(std::vector<double>{0.0f, 1.0f, 0.5f}, 0, 1).passed);
+    EXPECT_FALSE(checkRange(std::vector<double>{0.0f, INFINITY}, 0, 1e30).passed);
+    EXPECT_FALSE(checkRange(std::vector<double>{NAN}, -1e30, 1e30).passed);
+    const auto result = checkRange(std::vector<double>{0.25f, -0.5f, 0.75f}, 0, 1);
     EXPECT_EQ(result.failed, 1u);
     EXPECT_EQ(result.minimum, -0.5);
     EXPECT_EQ(result.maximum, 0.75);

@@ -1,6 +1,7 @@
 #include "atomic_output.hpp"
 #include "data_file.hpp"
 #include "run_error.hpp"
+#include "run_executor.hpp"
 #include "run_file.hpp"
 #include "temp_folder.hpp"
 
@@ -49,6 +50,15 @@ TEST_F(RunFiles, TheDocumentedPrefilterExampleReadsAsWritten) {
     ASSERT_EQ(spec.expectations.size(), 1u);
     EXPECT_EQ(spec.expectations[0].tolerance.absolute, 1e-4);
     EXPECT_EQ(spec.saves.at("Prefiltered"), fs::path("docs/examples/prefiltered.npy"));
+}
+
+TEST_F(RunFiles, CompileOptionsAreReadAsTypedValues) {
+    const auto spec = readRunFile(write(R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "enable_16bit_types": true,
+                                           "hlsl_version": "2018"})"));
+    const auto options = compileOptionsOf(spec);
+    EXPECT_TRUE(options.enable16BitTypes);
+    EXPECT_EQ(options.hlslVersion, lowering::HlslVersion::Hlsl2018);
+    EXPECT_EQ(options.source, folder / "x.hlsl");
 }
 
 TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
@@ -101,6 +111,10 @@ TEST_F(RunFiles, ValuesOutOfTypeOrRangeAreRefusedWithTheirKey) {
         {R"({"shader": "x.hlsl", "include": "hlsl", "dispatch": {"threads": [1]}})", "include: must be an array"},
         {R"({"shader": 5, "dispatch": {"threads": [1]}})", "shader: must be a string"},
         {R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "defines": {"N": [1]}})", "defines.N: must be a string"},
+        {R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "enable_16bit_types": 1})",
+         "enable_16bit_types: must be true or false"},
+        {R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "hlsl_version": "2020"})",
+         "hlsl_version: unknown value '2020' (2018, 2021)"},
     };
     for (const auto& [text, expected] : cases) {
         const auto message = errorOf(text);
@@ -111,7 +125,7 @@ TEST_F(RunFiles, ValuesOutOfTypeOrRangeAreRefusedWithTheirKey) {
 
 TEST_F(RunFiles, NpyFilesRoundTripAndRawFilesMustHaveTheRightSize) {
     const auto& format = vulkan::texelFormatNamed("R16G16_SFLOAT");
-    const std::vector<float> values = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
+    const std::vector<double> values = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
     files::writeFileAtomically(folder / "a.npy", encodeValues(folder / "a.npy", format, values, {1, 1, 3, 2}));
     EXPECT_EQ(readValues(folder / "a.npy", format, 6), values);
     std::ifstream npy(folder / "a.npy", std::ios::binary);

@@ -7,6 +7,7 @@
 #include "stress_command.hpp"
 #include "devices_command.hpp"
 #include "lut_fit_command.hpp"
+#include "porting_command.hpp"
 #include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addBakeCommand(app);
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);
+    iblkit::cli::addPortingCommand(app);
     // CLI11 calls a word it does not know "A subcommand is required"; name it and the commands.
     const auto commands = app.get_subcommands({});
     const auto known = [&](const std::string& word) {

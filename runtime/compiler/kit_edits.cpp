@@ -1,0 +1,31 @@
+#include "kit_edits.hpp"
+
+#include <array>
+#include <utility>
+
+namespace iblkit::compiler {
+namespace {
+
+// The source edits are runtime/lowering's passes; the SPIR-V edits are the spirv_*.cpp files here.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kKitEdits{{
+    {"select-and-or", "select, and and or become component-wise ?:, && and ||"},
+    {"enums", "enums become a typedef of their underlying type and one constant per enumerator"},
+    {"namespaces", "namespaces become name prefixes (N__name), with C++ lookup; using aliases become typedefs"},
+    {"16-bit-type-names", "float16_t, int16_t and uint16_t become glslang's half, min16int and min16uint"},
+    {"vk-binding", "[[vk::binding(b, s)]] sets the set and binding, instead of the register rule"},
+    {"vk-image-format", "[[vk::image_format]] sets the storage image's format, which glslang ignores"},
+    {"vk-push-constant", "[[vk::push_constant]] S name; becomes a push-constant ConstantBuffer<S>"},
+    {"texel-widening", "image writes narrower than the format are widened to four components (VUID-07112)"},
+    {"exclusive-wave-scans", "WavePrefix* scans are made exclusive (glslang emits them inclusive: glslang issue 2929)"},
+    {"image-access-qualifiers", "storage images only written or only read are decorated NonReadable or NonWritable"},
+}};
+
+} // namespace
+
+std::string_view describeKitEdit(std::string_view id) {
+    for (const auto& [name, description] : kKitEdits)
+        if (name == id) return description;
+    return {};
+}
+
+} // namespace iblkit::compiler

@@ -1,0 +1,152 @@
+#include "corpus_run.hpp"
+
+#include "compile_error.hpp"
+#include "compiler.hpp"
+#include "glsl_frontend.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace iblkit::porting {
+namespace {
+
+using compiler::CrossTarget;
+
+// Reads a produced form back; throws CompileError with the reader's message.
+void readBack(const compiler::CompiledShader& shader, const compiler::CompileOptions& options, CrossTarget target,
+              const std::string& source) {
+    const auto stage = shader.reflection.stage;
+    const std::string name = shader.sourceName + " (" + std::string(compiler::crossTargetName(target)) + " form)";
+    switch (target) {
+    case CrossTarget::Glsl:
+    case CrossTarget::Essl: compiler::compileOpenGlGlsl(source, stage, name); return;
+    case CrossTarget::VulkanGlsl:
+    case CrossTarget::VulkanEssl: compiler::compileVulkanGlsl(source, stage, name); return;
+    case CrossTarget::Hlsl: {
+        auto again = options;
+        again.sourceText = source;
+        again.stage = stage;
+        again.entryPoint = shader.reflection.entryPoint;
+        compiler::compileShader(again);
+        return;
+    }
+    case CrossTarget::Msl: return;
+    }
+}
+
+std::map<CrossTarget, FormOutcome> formsOf(const compiler::CompiledShader& shader, const compiler::CompileOptions& options) {
+    const auto forms = compiler::crossCompileForms(shader, {std::begin(compiler::kCrossTargets), std::end(compiler::kCrossTargets)});
+    std::map<CrossTarget, FormOutcome> outcomes;
+    for (const auto& [target, reason] : forms.refused) outcomes[target] = {false, false, reason};
+    for (const auto& [target, form] : forms.produced) {
+        try {
+            readBack(shader, options, target, form.source);
+            outcomes[target] = {true, target != CrossTarget::Msl, ""};
+        } catch (const compiler::CompileError& error) {
+            outcomes[target] = {true, false, error.what()};
+        }
+    }
+    return outcomes;
+}
+
+void carryOutRun(const std::filesystem::path& runFile, const run::RunOptions& options, ShaderOutcome& outcome) {
+    std::ostringstream log;
+    try {
+        const bool passed = run::executeRun(run::readRunFile(runFile), options, log);
+        outcome.run = passed ? RunOutcome::Passed : RunOutcome::Failed;
+        outcome.runLog = log.str();
+    } catch (const std::exception& error) { // RunError, CompileError, VulkanError: the run could not be carried out
+        outcome.run = RunOutcome::Failed;
+        outcome.runLog = log.str() + error.what();
+    }
+}
+
+bool contains(const std::vector<std::string>& lines, const std::string& words) {
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string& line) { return line.find(words) != std::string::npos; });
+}
+
+// How a form's outcome differs from what the manifest says of it, or "".
+std::string formMismatch(const CorpusFeature& feature, CrossTarget target, const FormOutcome& form) {
+    const std::string name(compiler::crossTargetName(target));
+    const bool refused = feature.refusedForms.count(target) > 0, unread = feature.unreadForms.count(target) > 0;
+    if (!form.produced) return refused ? "" : name + " was refused: " + form.message;
+    if (refused) return name + " was produced, but the manifest says it is refused";
+    if (unread && form.message.empty()) return name + " reads back, but the manifest says it does not";
+    if (!unread && !form.message.empty()) return name + " does not read back: " + form.message;
+    return "";
+}
+
+void judgeCompiled(const CorpusFeature& feature, const ShaderOutcome& shader, FeatureOutcome& outcome) {
+    auto& mismatches = outcome.mismatches;
+    for (const auto& edit : feature.kitEdits)
+        if (std::find(shader.kitEdits.begin(), shader.kitEdits.end(), edit) == shader.kitEdits.end())
+            mismatches.push_back("the kit's edit '" + edit + "' did not happen");
+    if (!feature.warning.empty() && !contains(shader.warnings, feature.warning))
+        mismatches.push_back("no warning says '" + feature.warning + "'");
+    for (const auto& [target, form] : shader.forms)
+        if (auto mismatch = formMismatch(feature, target, form); !mismatch.empty()) mismatches.push_back(std::move(mismatch));
+    if (shader.run == RunOutcome::Failed) mismatches.push_back("its run file failed: " + shader.runLog);
+    outcome.status = !feature.kitEdits.empty() ? FeatureStatus::Lowered
+                     : !feature.warning.empty() ? FeatureStatus::Warned
+                                                : FeatureStatus::Supported;
+}
+
+} // namespace
+
+ShaderOutcome runCorpusShader(const CorpusShader& corpusShader, const run::RunOptions& runOptions) {
+    ShaderOutcome outcome;
+    outcome.name = corpusShader.name;
+    try {
+        const auto shader = compiler::compileShader(corpusShader.options);
+        outcome.warnings = shader.warnings;
+        outcome.kitEdits = shader.kitEdits;
+        outcome.forms = formsOf(shader, corpusShader.options);
+    } catch (const compiler::CompileError& error) {
+        outcome.compileError = error.what();
+        return outcome;
+    }
+    if (corpusShader.runFile) carryOutRun(*corpusShader.runFile, runOptions, outcome);
+    return outcome;
+}
+
+std::string_view statusName(FeatureStatus status) {
+    switch (status) {
+    case FeatureStatus::Supported: return "supported";
+    case FeatureStatus::Lowered: return "lowered by the kit";
+    case FeatureStatus::Warned: return "compiled, with a warning";
+    case FeatureStatus::Refused: return "refused";
+    }
+    return "";
+}
+
+FeatureOutcome judgeFeature(const CorpusFeature& feature, const ShaderOutcome& shader) {
+    FeatureOutcome outcome{feature, FeatureStatus::Refused, {}};
+    const bool refused = !shader.compileError.empty();
+    if (refused && feature.error.empty()) outcome.mismatches.push_back("it was refused: " + shader.compileError);
+    if (!refused && !feature.error.empty()) outcome.mismatches.push_back("it compiled, but the manifest says it is refused");
+    if (refused && !feature.error.empty() && shader.compileError.find(feature.error) == std::string::npos)
+        outcome.mismatches.push_back("its error does not say '" + feature.error + "': " + shader.compileError);
+    if (!refused) judgeCompiled(feature, shader, outcome);
+    return outcome;
+}
+
+bool CorpusResults::agrees() const {
+    return std::all_of(features.begin(), features.end(), [](const FeatureOutcome& f) { return f.mismatches.empty(); });
+}
+
+CorpusResults runCorpus(const CorpusManifest& manifest, const run::RunOptions& runOptions,
+                        const std::function<void(const std::string&)>& progress) {
+    CorpusResults results;
+    for (const auto& shader : manifest.shaders) {
+        results.shaders.push_back(runCorpusShader(shader, runOptions));
+        if (progress) progress(shader.name);
+    }
+    for (const auto& feature : manifest.features) {
+        const auto shader = std::find_if(results.shaders.begin(), results.shaders.end(),
+                                         [&](const ShaderOutcome& outcome) { return outcome.name == feature.shader; });
+        results.features.push_back(judgeFeature(feature, *shader));
+    }
+    return results;
+}
+
+} // namespace iblkit::porting

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "corpus_manifest.hpp"
+#include "cross_compile.hpp"
+#include "run_executor.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace iblkit::porting {
+
+// One form of a corpus shader: produced and read back by the compiler that reads it (glslang for
+// GLSL and ESSL, the kit again for the HLSL round trip; MSL has no reader on Debian), or not,
+// with the refusal or the reader's error.
+struct FormOutcome {
+    bool produced = false;
+    bool readBack = false;
+    std::string message;
+};
+
+enum class RunOutcome { NoRunFile, Passed, Failed };
+
+// What the compiler and the device made of one corpus shader.
+struct ShaderOutcome {
+    std::string name;
+    std::string compileError; // empty when it compiled
+    std::vector<std::string> warnings;
+    std::vector<std::string> kitEdits;
+    std::map<compiler::CrossTarget, FormOutcome> forms; // every form, when it compiled
+    RunOutcome run = RunOutcome::NoRunFile;
+    std::string runLog; // what the run printed, or why it could not be carried out
+};
+
+// Compiles the shader into every form, reads each form back, and carries out its run file.
+ShaderOutcome runCorpusShader(const CorpusShader& shader, const run::RunOptions& runOptions);
+
+enum class FeatureStatus { Supported, Lowered, Warned, Refused };
+std::string_view statusName(FeatureStatus status); // "supported", "lowered by the kit", ...
+
+// A feature judged on its shader's outcome: its status, and every way the outcome differs from
+// what the manifest says of the feature (empty when it agrees).
+struct FeatureOutcome {
+    CorpusFeature feature;
+    FeatureStatus status = FeatureStatus::Supported;
+    std::vector<std::string> mismatches;
+};
+FeatureOutcome judgeFeature(const CorpusFeature& feature, const ShaderOutcome& shader);
+
+struct CorpusResults {
+    std::vector<ShaderOutcome> shaders;
+    std::vector<FeatureOutcome> features;
+    bool agrees() const; // every feature as the manifest says
+};
+
+// Every shader of the corpus, then every feature judged. `progress` gets a line per shader.
+CorpusResults runCorpus(const CorpusManifest& manifest, const run::RunOptions& runOptions,
+                        const std::function<void(const std::string&)>& progress = {});
+
+} // namespace iblkit::porting

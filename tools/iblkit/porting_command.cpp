@@ -1,0 +1,50 @@
+#include "porting_command.hpp"
+
+#include "atomic_output.hpp"
+#include "corpus_run.hpp"
+#include "porting_markdown.hpp"
+#include "run_command.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <memory>
+
+namespace iblkit::cli {
+
+void addPortingCommand(CLI::App& app) {
+    struct Arguments {
+        std::string corpus = "hlsl/porting";
+        std::string out;
+        std::string device;
+    };
+    auto arguments = std::make_shared<Arguments>();
+    auto* command = app.add_subcommand("porting", "Compile the porting corpus into every form, run it, judge each feature "
+                                                  "against the corpus manifest and write the feature table");
+    command->add_option("--corpus", arguments->corpus, "Corpus folder holding corpus.json (default hlsl/porting)");
+    command->add_option("--out", arguments->out, "Write the feature table (markdown) here, e.g. docs/porting.md");
+    command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
+    command->callback([arguments] {
+        const auto manifest = porting::readCorpusManifest(arguments->corpus);
+        run::RunOptions options;
+        options.device = arguments->device;
+        options.validation = true;
+        const auto results = porting::runCorpus(manifest, options);
+        for (const auto& outcome : results.features) {
+            fmt::print("{} {} ({})\n", outcome.mismatches.empty() ? "PASS" : "FAIL", outcome.feature.id,
+                       porting::statusName(outcome.status));
+            for (const auto& mismatch : outcome.mismatches) fmt::print("     {}\n", mismatch);
+        }
+        const auto agreeing = std::count_if(results.features.begin(), results.features.end(),
+                                            [](const auto& outcome) { return outcome.mismatches.empty(); });
+        fmt::print("{} of {} features as the manifest says\n", agreeing, results.features.size());
+        // A table from a corpus that disagrees with its manifest would document a bug as a feature.
+        if (!results.agrees()) throw ExpectationsFailed{};
+        if (!arguments->out.empty()) {
+            files::writeFileAtomically(arguments->out, porting::portingMarkdown(results, arguments->corpus));
+            fmt::print("wrote {}\n", arguments->out);
+        }
+    });
+}
+
+} // namespace iblkit::cli
