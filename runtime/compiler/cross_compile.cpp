@@ -38,9 +38,14 @@ std::map<std::string, spirv_cross::VariableID> variablesByName(const spirv_cross
 
 // ESSL 3.10 lacks two-channel and 16-bit float storage formats among others: such images are
 // declared with a four-channel stand-in of the same component type (docs/bindings.md).
-std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, const ShaderReflection& reflection,
+struct StandIn {
+    std::string original; // the image's own format
+    std::string declared; // the ESSL format declared for it
+};
+
+std::map<std::string, StandIn> esslStandIns(std::vector<uint32_t>& spirv, const ShaderReflection& reflection,
                                                 const std::string& sourceName) {
-    std::map<std::string, std::string> adaptedFrom;
+    std::map<std::string, StandIn> adaptedFrom;
     for (const auto& resource : reflection.resources) {
         if (resource.kind != ResourceKind::StorageImage && resource.kind != ResourceKind::StorageTexelBuffer) continue;
         if (isEssl310Format(resource.format)) continue;
@@ -52,7 +57,7 @@ std::map<std::string, std::string> esslStandIns(std::vector<uint32_t>& spirv, co
         SpirvModule module(spirv);
         module.replaceStorageImageFormat(format->spirvFormat, standIn->spirvFormat);
         spirv = module.words();
-        adaptedFrom[resource.name] = resource.format;
+        adaptedFrom[resource.name] = {resource.format, std::string(format->esslStandIn)};
     }
     return adaptedFrom;
 }
@@ -77,7 +82,7 @@ void requireEsslImageAccess(const spirv_cross::CompilerGLSL& compiler, const Sha
 
 CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
                        const std::string& sourceName) {
-    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
+    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, StandIn>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
     if (es) requireEsslImageAccess(compiler, reflection, sourceName, false);
     auto options = compiler.get_common_options();
@@ -98,8 +103,7 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
         case ResourceKind::StorageImage:
         case ResourceKind::StorageTexelBuffer:
             space = "image_unit";
-            format = adaptedFrom.count(resource.name) ? std::string(findImageFormatByGlslName(resource.format)->esslStandIn)
-                                                      : resource.format;
+            format = adaptedFrom.count(resource.name) ? adaptedFrom.at(resource.name).declared : resource.format;
             break;
         default: continue; // textures and samplers become combined samplers below
         }
@@ -108,7 +112,7 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
         compiler.set_decoration(id, spv::DecorationBinding, next[space]);
         const auto adapted = adaptedFrom.find(resource.name);
         out.bindings.push_back({resource.name, space, next[space]++, "", format,
-                                adapted == adaptedFrom.end() ? "" : adapted->second});
+                                adapted == adaptedFrom.end() ? "" : adapted->second.original});
     }
 
     const spirv_cross::VariableID dummySampler = compiler.build_dummy_sampler_for_combined_images();
@@ -166,7 +170,7 @@ uint32_t lowestShaderModel(const spirv_cross::Compiler& compiler, bool usesSpace
 
 CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
                            const std::string& sourceName) {
-    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, std::string>{};
+    const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, StandIn>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
     if (es) requireEsslImageAccess(compiler, reflection, sourceName, true);
     auto options = compiler.get_common_options();
@@ -179,8 +183,7 @@ CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& 
         const auto adapted = adaptedFrom.find(resource.name);
         const bool standsIn = adapted != adaptedFrom.end();
         out.bindings.push_back({resource.name, "set" + std::to_string(resource.location.set), resource.location.binding, "",
-                                standsIn ? std::string(findImageFormatByGlslName(resource.format)->esslStandIn) : "",
-                                standsIn ? adapted->second : ""});
+                                standsIn ? adapted->second.declared : "", standsIn ? adapted->second.original : ""});
     }
     out.source = compiler.compile();
     return out;
@@ -190,7 +193,7 @@ CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& 
     spirv_cross::CompilerMSL compiler(spirv);
     auto options = compiler.get_msl_options();
     // 64-bit integers came with MSL 2.2; everything else the kit's shaders use is in 2.1.
-    declares(compiler, spv::CapabilityInt64) ? options.set_msl_version(2, 2) : options.set_msl_version(2, 1);
+    options.set_msl_version(2, declares(compiler, spv::CapabilityInt64) ? 2 : 1);
     compiler.set_msl_options(options);
 
     CrossCompiled out;

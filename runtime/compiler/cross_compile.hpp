@@ -32,8 +32,9 @@ struct CrossCompiled {
     std::vector<TargetBinding> bindings;
 };
 
-// SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1, MSL 2.1 or HLSL (SM 5.0,
-// 5.1 where a register space is used, 6.0 where wave operations are) with SPIRV-Cross. Resources are numbered per target
+// SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1, GLSL 450 and ESSL 310 with
+// Vulkan semantics, MSL (2.1; 2.2 with 64-bit integers) or HLSL (the lowest shader model from
+// 5.0 to 6.2 that has what the module uses) with SPIRV-Cross. Resources are numbered per target
 // namespace in register order (docs/bindings.md). Throws CompileError naming the form, the
 // construct it cannot express and, where another form can, the option that writes that form.
 CrossCompiled crossCompile(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection, CrossTarget target,

@@ -29,38 +29,46 @@ bool isSixtyFourBitTypeGlslangLacks(std::string_view name) {
     return false;
 }
 
-// The message for a name that needs what glslang lacks, or "" for any other name.
-std::string messageFor(const std::string& name) {
-    static const std::set<std::string, std::less<>> rayTracing{
-        "RaytracingAccelerationStructure", "RayQuery", "TraceRay", "TraceRayInline", "ReportHit", "CallShader"};
-    static const std::set<std::string, std::less<>> packing{
-        "pack_u8", "pack_s8", "pack_clamp_u8", "pack_clamp_s8", "unpack_u8u16",
-        "unpack_u8u32", "unpack_s8s16", "unpack_s8s32", "uint8_t4_packed", "int8_t4_packed"};
+// What glslang lacks, named: its message, and whether it is an intrinsic, which a shader may
+// define itself (a polyfill for older compilers).
+struct Lack {
+    std::string message; // "" for a name glslang has
+    bool intrinsic = false;
+};
+
+Lack lackOf(const std::string& name) {
+    static const std::set<std::string, std::less<>> rayTracingTypes{"RaytracingAccelerationStructure", "RayQuery"};
+    static const std::set<std::string, std::less<>> rayTracingCalls{"TraceRay", "TraceRayInline", "ReportHit", "CallShader"};
+    static const std::set<std::string, std::less<>> packing{"pack_u8",      "pack_s8",      "pack_clamp_u8", "pack_clamp_s8",
+                                                            "unpack_u8u16", "unpack_u8u32", "unpack_s8s16",  "unpack_s8s32"};
     static const std::set<std::string, std::less<>> waveMatch{
         "WaveMatch", "WaveMultiPrefixSum", "WaveMultiPrefixProduct", "WaveMultiPrefixCountBits",
         "WaveMultiPrefixBitAnd", "WaveMultiPrefixBitOr", "WaveMultiPrefixBitXor"};
-    if (name == "interface")
-        return "an interface" + kFrontend + ": write a struct with member functions and call them directly";
-    if (rayTracing.contains(name)) return "ray tracing ('" + name + "')" + kFrontend;
+    if (name == "interface") return {"an interface" + kFrontend + ": write a struct with member functions and call them directly"};
+    if (rayTracingTypes.contains(name)) return {"ray tracing ('" + name + "')" + kFrontend};
+    if (rayTracingCalls.contains(name)) return {"ray tracing ('" + name + "')" + kFrontend, true};
     if (name == "ResourceDescriptorHeap" || name == "SamplerDescriptorHeap")
-        return "Shader Model 6.6 dynamic resources ('" + name + "')" + kFrontendPlural +
-               ": declare each resource, with a register or [[vk::binding]]";
-    if (packing.contains(name)) return intrinsicMessage(name, "6.6", "shift and mask the bytes of a uint");
-    if (waveMatch.contains(name)) return intrinsicMessage(name, "6.5", "build it from WaveActiveBallot");
+        return {"Shader Model 6.6 dynamic resources ('" + name + "')" + kFrontendPlural +
+                ": declare each resource, with a register or [[vk::binding]]"};
+    if (name == "uint8_t4_packed" || name == "int8_t4_packed")
+        return {"the Shader Model 6.6 type '" + name + "'" + kFrontend + ": hold the four bytes in a uint"};
+    if (packing.contains(name)) return {intrinsicMessage(name, "6.6", "shift and mask the bytes of a uint"), true};
+    if (waveMatch.contains(name)) return {intrinsicMessage(name, "6.5", "build it from WaveActiveBallot"), true};
     if (isSixtyFourBitTypeGlslangLacks(name))
-        return "'" + name + "'" + kFrontend + ": it has 64-bit integers only as uint64_t scalars";
+        return {"'" + name + "'" + kFrontend + ": it has 64-bit integers only as uint64_t scalars"};
     if (name == "dot2add" || name == "dot4add_u8packed" || name == "dot4add_i8packed")
-        return intrinsicMessage(name, "6.4", "write the dot product");
-    return "";
+        return {intrinsicMessage(name, "6.4", "write the dot product"), true};
+    return {};
 }
 
-// Names the shader declares itself: a type or function name right after a type.
-std::set<std::string, std::less<>> declaredNames(const std::vector<Token>& tokens) {
-    std::set<std::string, std::less<>> names;
-    for (size_t i = 1; i < tokens.size(); ++i)
-        if (tokens[i].isIdentifier() && (isTypeLike(tokens[i - 1]) || tokens[i - 1].is("struct")))
-            names.insert(tokens[i].text);
-    return names;
+// Whether tokens[i] names a function the shader defines: a type before it, its parameter list,
+// then its body (or a semantic).
+bool definesFunction(const std::vector<Token>& tokens, size_t i) {
+    if (i == 0 || i + 1 >= tokens.size() || !tokens[i + 1].is("(")) return false;
+    const Token& before = tokens[i - 1];
+    if (!before.isIdentifier() || !isTypeLike(before)) return false;
+    const size_t close = matchingClose(tokens, i + 1);
+    return close + 1 < tokens.size() && (tokens[close + 1].is("{") || tokens[close + 1].is(":"));
 }
 
 // "(uint64_t)100000" or "uint64_t(100000)": glslang fails to fold a literal into a 64-bit
@@ -80,14 +88,13 @@ void refuseLiteralCastsToUint64(const std::vector<Token>& tokens) {
 
 void refuseUnsupportedFeatures(const std::vector<Token>& tokens) {
     refuseLiteralCastsToUint64(tokens);
-    std::set<std::string, std::less<>> declared;
-    bool declaredKnown = false;
+    std::set<std::string, std::less<>> defined;
+    for (size_t i = 0; i < tokens.size(); ++i)
+        if (tokens[i].isIdentifier() && lackOf(tokens[i].text).intrinsic && definesFunction(tokens, i)) defined.insert(tokens[i].text);
     for (size_t i = 0; i < tokens.size(); ++i) {
         if (!tokens[i].isIdentifier() || followsMemberAccess(tokens, i)) continue;
-        const std::string message = messageFor(tokens[i].text);
-        if (message.empty()) continue;
-        if (!declaredKnown) declared = declaredNames(tokens), declaredKnown = true;
-        if (tokens[i].is("interface") || !declared.contains(tokens[i].text)) refuse(tokens[i], message);
+        const auto lack = lackOf(tokens[i].text);
+        if (!lack.message.empty() && !(lack.intrinsic && defined.contains(tokens[i].text))) refuse(tokens[i], lack.message);
     }
 }
 

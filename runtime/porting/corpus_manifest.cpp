@@ -46,7 +46,12 @@ public:
         CorpusManifest manifest{folder_, {}, {}};
         if (!root.contains("features")) fields_.fail("the manifest", "needs \"features\"");
         const auto& features = fields_.array(root.at("features"), "features");
-        for (size_t i = 0; i < features.size(); ++i) manifest.features.push_back(feature(features[i], i));
+        for (size_t i = 0; i < features.size(); ++i) {
+            manifest.features.push_back(feature(features[i], i));
+            const auto& id = manifest.features.back().id;
+            if (std::count_if(manifest.features.begin(), manifest.features.end(), [&](const auto& f) { return f.id == id; }) > 1)
+                fields_.fail("features[" + std::to_string(i) + "].id", "'" + id + "' is another feature's id too");
+        }
         for (const auto& feature : manifest.features)
             if (std::none_of(manifest.shaders.begin(), manifest.shaders.end(), [&](const auto& s) { return s.name == feature.shader; }))
                 manifest.shaders.push_back(shader(feature.shader, compile));
@@ -80,17 +85,24 @@ private:
         if (value.contains("error")) feature.error = fields_.text(value.at("error"), where + ".error");
         if (value.contains("warning")) feature.warning = fields_.text(value.at("warning"), where + ".warning");
         if (!fs::is_regular_file(folder_ / feature.shader)) fields_.fail(where + ".shader", "no such file: " + feature.shader);
+        const bool expectsOutcomes = !feature.kitEdits.empty() || !feature.refusedForms.empty() || !feature.unreadForms.empty() ||
+                                     !feature.warning.empty();
+        if (!feature.error.empty() && expectsOutcomes)
+            fields_.fail(where, "a refused feature (\"error\") has no edits, forms or warnings to show");
         return feature;
     }
 
     CorpusShader shader(const std::string& name, const json& compile) const {
         CorpusShader shader{name, {}, {}};
+        std::error_code error;
         const fs::path source = folder_ / name;
         const fs::path runFile = fs::path(source).replace_extension(".run.json");
         if (fs::exists(runFile)) {
             if (compile.contains(name)) fields_.fail("compile." + name, "a shader with a run file is compiled as its run file says");
             shader.runFile = runFile;
             shader.options = run::compileOptionsOf(run::readRunFile(runFile));
+            if (!fs::equivalent(shader.options.source, source, error))
+                fields_.fail(runFile.filename().string(), "runs " + shader.options.source.string() + ", not " + name);
             return shader;
         }
         shader.options.source = source;

@@ -24,6 +24,7 @@ void readBack(const compiler::CompiledShader& shader, const compiler::CompileOpt
     case CrossTarget::VulkanEssl: compiler::compileVulkanGlsl(source, stage, name); return;
     case CrossTarget::Hlsl: {
         auto again = options;
+        again.source = name; // its messages name the form, not the corpus shader
         again.sourceText = source;
         again.stage = stage;
         again.entryPoint = shader.reflection.entryPoint;
@@ -37,13 +38,13 @@ void readBack(const compiler::CompiledShader& shader, const compiler::CompileOpt
 std::map<CrossTarget, FormOutcome> formsOf(const compiler::CompiledShader& shader, const compiler::CompileOptions& options) {
     const auto forms = compiler::crossCompileForms(shader, {std::begin(compiler::kCrossTargets), std::end(compiler::kCrossTargets)});
     std::map<CrossTarget, FormOutcome> outcomes;
-    for (const auto& [target, reason] : forms.refused) outcomes[target] = {false, false, reason};
+    for (const auto& [target, reason] : forms.refused) outcomes[target] = {false, reason};
     for (const auto& [target, form] : forms.produced) {
         try {
             readBack(shader, options, target, form.source);
-            outcomes[target] = {true, target != CrossTarget::Msl, ""};
+            outcomes[target] = {true, ""};
         } catch (const compiler::CompileError& error) {
-            outcomes[target] = {true, false, error.what()};
+            outcomes[target] = {true, error.what()};
         }
     }
     return outcomes;

@@ -16,8 +16,7 @@ namespace iblkit::porting {
 // with the refusal or the reader's error.
 struct FormOutcome {
     bool produced = false;
-    bool readBack = false;
-    std::string message;
+    std::string message; // the refusal, or the reader's error; "" for a form produced and read back
 };
 
 enum class RunOutcome { NoRunFile, Passed, Failed };

@@ -28,15 +28,16 @@ file states.
 - **lowered by the kit**: the kit rewrites it, in the source before glslang or in the SPIR-V
   after it; the notes say how.
 - **compiled, with a warning**: it compiles, and the warning in the notes says what is not honoured.
-- **refused**: one error naming the construct and its file:line:col, quoted in the notes.
+- **refused**: one error naming the construct and its place (file:line:col where the construct has
+  one), quoted in the notes.
 
 Forms: `glsl` (GLSL 450 for OpenGL), `essl` (ESSL 310), `msl` (MSL 2.1, 2.2 with 64-bit integers),
 `hlsl` (the round trip, Shader Model 5.0 to 6.2 as the shader needs), `vulkan-glsl` and
 `vulkan-essl` (GLSL and ESSL with Vulkan semantics). ✓ produced and read back (glslang for GLSL
 and ESSL, the kit's compiler for HLSL; MSL is produced and checked by SPIRV-Cross only: Debian has
 no Metal compiler); ◐ produced, but the compiler that reads it cannot (its first message is in
-the notes); ✗ refused, with the reason in the notes. Run: ✓ the run file passed; · the shader
-has no run file.
+the notes); ✗ refused, with the reason in the notes; · not made, the shader being refused. Run: ✓
+the run file passed; · the shader has no run file. Links assume the page sits in `docs/`.
 )";
 
 std::string relative(std::string text, const std::filesystem::path& corpusFolder) {

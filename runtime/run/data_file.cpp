@@ -68,12 +68,26 @@ std::vector<double> readNpy(const std::filesystem::path& path) {
     return values;
 }
 
-std::string npyBytes(const std::vector<double>& values, const std::vector<size_t>& shape) {
+// The values as little-endian elements of type T.
+template <typename T>
+std::string elementBytes(const std::vector<double>& values) {
+    std::string bytes(values.size() * sizeof(T), '\0');
+    for (size_t i = 0; i < values.size(); ++i) {
+        const auto element = static_cast<T>(values[i]);
+        std::memcpy(bytes.data() + i * sizeof(T), &element, sizeof(T));
+    }
+    return bytes;
+}
+
+// float32 for float and unorm formats; the integer formats' own uint32 or int32, every value exact.
+std::string npyBytes(const std::vector<double>& values, const std::vector<size_t>& shape, const vulkan::TexelFormat& format) {
+    const bool unsignedInteger = format.kind == vulkan::ComponentKind::UInt, signedInteger = format.kind == vulkan::ComponentKind::SInt;
     // Python's tuple spelling: "(7,)" for one dimension, "(2, 3)" for more.
     std::string shapeText = "(";
     for (size_t i = 0; i < shape.size(); ++i) shapeText += std::to_string(shape[i]) + (i + 1 < shape.size() ? ", " : "");
     shapeText += shape.size() == 1 ? ",)" : ")";
-    std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': " + shapeText + ", }";
+    const char* type = unsignedInteger ? "<u4" : signedInteger ? "<i4" : "<f4";
+    std::string header = std::string("{'descr': '") + type + "', 'fortran_order': False, 'shape': " + shapeText + ", }";
     // The whole preamble is padded with spaces to a multiple of 64 bytes, ending in a newline.
     const size_t preamble = 10 + header.size() + 1;
     header.append((64 - preamble % 64) % 64, ' ');
@@ -83,8 +97,7 @@ std::string npyBytes(const std::vector<double>& values, const std::vector<size_t
     const auto length = static_cast<uint16_t>(header.size());
     bytes.append(reinterpret_cast<const char*>(&length), 2);
     bytes += header;
-    const std::vector<float> singles(values.begin(), values.end());
-    bytes.append(reinterpret_cast<const char*>(singles.data()), singles.size() * sizeof(float));
+    bytes += unsignedInteger ? elementBytes<uint32_t>(values) : signedInteger ? elementBytes<int32_t>(values) : elementBytes<float>(values);
     return bytes;
 }
 
@@ -115,7 +128,7 @@ std::vector<double> readValues(const std::filesystem::path& path, const vulkan::
 
 std::string encodeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format,
                          const std::vector<double>& values, const std::vector<size_t>& shape) {
-    if (isNpy(path)) return npyBytes(values, shape);
+    if (isNpy(path)) return npyBytes(values, shape, format);
     std::string bytes(values.size() * format.bytesPerChannel, '\0');
     vulkan::encodeTexels(format, values, std::as_writable_bytes(std::span(bytes.data(), bytes.size())));
     return bytes;

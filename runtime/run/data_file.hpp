@@ -15,8 +15,8 @@ namespace iblkit::run {
 std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format);
 std::vector<double> readValues(const std::filesystem::path& path, const vulkan::TexelFormat& format, size_t expectedCount);
 
-// The bytes of a data file: .npy, float32 with the given shape; anything else, raw data in the
-// resource's format.
+// The bytes of a data file: .npy with the given shape, uint32 or int32 for an integer format and
+// float32 for the others; anything else, raw data in the resource's format.
 std::string encodeValues(const std::filesystem::path& path, const vulkan::TexelFormat& format,
                          const std::vector<double>& values, const std::vector<size_t>& shape);
 

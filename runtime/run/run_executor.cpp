@@ -148,6 +148,33 @@ private:
         std::vector<std::filesystem::path> saves;
         for (const auto& [name, path] : spec_.saves) saves.push_back(path);
         files::requireDistinctOutputs(saves, inputFiles()); // before any device work: nothing is lost
+        checkGivenValues();
+    }
+
+    // The values the run file gives an integer resource, and expects of it, must be its integers
+    // (2^32 would wrap, 1.5 be cut): checked before anything is made. A data file's are checked
+    // when it is read.
+    void checkGivenValues() const {
+        const auto formatOf = [&](const std::string& name) -> const vulkan::TexelFormat* {
+            const auto resource = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
+            if (resource == spec_.resources.end()) return nullptr;
+            if (resource->kind == "buffer") return &bufferFormat(*resource);
+            if (resource->kind == "sampler" || resource->kind == "cbuffer") return nullptr;
+            try {
+                return &vulkan::texelFormatNamed(resource->format);
+            } catch (const vulkan::VulkanError&) {
+                return nullptr; // named with its key when the image is made
+            }
+        };
+        const auto check = [&](const ValueSource& source, const std::string& name, const std::string& where) {
+            if (const auto* format = formatOf(name)) {
+                requireFormatValues(source.values, *format, where + ".values");
+                requireFormatValues(source.fill, *format, where + ".fill");
+            }
+        };
+        for (const auto& resource : spec_.resources) check(resource.initial, resource.name, "resources." + resource.name);
+        for (size_t i = 0; i < spec_.expectations.size(); ++i)
+            check(spec_.expectations[i].expected, spec_.expectations[i].resource, "expect[" + std::to_string(i) + "]");
     }
 
     // What the run reads: a save must be none of them.
@@ -167,14 +194,13 @@ private:
         if (!source.values.empty()) {
             if (source.values.size() != count)
                 fail(where + ".values: " + std::to_string(source.values.size()) + " values for " + std::to_string(count));
-            return requireFormatValues(source.values, format, where + ".values");
+            return source.values;
         }
         std::vector<double> values(count, 0.0);
         if (!source.fill.empty()) {
             if (source.fill.size() != 1 && source.fill.size() != channels)
                 fail(where + ".fill: " + std::to_string(source.fill.size()) + " numbers for " + std::to_string(channels) +
                      " channels");
-            requireFormatValues(source.fill, format, where + ".fill");
             for (size_t i = 0; i < count; ++i) values[i] = source.fill[source.fill.size() == 1 ? 0 : i % channels];
         }
         return values;

@@ -32,8 +32,10 @@ MemberType parseType(const std::string& block, const compiler::BlockMember& memb
     return {};
 }
 
-// A value the member's type cannot hold is refused: casting -1 or 1e20 to a uint is undefined.
-void writeComponent(const std::string& scalar, double value, std::byte* at, const std::string& where) {
+} // namespace
+
+// A value the type cannot hold is refused: casting -1 or 1e20 to a uint is undefined.
+void writeScalar(const std::string& scalar, double value, std::byte* at, const std::string& where) {
     const auto refuse = [&](const char* why) {
         char text[32];
         std::snprintf(text, sizeof text, "%g", value);
@@ -59,7 +61,6 @@ void writeComponent(const std::string& scalar, double value, std::byte* at, cons
     }
 }
 
-} // namespace
 
 std::vector<std::byte> packBlock(const std::string& blockName, const std::vector<compiler::BlockMember>& members,
                                  uint32_t size, const std::map<std::string, std::vector<double>>& values) {
@@ -76,7 +77,7 @@ std::vector<std::byte> packBlock(const std::string& blockName, const std::vector
             throw VulkanError(blockName + "." + name + " is a " + member->type + ": it takes " +
                               std::to_string(type.components) + " value(s), not " + std::to_string(components.size()));
         for (uint32_t i = 0; i < type.components; ++i)
-            writeComponent(type.scalar, components[i], bytes.data() + member->offset + 4 * i, blockName + "." + name);
+            writeScalar(type.scalar, components[i], bytes.data() + member->offset + 4 * i, blockName + "." + name);
     }
     return bytes;
 }

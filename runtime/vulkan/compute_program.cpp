@@ -1,5 +1,6 @@
 #include "compute_program.hpp"
 
+#include "block_writer.hpp"
 #include "dispatch_regions.hpp"
 #include "timed_submission.hpp"
 #include "vulkan_error.hpp"
@@ -34,16 +35,8 @@ std::vector<std::byte> specializationBytes(const compiler::ShaderReflection& ref
         if (constant == reflection.specializationConstants.end())
             throw VulkanError("the shader has no specialization constant '" + name + "'");
         std::byte word[4];
-        if (constant->type == "float") {
-            const float f = static_cast<float>(value);
-            std::memcpy(word, &f, 4);
-        } else if (constant->type == "int") {
-            const auto i = static_cast<int32_t>(value);
-            std::memcpy(word, &i, 4);
-        } else {
-            const auto u = static_cast<uint32_t>(value);
-            std::memcpy(word, &u, 4);
-        }
+        writeScalar(constant->type == "float" || constant->type == "int" ? constant->type : "uint", value, word,
+                    "specialization constant '" + name + "'");
         entries.emplace_back(constant->constantId, static_cast<uint32_t>(bytes.size()), 4);
         bytes.insert(bytes.end(), word, word + 4);
     }

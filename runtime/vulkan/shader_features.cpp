@@ -5,20 +5,23 @@
 namespace iblkit::vulkan {
 
 ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, bool hasFloat16Int8Extension) {
-    const auto chain = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures,
-                                           vk::PhysicalDeviceShaderFloat16Int8Features>();
+    // The float16/int8 structure is asked about only where the device has its extension.
+    const auto chain = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures>();
     const auto& core = chain.get<vk::PhysicalDeviceFeatures2>().features;
     const auto& storage = chain.get<vk::PhysicalDevice16BitStorageFeatures>();
-    const auto& arithmetic = chain.get<vk::PhysicalDeviceShaderFloat16Int8Features>();
     ShaderFeatures features;
     features.float64 = core.shaderFloat64;
     features.int64 = core.shaderInt64;
     features.int16 = core.shaderInt16;
-    features.float16 = hasFloat16Int8Extension && arithmetic.shaderFloat16;
-    features.int8 = hasFloat16Int8Extension && arithmetic.shaderInt8;
     features.storageBuffer16 = storage.storageBuffer16BitAccess;
     features.uniformBuffer16 = storage.uniformAndStorageBuffer16BitAccess;
     features.pushConstant16 = storage.storagePushConstant16;
+    if (hasFloat16Int8Extension) {
+        const auto withArithmetic = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceShaderFloat16Int8Features>();
+        const auto& arithmetic = withArithmetic.get<vk::PhysicalDeviceShaderFloat16Int8Features>();
+        features.float16 = arithmetic.shaderFloat16;
+        features.int8 = arithmetic.shaderInt8;
+    }
     return features;
 }
 

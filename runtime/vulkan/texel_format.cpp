@@ -56,9 +56,10 @@ double decodeOne(const TexelFormat& format, const std::byte* bytes) {
     return 0;
 }
 
-// Integers out of the format's range are clamped (callers that take values from users refuse
-// them first: integerValueProblem).
+// Integers out of the format's range are clamped, and NaN is 0 (callers that take values from
+// users refuse them first: integerValueProblem).
 void encodeOne(const TexelFormat& format, double value, std::byte* bytes) {
+    if (std::isnan(value) && format.kind != ComponentKind::Float) value = 0; // casting NaN to an integer is undefined
     switch (format.kind) {
     case ComponentKind::Float:
         if (format.bytesPerChannel == 2) {

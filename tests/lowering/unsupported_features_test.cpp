@@ -55,6 +55,18 @@ TEST(UnsupportedFeatures, AnIntrinsicTheShaderDefinesItselfIsItsOwn) {
     EXPECT_EQ(errorOf("uint pack_u8(uint4 v) { return v.x | v.y << 8 | v.z << 16 | v.w << 24; }\n"
                       "uint f() { return pack_u8(uint4(1, 2, 3, 4)); }"),
               "(no error)");
+    EXPECT_EQ(errorOf("float dot2add(half2 a, half2 b, float c);\nfloat f() { return 1; }"),
+              "a.hlsl:1:7: error: the Shader Model 6.4 intrinsic 'dot2add' is not supported by glslang's HLSL frontend: "
+              "write the dot product")
+        << "a declaration without a body defines nothing";
+}
+
+TEST(UnsupportedFeatures, NoUseOfANameLooksLikeItsDefinition) {
+    EXPECT_NE(errorOf("static const int64_t K = 1;").find("'int64_t' is not supported"), std::string::npos);
+    EXPECT_NE(errorOf("bool f(float n) { return n > dot2add(half2(1, 2), half2(3, 4), 1.0); }").find("'dot2add'"),
+              std::string::npos);
+    EXPECT_NE(errorOf("int64_t int64_t(int64_t x) { return x; }").find("'int64_t' is not supported"), std::string::npos)
+        << "a type is never the shader's own";
 }
 
 TEST(LoweringEdits, EachPassThatChangedTheShaderIsNamed) {

@@ -14,6 +14,8 @@ std::string errorOf(const std::string& manifest) {
     folder.write("Shader.hlsl", "[numthreads(1, 1, 1)] void main() {}\n");
     folder.write("Run.hlsl", "[numthreads(1, 1, 1)] void main() {}\n");
     folder.write("Run.run.json", R"({"shader": "Run.hlsl", "dispatch": {"threads": [1, 1, 1]}})");
+    folder.write("Other.hlsl", "[numthreads(1, 1, 1)] void main() {}\n");
+    folder.write("Other.run.json", R"({"shader": "Shader.hlsl", "dispatch": {"threads": [1, 1, 1]}})");
     folder.write("corpus.json", manifest);
     try {
         readCorpusManifest(folder.path());
@@ -41,6 +43,10 @@ TEST(CorpusManifest, AGoodManifestIsRead) {
 
 TEST(CorpusManifest, EachProblemIsNamed) {
     EXPECT_NE(errorOf("{").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"features": [{"id": "f", "group": "sm5", "feature": "x", "shader": "Other.hlsl"}]})")
+                  .find("Other.run.json: runs"),
+              std::string::npos)
+        << "a run file that runs another shader";
     EXPECT_NE(errorOf(withFeature(R"(, "kit": ["magic"])")).find("'magic' is not one of the kit's edits"), std::string::npos);
     EXPECT_NE(errorOf(withFeature(R"(, "refused_forms": ["spirv"])")).find("'spirv' is not a form"), std::string::npos);
     EXPECT_NE(errorOf(withFeature(R"(, "colour": 1)")).find("colour"), std::string::npos);
@@ -53,6 +59,11 @@ TEST(CorpusManifest, EachProblemIsNamed) {
                          "compile": {"Run.hlsl": {"stage": "frag"}}})")
                   .find("a shader with a run file is compiled as its run file says"),
               std::string::npos);
+    EXPECT_NE(errorOf(R"({"features": [{"id": "f", "group": "sm5", "feature": "x", "shader": "Shader.hlsl"},
+                                       {"id": "f", "group": "sm5", "feature": "y", "shader": "Shader.hlsl"}]})")
+                  .find("features[1].id: 'f' is another feature's id too"),
+              std::string::npos);
+    EXPECT_NE(errorOf(withFeature(R"(, "error": "refused", "kit": ["enums"])")).find("a refused feature"), std::string::npos);
     EXPECT_NE(errorOf(withFeature("") .substr(0, withFeature("").size() - 1) + R"(, "compile": {"Other.hlsl": {}}})")
                   .find("names a shader no feature uses"),
               std::string::npos);

@@ -123,6 +123,17 @@ TEST_F(RunFiles, ValuesOutOfTypeOrRangeAreRefusedWithTheirKey) {
     }
 }
 
+TEST_F(RunFiles, IntegerNpyFilesHoldEveryThirtyTwoBitValueExactly) {
+    for (const char* name : {"R32_UINT", "R32_SINT"}) {
+        const auto& format = vulkan::texelFormatNamed(name);
+        const std::vector<double> values = format.kind == vulkan::ComponentKind::UInt
+                                               ? std::vector<double>{16777217, 4294967294.0, 0}
+                                               : std::vector<double>{-16777217, 2147483647, -2147483648.0};
+        files::writeFileAtomically(folder / "a.npy", encodeValues(folder / "a.npy", format, values, {3}));
+        EXPECT_EQ(readValues(folder / "a.npy", format, 3), values) << name;
+    }
+}
+
 TEST_F(RunFiles, NpyFilesRoundTripAndRawFilesMustHaveTheRightSize) {
     const auto& format = vulkan::texelFormatNamed("R16G16_SFLOAT");
     const std::vector<double> values = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};

@@ -4,6 +4,7 @@
 #include "corpus_run.hpp"
 #include "porting_markdown.hpp"
 #include "run_command.hpp"
+#include "vulkan_context.hpp"
 
 #include <fmt/core.h>
 
@@ -29,6 +30,11 @@ void addPortingCommand(CLI::App& app) {
         run::RunOptions options;
         options.device = arguments->device;
         options.validation = true;
+        // A missing device or validation layer is one line here, not a failed run per feature.
+        vulkan::ContextOptions probe;
+        probe.device = options.device;
+        probe.validation = options.validation;
+        vulkan::VulkanContext{probe};
         const auto results = porting::runCorpus(manifest, options);
         for (const auto& outcome : results.features) {
             fmt::print("{} {} ({})\n", outcome.mismatches.empty() ? "PASS" : "FAIL", outcome.feature.id,
