@@ -11,7 +11,7 @@ readonly IBLKIT_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
   libegl-dev libgl-dev libgl1-mesa-dri
-  libopenexr-dev libstb-dev libssl-dev
+  libopenexr-dev libstb-dev libssl-dev libtinygltf-dev
   python3-matplotlib
   ${IBLKIT_EXTRA_PACKAGES[@]+"${IBLKIT_EXTRA_PACKAGES[@]}"}
 )

@@ -6,6 +6,7 @@
 #include "bake_kernels.hpp"
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
+#include "bake_plan.hpp"
 #include "environment_input.hpp"
 #include "float_image.hpp"
 #include "gpu_steps.hpp"
@@ -86,32 +87,39 @@ BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image&
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     const auto started = Clock::now();
     validateSettings(settings);
+    // A scene that cannot be read fails before any device work.
+    const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene)) : std::nullopt;
     BakeDirectory directory(settings.outputDir, settings.environment);
 
     progress.begin("load");
     const vulkan::VulkanContext context(settings.context);
-    BakeKernels kernels(context, settings);
+    BakeKernels kernels(context, settings, neededOutputs(scene));
     const auto input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
     const uint32_t size = resolvedSize(settings, input.cubeSize);
     if (!std::has_single_bit(size))
         throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));
     const uint32_t mips = resolvedMips(settings, size);
     checkMemory(context, settings, input, size);
+    const auto plan = planBake(settings, size, scene);
     progress.end();
 
     auto source = buildSourceCube(context, input, size, progress);
-    auto specular = prefilterSpecular(context, source, mips, kernels.specular(), progress);
-    auto lut = integrateBrdfLut(context, settings.lutSize, kernels.lut(), progress);
-    auto irradiance = computeIrradiance(context, kernels.irradiance(), source, settings.irradianceSize, progress);
+    std::vector<bool> prefiltered;
+    for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
+    auto specular = prefilterSpecular(context, source, prefiltered, kernels.specular(), progress);
+    auto lut = plan.lut ? integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress) : blankBrdfLut(context);
+    auto irradiance =
+        computeIrradiance(context, kernels.irradiance(), source, settings.irradianceSize, progress, plan.irradiance);
     const float exposure = previewExposure(irradiance);
     const auto preview = renderPreview(context, kernels.preview(), specular, irradiance.cube, lut, exposure, progress);
 
     progress.begin("write");
     const auto lutFormat =
         settings.lutFormat == LutFormat::Rg16Float ? image_io::PixelFormat::Rg16Float : image_io::PixelFormat::Rg32Float;
-    std::vector<BakedTexture> textures{download(context, specular, "specular", image_io::PixelFormat::Rgba16Float),
-                                       download(context, lut, "brdf_lut", lutFormat),
-                                       download(context, irradiance.cube, "irradiance", image_io::PixelFormat::Rgba16Float)};
+    std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
+    if (plan.specular) textures.push_back(download(context, specular, "specular", image_io::PixelFormat::Rgba16Float));
+    if (plan.lut) textures.push_back(download(context, lut, "brdf_lut", lutFormat));
+    if (plan.irradiance) textures.push_back(download(context, irradiance.cube, "irradiance", image_io::PixelFormat::Rgba16Float));
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));
@@ -124,7 +132,7 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     files.push_back({"preview.png", sha256OfFile(png), size_t(std::filesystem::file_size(png))});
 
     auto manifest = bakeManifest({toolVersion, context.deviceInfo().name, &input, &settings, size, mips, &irradiance,
-                                  &clamps, exposure});
+                                  &clamps, exposure, &plan});
     manifest["files"] = filesJson(files);
     const std::string manifestText = manifest.dump(2) + "\n";
     files.push_back(writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText))));

@@ -2,17 +2,17 @@
 
 namespace iblkit::bake {
 
-BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings) {
+BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs) {
     // Two threads for two cores, each in the order the bake needs its kernels.
     specularFuture_ = std::async(std::launch::async, [&context, method = settings.specularMethod,
-                                                      samples = resolvedSamples(settings)] {
-        auto specular = std::make_unique<kernels::SpecularMethod>(context, method, samples);
+                                                      samples = resolvedSamples(settings), needed = outputs.specular] {
+        auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples) : nullptr;
         auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
         return Specular{std::move(specular), std::move(preview)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, method = settings.lutMethod,
-                                                 count = resolvedLutSamples(settings)] {
-        auto lut = std::make_unique<kernels::LutMethod>(context, method, count);
+                                                 count = resolvedLutSamples(settings), needed = outputs.lut] {
+        auto lut = needed ? std::make_unique<kernels::LutMethod>(context, method, count) : nullptr;
         return Lut{std::move(lut), std::make_unique<IrradianceKernels>(context)};
     });
 }
@@ -27,9 +27,9 @@ BakeKernels::Lut& BakeKernels::lutReady() {
     return *lut_;
 }
 
-kernels::SpecularMethod& BakeKernels::specular() { return *specularReady().method; }
+kernels::SpecularMethod* BakeKernels::specular() { return specularReady().method.get(); }
 kernels::Kernel& BakeKernels::preview() { return *specularReady().preview; }
-kernels::LutMethod& BakeKernels::lut() { return *lutReady().method; }
+kernels::LutMethod* BakeKernels::lut() { return lutReady().method.get(); }
 IrradianceKernels& BakeKernels::irradiance() { return *lutReady().irradiance; }
 
 } // namespace iblkit::bake

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bake_plan.hpp"
 #include "bake_settings.hpp"
 #include "gpu_steps.hpp"
 #include "kernels/kernel.hpp"
@@ -15,14 +16,15 @@ namespace iblkit::bake {
 // Every kernel a bake runs after its source cube, compiled and made on two worker threads while
 // the input loads and the source cube is built. Measured on lavapipe, the compiles sat between
 // the dispatches otherwise: 55 ms for the quadrature grid's node kernel alone, about 150 ms in all.
-// Each getter waits for its kernels; the destructor waits for both threads.
+// Each getter waits for its kernels; the destructor waits for both threads. The prefilter and the
+// LUT are compiled only where `outputs` needs them: their getters give null otherwise.
 class BakeKernels {
 public:
-    BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings);
+    BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs = {});
 
-    kernels::SpecularMethod& specular();
+    kernels::SpecularMethod* specular();
     kernels::Kernel& preview();
-    kernels::LutMethod& lut();
+    kernels::LutMethod* lut();
     IrradianceKernels& irradiance();
 
 private:

@@ -208,19 +208,43 @@ json halfRangeJson(const std::vector<HalfRangeClamp>& clamps, const BakeSettings
 
 } // namespace
 
+// The specular entry as the plan made it: the prefiltered mips, and the mips no material reads,
+// filled with the source's own.
+json plannedSpecularJson(const ManifestFacts& facts) {
+    json specular = specularJson(facts);
+    json prefiltered = json::array(), filled = json::array();
+    for (const auto& mip : facts.plan->mips) (mip.needed || mip.mip == 0 ? prefiltered : filled).push_back(mip.mip);
+    specular["prefiltered_mips"] = prefiltered;
+    if (!filled.empty())
+        specular["filled_mips"] = {{"mips", filled},
+                                   {"with", "the source cube's own mip (2x2 means of mip 0): loadable, not prefiltered, "
+                                            "since no material of the scene reads it"}};
+    return specular;
+}
+
+json skippedJson(const std::string& why) { return {{"file", nullptr}, {"skipped", why}}; }
+
 json bakeManifest(const ManifestFacts& facts) {
     const auto& s = *facts.settings;
-    return {{"generator", "iblkit"},
-            {"version", facts.toolVersion},
-            {"manifest_format", 1},
-            {"device", facts.device},
-            {"input", inputJson(*facts.input, s)},
-            {"settings", settingsJson(facts)},
-            {"specular", specularJson(facts)},
-            {"brdf_lut", lutJson(s)},
-            {"irradiance", irradianceJson(facts)},
-            {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
-            {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
+    const auto& plan = *facts.plan;
+    json irradiance = irradianceJson(facts);
+    if (!plan.irradiance) {
+        irradiance = skippedJson("every lit material of the scene is all metal (or none is lit)");
+        irradiance["sh"] = irradianceJson(facts).at("sh");
+    }
+    json manifest = {{"generator", "iblkit"},
+                     {"version", facts.toolVersion},
+                     {"manifest_format", 1},
+                     {"device", facts.device},
+                     {"input", inputJson(*facts.input, s)},
+                     {"settings", settingsJson(facts)},
+                     {"specular", plan.specular ? plannedSpecularJson(facts) : skippedJson("no material of the scene is lit")},
+                     {"brdf_lut", plan.lut ? lutJson(s) : skippedJson("no material of the scene is lit")},
+                     {"irradiance", irradiance},
+                     {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
+                     {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
+    if (plan.scene) manifest["plan"] = planJson(plan);
+    return manifest;
 }
 
 json filesJson(const std::vector<WrittenFile>& files) {

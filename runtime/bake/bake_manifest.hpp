@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bake_outputs.hpp"
+#include "bake_plan.hpp"
 #include "bake_settings.hpp"
 #include "environment_input.hpp"
 #include "gpu_steps.hpp"
@@ -19,6 +20,7 @@ struct ManifestFacts {
     const Irradiance* irradiance;
     const std::vector<HalfRangeClamp>* halfRangeClamps;
     float previewExposure;
+    const BakePlan* plan; // what was computed: every output and mip, without a scene
 };
 
 // manifest.json without its "files" list (added once every file is written).

@@ -83,23 +83,35 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
     return cube;
 }
 
-vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                kernels::SpecularMethod& prefilter, BakeProgress& progress) {
+vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
+                                kernels::SpecularMethod* prefilter, BakeProgress& progress) {
     progress.begin("prefilter");
-    const uint32_t size = source.desc().width;
+    const uint32_t size = source.desc().width, mips = uint32_t(prefiltered.size());
     auto specular = makeCube(context, "Specular", size, mips);
     specular.copyMipFrom(context, source, 0);
     const vulkan::Sampler linear(context, {});
+    const auto convolved = [&](uint32_t mip) { return prefilter && prefiltered[mip]; };
     double work = 0, done = 0; // texels still to convolve, for the percentage
-    for (uint32_t mip = 1; mip < mips; ++mip) work += std::pow(double(specular.mipWidth(mip)), 2);
+    for (uint32_t mip = 1; mip < mips; ++mip)
+        if (convolved(mip)) work += std::pow(double(specular.mipWidth(mip)), 2);
     for (uint32_t mip = 1; mip < mips; ++mip) {
+        if (!convolved(mip)) {
+            specular.copyMipFrom(context, source, mip);
+            continue;
+        }
         progress.advance(done / work, fmt::format("mip {} of {}", mip, mips - 1));
-        prefilter.run(source, linear, specular, mip, roughnessOfMip(mip, mips));
-        progress.addDeviceTime(prefilter.takeTotals().deviceMilliseconds);
+        prefilter->run(source, linear, specular, mip, roughnessOfMip(mip, mips));
+        progress.addDeviceTime(prefilter->takeTotals().deviceMilliseconds);
         done += std::pow(double(specular.mipWidth(mip)), 2);
     }
     progress.end();
     return specular;
+}
+
+vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context) {
+    vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), 1, 1, 1, 1, false, true});
+    lut.upload(context, std::vector<float>(2, 0.f));
+    return lut;
 }
 
 vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, kernels::LutMethod& integrator,
@@ -116,7 +128,7 @@ IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
     : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
 
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
-                             uint32_t size, BakeProgress& progress) {
+                             uint32_t size, BakeProgress& progress, bool withCube) {
     progress.begin("irradiance");
     Irradiance result{makeCube(context, "Irradiance", size, 1), {}, 0, 0, 0};
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
@@ -125,11 +137,16 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     result.shRadiance = projection.radiance;
     result.solidAngle = projection.solidAngle;
     result.shSourceSize = source.mipWidth(shMip);
-    progress.advance(0.1, "cube");
     const uint32_t mip = firstMipAtMost(source.desc().width, kIrradianceSourceLimit);
+    result.cubeSourceSize = source.mipWidth(mip);
+    if (!withCube) {
+        result.cube.upload(context, std::vector<float>(result.cube.valueCount(), 0.f));
+        progress.end();
+        return result;
+    }
+    progress.advance(0.1, "cube");
     kernels::runIrradianceCube(steps.cube, source, result.cube, mip);
     report(steps.cube, progress);
-    result.cubeSourceSize = source.mipWidth(mip);
     progress.end();
     return result;
 }

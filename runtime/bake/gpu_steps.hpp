@@ -22,9 +22,13 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
                               BakeProgress& progress);
 
 // The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by `prefilter` at
-// roughnessOfMip(m, mips).
-vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, uint32_t mips,
-                                kernels::SpecularMethod& prefilter, BakeProgress& progress);
+// roughnessOfMip(m, mips) where prefiltered[m], and otherwise filled with the source's own mip
+// m (its 2x2 means: cheap, loadable, not prefiltered), as it is everywhere without a prefilter.
+vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
+                                kernels::SpecularMethod* prefilter, BakeProgress& progress);
+
+// A 1x1 LUT of zeros, for the preview of a bake that needs no LUT.
+vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context);
 
 // The LUT over size x size by `integrator`, stored as R32G32_SFLOAT (the host rounds to 16 bits).
 vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, kernels::LutMethod& integrator,
@@ -54,8 +58,10 @@ struct IrradianceKernels {
     kernels::Kernel project, cube;
 };
 
+// The SH projection always (the manifest's coefficients and the preview's exposure); the cube
+// only `withCube`, else it is zeros.
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
-                             uint32_t size, BakeProgress& progress);
+                             uint32_t size, BakeProgress& progress, bool withCube = true);
 
 struct Preview {
     uint32_t width, height;

@@ -27,13 +27,17 @@ TEST(BakeKernels, MakesTheMethodsTheSettingsNameCleanly) {
         chunked.specularMethod = chunked.lutMethod = "document";
         chunked.samples = chunked.lutSamples = 131072;
         BakeKernels documents(context, chunked);
-        EXPECT_GT(documents.specular().chunkSamples(), 0u);
-        EXPECT_GT(documents.lut().chunkSamples(), 0u);
+        EXPECT_GT(documents.specular()->chunkSamples(), 0u);
+        EXPECT_GT(documents.lut()->chunkSamples(), 0u);
         BakeKernels defaults(context, BakeSettings{});
-        EXPECT_EQ(defaults.specular().chunkSamples(), 0u);
-        EXPECT_EQ(defaults.lut().chunkSamples(), 0u);
+        EXPECT_EQ(defaults.specular()->chunkSamples(), 0u);
+        EXPECT_EQ(defaults.lut()->chunkSamples(), 0u);
         EXPECT_NO_THROW(defaults.irradiance());
         EXPECT_NO_THROW(defaults.preview());
+        BakeKernels unlitScene(context, BakeSettings{}, NeededOutputs{false, false, false});
+        EXPECT_EQ(unlitScene.specular(), nullptr) << "no lit material: no prefilter compiled";
+        EXPECT_EQ(unlitScene.lut(), nullptr);
+        EXPECT_NO_THROW(unlitScene.preview());
     }
     for (const auto& message : log->messages()) ADD_FAILURE() << "validation: " << message;
 }

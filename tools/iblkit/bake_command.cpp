@@ -2,6 +2,7 @@
 
 #include "bake.hpp"
 #include "bake_manifest.hpp"
+#include "bake_options.hpp"
 #include "file_names.hpp"
 #include "run_command.hpp"
 #include "signal_cleanup.hpp"
@@ -69,32 +70,9 @@ void addBakeCommand(CLI::App& app) {
     command->add_option("ENV", arguments->environment,
                         "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
     command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the bake succeeds)")->required();
-    command->add_option("--size", s.size, "Cube face size, a power of two (default 256)");
-    command->add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
-    command->add_option("--method", s.specularMethod,
-                        "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
-                        "table (filtered importance sampling from a host sample table), filtered (the same, per "
-                        "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
-                        "the lobe), mipchain (the source's own mips where the lobe is narrow, the pyramid's ring "
-                        "where it is wide: the cheapest) or document (the documents' importance sampling)");
-    command->add_option("--samples", s.samples,
-                        "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
-                        "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "
-                        "(default 1024, 128 for convolution, 1 for pyramid and mipchain)");
-    command->add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
-    command->add_option("--lut-method", s.lutMethod,
-                        "BRDF LUT method: quadrature-grid (default; the quadrature on a grid of nodes, interpolated), "
-                        "quadrature (a deterministic quadrature at every texel, exact in azimuth), fit (a polynomial "
-                        "fitted to the converged LUT) or document (the documents' importance sampling)");
-    command->add_option("--lut-samples", s.lutSamples,
-                        fmt::format("BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, "
-                                    "for the quadrature grid its nodes per side, for the fit its degree (default {} for "
-                                    "document, {} for quadrature, {} for quadrature-grid, {} for fit)",
-                                    bake::kDocumentSamples, kernels::kDefaultQuadratureNodes, kernels::kDefaultLutGrid,
-                                    bake::kDefaultLutFitDegree));
-    command->add_option("--lut-format", arguments->lutFormat, "rg16f (default) or rg32f")
-        ->check(CLI::IsMember({"rg16f", "rg32f"}));
-    command->add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
+    addBakeSettingOptions(*command, s, arguments->lutFormat);
+    command->add_option("--scene", s.scene,
+                        "A glTF scene (.gltf or .glb): bake only what its materials need (iblkit plan SCENE shows what)");
     command->add_flag("--dds", s.dds, "Also write .dds files");
     command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");

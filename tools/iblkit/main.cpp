@@ -7,6 +7,7 @@
 #include "stress_command.hpp"
 #include "devices_command.hpp"
 #include "lut_fit_command.hpp"
+#include "plan_command.hpp"
 #include "porting_command.hpp"
 #include "run_command.hpp"
 
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addConsistencyCommand(app);
     iblkit::cli::addStressCommand(app);
     iblkit::cli::addBakeCommand(app);
+    iblkit::cli::addPlanCommand(app);
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);
     iblkit::cli::addPortingCommand(app);

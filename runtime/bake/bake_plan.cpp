@@ -1,0 +1,175 @@
+#include "bake_plan.hpp"
+
+#include "kernels/kernel_table.hpp"
+#include "kernels/specular_method.hpp"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace iblkit::bake {
+namespace {
+
+struct SceneUse {
+    bool anyLit = false, anyTransmission = false, anyNonMetal = false;
+    scene::ValueRange roughness;               // the hull of every range below
+    std::vector<scene::ValueRange> roughnesses; // each lit material's, and each clearcoat's: gaps between them are skipped
+    size_t unlit = 0;
+};
+
+SceneUse useOf(const std::optional<scene::SceneMaterials>& scene) {
+    SceneUse use;
+    if (!scene) return {true, false, true, scene::ValueRange::of(0, 1), {scene::ValueRange::of(0, 1)}, 0};
+    for (const auto& material : scene->materials) {
+        if (material.unlit) {
+            ++use.unlit;
+            continue;
+        }
+        use.anyLit = true;
+        use.anyTransmission = use.anyTransmission || material.transmission;
+        use.anyNonMetal = use.anyNonMetal || material.metalness.min < 1;
+        for (const auto& range : {material.roughness, material.clearcoatRoughness})
+            if (!range.empty()) {
+                use.roughness.include(range);
+                use.roughnesses.push_back(range);
+            }
+    }
+    return use;
+}
+
+// Whether a renderer reading roughness `used` touches mip m of `mips` (one step either side).
+bool bracketMeets(const scene::ValueRange& used, uint32_t mip, uint32_t mips) {
+    if (used.empty()) return false;
+    if (mips == 1) return true;
+    const double step = 1.0 / (mips - 1);
+    return used.min < (mip + 1) * step && used.max > (double(mip) - 1) * step;
+}
+
+double texelsOfChain(uint32_t size, uint32_t mips, uint32_t firstMip) {
+    double texels = 0;
+    for (uint32_t mip = firstMip; mip < mips; ++mip) texels += std::pow(double(std::max(1u, size >> mip)), 2);
+    return texels;
+}
+
+void planSpecularMips(const BakeSettings& settings, uint32_t size, const SceneUse& use, const BenchCurves& curves,
+                      BakePlan& plan) {
+    const uint32_t mips = resolvedMips(settings, size);
+    const auto curve = curves.curve("specular", settings.specularMethod, resolvedSamples(settings));
+    const uint32_t benchMips = resolvedMips(BakeSettings{}, curves.cubeSize());
+    const double benchTexels = texelsOfChain(curves.cubeSize(), benchMips, 1);
+    double neededMs = 0;
+    for (uint32_t mip = 0; mip < mips; ++mip) {
+        SpecularMipPlan mipPlan;
+        mipPlan.mip = mip;
+        mipPlan.roughness = roughnessOfMip(mip, mips);
+        mipPlan.faceSize = std::max(1u, size >> mip);
+        mipPlan.needed = plan.specular && (use.anyTransmission || std::any_of(use.roughnesses.begin(), use.roughnesses.end(),
+                                                                               [&](const auto& used) { return bracketMeets(used, mip, mips); }));
+        if (curve) {
+            // Mip 0 is the source copied; the others cost in proportion to their texels.
+            mipPlan.estimate.deviceMs = mip == 0 ? 0.0 : curve->medianDeviceMs * std::pow(double(mipPlan.faceSize), 2) / benchTexels;
+            for (const auto& [benchMip, error] : curve->worstMipError)
+                if (std::fabs(roughnessOfMip(benchMip, benchMips) - mipPlan.roughness) < 1e-6) {
+                    mipPlan.estimate.errorRms = error.first;
+                    mipPlan.estimate.errorMax = error.second;
+                }
+            if (mipPlan.needed) neededMs += *mipPlan.estimate.deviceMs;
+        }
+        plan.mips.push_back(mipPlan);
+    }
+    if (!curve) return;
+    // The error of what is baked: the worst needed mip's.
+    plan.specularEstimate.deviceMs = neededMs;
+    for (const auto& mip : plan.mips) {
+        if (!mip.needed || !mip.estimate.errorRms) continue;
+        plan.specularEstimate.errorRms = std::max(plan.specularEstimate.errorRms.value_or(0), *mip.estimate.errorRms);
+        plan.specularEstimate.errorMax = std::max(plan.specularEstimate.errorMax.value_or(0), *mip.estimate.errorMax);
+    }
+}
+
+Estimate scaledEstimate(const std::optional<MeasuredCurve>& curve, double texelRatio) {
+    if (!curve) return {};
+    return {curve->medianDeviceMs * texelRatio, curve->worstErrorRms, curve->worstErrorMax};
+}
+
+void planLut(const BakeSettings& settings, const SceneUse& use, const BenchCurves& curves, BakePlan& plan) {
+    const double n = settings.lutSize;
+    if (!use.roughness.empty()) {
+        plan.lutFirstRow = uint32_t(std::clamp(std::floor(use.roughness.min * n - 0.5), 0.0, n - 1));
+        plan.lutLastRow = uint32_t(std::clamp(std::floor(use.roughness.max * n - 0.5) + 1, 0.0, n - 1));
+    }
+    if (plan.lut)
+        plan.lutEstimate = scaledEstimate(curves.curve("lut", settings.lutMethod, resolvedLutSamples(settings)),
+                                          std::pow(n / curves.lutSize(), 2));
+}
+
+void listKernels(const BakeSettings& settings, BakePlan& plan) {
+    const auto add = [&](const std::string& name, const std::string& permutation = "") {
+        plan.kernels.push_back(permutation.empty() ? name : name + " (" + permutation + ")");
+    };
+    add(settings.environment ? "EquirectToCubeCS" : "SkyCubeCS");
+    add("DownsampleCubeCS");
+    if (plan.specular && kernels::isConvolutionMethod(settings.specularMethod)) add("ClusterCubeCS"); // its pyramids
+    for (const auto& kernel : kernels::kernelTable()) {
+        if (plan.specular && kernel.belongsTo(settings.specularMethod))
+            add(kernel.name, fmt::format("{} {}", settings.specularMethod, resolvedSamples(settings)));
+        if (plan.lut && kernel.belongsTo(settings.lutMethod))
+            add(kernel.name, fmt::format("{} {}", settings.lutMethod, resolvedLutSamples(settings)));
+    }
+    if (plan.irradiance) {
+        add("ShProjectCS");
+        add("IrradianceCubeCS");
+    }
+    add("PreviewCS");
+}
+
+void explain(const std::optional<scene::SceneMaterials>& scene, const SceneUse& use, BakePlan& plan) {
+    if (!scene) {
+        plan.reasons.push_back("no scene: every output, every mip");
+        return;
+    }
+    const size_t lit = scene->materials.size() - use.unlit;
+    plan.reasons.push_back(fmt::format("{} materials, {} lit, {} unlit", scene->materials.size(), lit, use.unlit));
+    if (!use.anyLit) plan.reasons.push_back("no lit material: no specular chain, no LUT, no irradiance");
+    else if (!use.anyNonMetal) plan.reasons.push_back("every lit material is all metal: no irradiance");
+    if (use.anyTransmission) plan.reasons.push_back("a material transmits light: the whole specular chain");
+}
+
+} // namespace
+
+NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene) {
+    const auto use = useOf(scene);
+    return {use.anyLit, use.anyNonMetal, use.anyLit};
+}
+
+BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::optional<scene::SceneMaterials>& scene,
+                  const BenchCurves& curves) {
+    const auto use = useOf(scene);
+    BakePlan plan;
+    if (scene) {
+        plan.scene = scene->file;
+        plan.unknownExtensions = scene->unknownExtensions;
+        for (const auto& material : scene->materials) {
+            for (const auto& note : material.notes) plan.notes.push_back(material.name + ": " + note);
+            for (const auto& extension : material.unknownExtensions)
+                plan.notes.push_back(material.name + ": " + extension + " is not understood: its lighting needs are not counted");
+        }
+    }
+    plan.roughness = use.roughness;
+    const auto outputs = neededOutputs(scene);
+    plan.specular = outputs.specular;
+    plan.lut = outputs.lut;
+    plan.irradiance = outputs.irradiance;
+    planSpecularMips(settings, size, use, curves, plan);
+    planLut(settings, use, curves, plan);
+    if (plan.irradiance)
+        plan.irradianceEstimate = scaledEstimate(curves.curve("irradiance", "exact-sum", 0),
+                                                 std::pow(double(settings.irradianceSize) / curves.irradianceSize(), 2));
+    listKernels(settings, plan);
+    explain(scene, use, plan);
+    return plan;
+}
+
+} // namespace iblkit::bake

@@ -1,0 +1,38 @@
+#include "bake_options.hpp"
+
+#include "kernels/lut_methods.hpp"
+
+#include <fmt/core.h>
+
+namespace iblkit::cli {
+
+void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string& lutFormat) {
+    command.add_option("--size", s.size, "Cube face size, a power of two (default 256)");
+    command.add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
+    command.add_option("--method", s.specularMethod,
+                        "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
+                        "table (filtered importance sampling from a host sample table), filtered (the same, per "
+                        "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
+                        "the lobe), mipchain (the source's own mips where the lobe is narrow, the pyramid's ring "
+                        "where it is wide: the cheapest) or document (the documents' importance sampling)");
+    command.add_option("--samples", s.samples,
+                        "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
+                        "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "
+                        "(default 1024, 128 for convolution, 1 for pyramid and mipchain)");
+    command.add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
+    command.add_option("--lut-method", s.lutMethod,
+                        "BRDF LUT method: quadrature-grid (default; the quadrature on a grid of nodes, interpolated), "
+                        "quadrature (a deterministic quadrature at every texel, exact in azimuth), fit (a polynomial "
+                        "fitted to the converged LUT) or document (the documents' importance sampling)");
+    command.add_option("--lut-samples", s.lutSamples,
+                        fmt::format("BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, "
+                                    "for the quadrature grid its nodes per side, for the fit its degree (default {} for "
+                                    "document, {} for quadrature, {} for quadrature-grid, {} for fit)",
+                                    bake::kDocumentSamples, kernels::kDefaultQuadratureNodes, kernels::kDefaultLutGrid,
+                                    bake::kDefaultLutFitDegree));
+    command.add_option("--lut-format", lutFormat, "rg16f (default) or rg32f")
+        ->check(CLI::IsMember({"rg16f", "rg32f"}));
+    command.add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
+}
+
+} // namespace iblkit::cli

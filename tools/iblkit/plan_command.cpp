@@ -1,0 +1,43 @@
+#include "plan_command.hpp"
+
+#include "bake_options.hpp"
+#include "bake_plan.hpp"
+#include "environment_input.hpp"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <memory>
+
+namespace iblkit::cli {
+
+void addPlanCommand(CLI::App& app) {
+    struct Arguments {
+        bake::BakeSettings settings;
+        std::string scene;
+        std::string environment;
+        std::string lutFormat = "rg16f";
+        bool json = false;
+    };
+    auto arguments = std::make_shared<Arguments>();
+    auto* command = app.add_subcommand("plan", "Print what a bake computes for a glTF scene's materials: the outputs, the "
+                                               "specular mips, the LUT rows, the kernels, and the estimated time and error");
+    command->add_option("SCENE", arguments->scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    command->add_option("ENV", arguments->environment, "The environment, as for bake (a cube input sets the size)");
+    addBakeSettingOptions(*command, arguments->settings, arguments->lutFormat);
+    command->add_flag("--json", arguments->json, "Print the plan as JSON");
+    command->callback([arguments] {
+        auto settings = arguments->settings;
+        settings.outputDir = "plan"; // never written: validateSettings wants one
+        if (!arguments->environment.empty()) settings.environment = arguments->environment;
+        bake::validateSettings(settings);
+        uint32_t inputCubeSize = 0;
+        if (settings.environment) inputCubeSize = bake::loadEnvironment(*settings.environment, {}).cubeSize;
+        const auto size = bake::resolvedSize(settings, inputCubeSize);
+        const auto plan = bake::planBake(settings, size, scene::readSceneMaterials(arguments->scene));
+        if (arguments->json) fmt::print("{}\n", bake::planJson(plan).dump(2));
+        else fmt::print("{}", bake::planText(plan));
+    });
+}
+
+} // namespace iblkit::cli
