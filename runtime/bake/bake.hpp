@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bake_outputs.hpp"
+#include "content_store.hpp"
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
 #include "texel_checks.hpp"
@@ -24,10 +25,13 @@ struct BakeSummary {
     std::vector<HalfRangeClamp> halfRangeClamps; // the textures clamped to the half range, and what it cost
     size_t sanitizedTexels;               // NaN/Inf input texels set to 0 (--sanitize)
     NegativeTexels negativeTexels;        // input texels of negative radiance, clamped to 0
+    cache::ContentStore::Counts cache;    // the cache's hits, misses and damaged entries (zeros without a cache)
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,
-// irradiance.ktx2, preview.png and manifest.json (and .dds / exr/ when asked), all or nothing.
+// irradiance.ktx2, preview.png and manifest.json (and .dds / exr/ when asked), all or nothing;
+// with settings.scene, only what its materials need (bake_plan.hpp); with settings.cache, each
+// output the cache holds is taken from it (baked_outputs.hpp).
 // Throws BakeError, image_io::ImageError, compiler::CompileError or vulkan::VulkanError.
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress);
 

@@ -70,7 +70,7 @@ void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, st
         if (listed == files.end())
             throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
                             ", which no earlier bake wrote (its manifest.json does not list it)");
-        if (sha256OfFile(it->path()) != listed->second)
+        if (cache::sha256OfFile(it->path()) != listed->second)
             throw BakeError("refusing to replace " + quoted(target) + ": " + quoted(fs::path(name)) +
                             " changed since the earlier bake wrote it");
     }

@@ -17,7 +17,7 @@ struct ManifestFacts {
     const BakeSettings* settings;
     uint32_t size;
     uint32_t mips;
-    const Irradiance* irradiance;
+    const IrradianceSh* irradiance;
     const std::vector<HalfRangeClamp>* halfRangeClamps;
     float previewExposure;
     const BakePlan* plan; // what was computed: every output and mip, without a scene

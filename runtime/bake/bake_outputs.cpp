@@ -70,7 +70,7 @@ void writeFile(const fs::path& path, std::span<const std::byte> bytes) {
 WrittenFile describe(const fs::path& folder, const std::string& name) {
     std::error_code error;
     const auto bytes = fs::file_size(folder / name, error);
-    return {name, sha256OfFile(folder / name), size_t(bytes)};
+    return {name, cache::sha256OfFile(folder / name), size_t(bytes)};
 }
 
 std::vector<WrittenFile> writeExrFaces(const fs::path& folder, const BakedTexture& texture) {
@@ -118,7 +118,7 @@ std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool s
 
 WrittenFile writeBytes(const fs::path& folder, const std::string& name, std::span<const std::byte> bytes) {
     writeFile(folder / name, bytes);
-    return {name, sha256Hex(bytes), bytes.size()};
+    return {name, cache::sha256Hex(bytes), bytes.size()};
 }
 
 std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture& texture, const BakeSettings& settings,

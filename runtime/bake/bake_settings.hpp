@@ -31,6 +31,7 @@ inline constexpr uint32_t kDefaultLutFitDegree = 5;
 struct BakeSettings {
     std::optional<std::filesystem::path> environment; // empty: the built-in environment
     std::optional<std::filesystem::path> scene;       // a glTF scene: bake only what its materials need (bake_plan.hpp)
+    std::optional<std::filesystem::path> cache;       // a content store's folder (runtime/cache/); empty: no cache
     std::filesystem::path outputDir;
     std::optional<uint32_t> size;   // cube face size; default 256, or the input cube's own size
     std::optional<uint32_t> mips;   // specular mips; default: down to kSpecularFloor

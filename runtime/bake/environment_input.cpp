@@ -64,7 +64,7 @@ void checkTexels(EnvironmentInput& input, std::span<float> values, uint32_t chan
 // The input's bytes are read once: hashed for the manifest and decoded from the same copy.
 EnvironmentInput loadPanorama(const fs::path& path, const InputPolicy& policy) {
     const auto bytes = image_io::readFileBytes(path);
-    EnvironmentInput input{InputKind::Panorama, {{path, sha256Hex(bytes)}}, image_io::decodeFloatImage(bytes, path), 0, {}, 0, {}};
+    EnvironmentInput input{InputKind::Panorama, {{path, cache::sha256Hex(bytes)}}, image_io::decodeFloatImage(bytes, path), 0, {}, 0, {}};
     auto& image = input.panorama;
     if (image.width != 2 * image.height)
         throw BakeError(fmt::format("{} is {}x{}; an equirectangular panorama must be twice as wide as it is high",
@@ -105,7 +105,7 @@ EnvironmentInput loadFaces(const fs::path& folder, const InputPolicy& policy) {
         checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
         const auto rgba = image_io::rgbaValues(image);
         input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
-        input.files.push_back({path, sha256Hex(bytes)});
+        input.files.push_back({path, cache::sha256Hex(bytes)});
     }
     return input;
 }
@@ -120,7 +120,7 @@ EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
                                     image_io::vulkanFormatName(texture.format)));
     auto values = image_io::textureValues(texture);
     values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
-    EnvironmentInput input{InputKind::Cube, {{path, sha256Hex(bytes)}}, {}, texture.width, std::move(values), 0, {}};
+    EnvironmentInput input{InputKind::Cube, {{path, cache::sha256Hex(bytes)}}, {}, texture.width, std::move(values), 0, {}};
     // Face by face, so that a texel is named by its face's own column and row.
     const size_t faceValues = size_t(texture.width) * texture.height * 4;
     for (size_t face = 0; face < 6; ++face)

@@ -130,15 +130,15 @@ IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
                              uint32_t size, BakeProgress& progress, bool withCube) {
     progress.begin("irradiance");
-    Irradiance result{makeCube(context, "Irradiance", size, 1), {}, 0, 0, 0};
+    Irradiance result{makeCube(context, "Irradiance", size, 1), {}};
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
     const auto projection = kernels::runShProject(context, steps.project, source, shMip);
     report(steps.project, progress);
-    result.shRadiance = projection.radiance;
-    result.solidAngle = projection.solidAngle;
-    result.shSourceSize = source.mipWidth(shMip);
+    result.sh.shRadiance = projection.radiance;
+    result.sh.solidAngle = projection.solidAngle;
+    result.sh.shSourceSize = source.mipWidth(shMip);
     const uint32_t mip = firstMipAtMost(source.desc().width, kIrradianceSourceLimit);
-    result.cubeSourceSize = source.mipWidth(mip);
+    result.sh.cubeSourceSize = source.mipWidth(mip);
     if (!withCube) {
         result.cube.upload(context, std::vector<float>(result.cube.valueCount(), 0.f));
         progress.end();

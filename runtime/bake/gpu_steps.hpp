@@ -34,12 +34,16 @@ vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context);
 vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t size, kernels::LutMethod& integrator,
                                BakeProgress& progress);
 
+struct IrradianceSh {
+    std::array<glm::dvec3, 9> shRadiance{}; // projections of radiance on Y_lm (Common/SphericalHarmonics.fxh)
+    double solidAngle = 0;                  // the sphere's 4 pi as the projection's texels summed it
+    uint32_t shSourceSize = 0;              // the source mip each was computed from
+    uint32_t cubeSourceSize = 0;
+};
+
 struct Irradiance {
-    vulkan::Image cube;               // RGBA32F, E(n) / pi
-    std::array<glm::dvec3, 9> shRadiance; // projections of radiance on Y_lm (Common/SphericalHarmonics.fxh)
-    double solidAngle;                // the sphere's 4 pi as the projection's texels summed it
-    uint32_t shSourceSize;            // the source mip each was computed from
-    uint32_t cubeSourceSize;
+    vulkan::Image cube; // RGBA32F, E(n) / pi
+    IrradianceSh sh;
 };
 
 // The kit's kernel for `role` (a role with one kernel), compiled from the built-in hlsl/.

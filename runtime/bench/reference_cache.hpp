@@ -8,8 +8,8 @@
 
 namespace iblkit::bench {
 
-// Converged references are slow, so each is kept on disk under the SHA-256 of everything it
-// depends on. An entry is written whole (through a temporary file and a rename) or not at all.
+// Converged references are slow, so each is kept in the content store (runtime/cache/) under the
+// SHA-256 of everything it depends on.
 class ReferenceCache {
 public:
     explicit ReferenceCache(std::filesystem::path folder) : folder_(std::move(folder)) {}

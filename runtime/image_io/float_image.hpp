@@ -36,6 +36,8 @@ std::vector<float> rgbaValues(const FloatImage& image);
 void writeExr(const std::filesystem::path& path, const FloatImage& image);
 // 8-bit RGBA, rows top first, through stb_image_write.
 void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgba8);
+// The same PNG, in memory.
+std::string encodePng(uint32_t width, uint32_t height, std::span<const uint8_t> rgba8);
 
 // Every function throws ImageError, one line naming the file and the problem.
 

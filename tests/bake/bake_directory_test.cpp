@@ -30,7 +30,7 @@ void writeEarlierBake(const TempFolder& scratch, const std::string& folder,
     std::string list;
     for (const auto& [name, contents] : files) {
         const auto path = scratch.write(folder + "/" + name, contents);
-        list += std::string(list.empty() ? "" : ", ") + R"({"name": ")" + name + R"(", "sha256": ")" + sha256OfFile(path) + "\"}";
+        list += std::string(list.empty() ? "" : ", ") + R"({"name": ")" + name + R"(", "sha256": ")" + cache::sha256OfFile(path) + "\"}";
     }
     scratch.write(folder + "/manifest.json", R"({"generator": "iblkit", "files": [)" + list + "]}");
 }
@@ -147,7 +147,7 @@ bool readOnlyBakeIsRefused() {
     const auto bake = folder / "out" / "specular.ktx2";
     { std::ofstream(bake) << "old"; }
     { std::ofstream(folder / "out" / "manifest.json") << R"({"generator": "iblkit", "files": [{"name": "specular.ktx2", "sha256": ")"
-                                                      << sha256OfFile(bake) << "\"}]}"; }
+                                                      << cache::sha256OfFile(bake) << "\"}]}"; }
     fs::permissions(folder / "out", fs::perms::owner_write, fs::perm_options::remove);
     const bool refused = messageOf(folder / "out").find("is not writable") != std::string::npos;
     const bool untouched = entriesIn(folder) == 1;

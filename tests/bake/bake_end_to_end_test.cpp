@@ -111,7 +111,7 @@ TEST_F(BuiltInBake, WritesEveryFileTheManifestListsWithItsHash) {
     for (const auto& file : manifest["files"]) {
         const std::string name = file["name"];
         names.insert(name);
-        EXPECT_EQ(file["sha256"], sha256OfFile(out(name))) << name;
+        EXPECT_EQ(file["sha256"], cache::sha256OfFile(out(name))) << name;
         EXPECT_EQ(file["bytes"], fs::file_size(out(name))) << name;
     }
     for (const char* name : {"specular.ktx2", "brdf_lut.ktx2", "irradiance.ktx2", "preview.png", "specular.dds",

@@ -34,9 +34,10 @@ inline std::string radianceHdr(uint32_t width, uint32_t height, unsigned char ex
 
 class BakeCli : public ::testing::Test {
 protected:
+    // Each test bakes with a cache of its own, outside the folder a failed bake must leave as it was.
     ProcessResult iblkit(std::vector<std::string> arguments, double killAfterSeconds = 0, int killSignal = 9) const {
         arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
-        return runProcess(arguments, {}, killAfterSeconds, killSignal);
+        return runProcess(arguments, {"XDG_CACHE_HOME=" + cache.path().string()}, killAfterSeconds, killSignal);
     }
     // Small and quick: what every test but the default bake runs with.
     std::vector<std::string> small(std::vector<std::string> arguments) const {
@@ -56,6 +57,7 @@ protected:
     std::string at(const std::string& name) const { return (scratch.path() / name).string(); }
 
     TempFolder scratch;
+    TempFolder cache{"-cache"};
 };
 
 } // namespace iblkit::testing

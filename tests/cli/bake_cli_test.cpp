@@ -46,9 +46,27 @@ TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
         EXPECT_GE(step["wall_ms"].get<double>(), 0);
         EXPECT_GE(step["device_ms"].get<double>(), 0);
     }
-    EXPECT_EQ(steps, (std::vector<std::string>{"load", "source cube", "prefilter", "brdf lut", "irradiance", "preview",
-                                               "write"}));
-    EXPECT_GT(summary["steps"][2]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "device", "source cube", "prefilter", "brdf lut", "irradiance",
+                                               "preview", "write"}));
+    EXPECT_GT(summary["steps"][4]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+    EXPECT_EQ(summary["cache"]["misses"], 4);
+}
+
+TEST_F(BakeCli, ARepeatedBakeComesFromTheCacheAndNoCacheComputesEverything) {
+    ASSERT_EQ(iblkit(small({"bake", "-o", at("first")})).exitCode, 0);
+    const auto again = iblkit(small({"bake", "-o", at("again"), "--json"}));
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    const auto summary = nlohmann::json::parse(again.out);
+    std::vector<std::string> steps;
+    for (const auto& step : summary["steps"]) steps.push_back(step["name"]);
+    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "write"})) << "no device opened";
+    EXPECT_EQ(summary["cache"]["hits"], 4);
+    EXPECT_EQ(readFile(scratch.path() / "first" / "specular.ktx2"), readFile(scratch.path() / "again" / "specular.ktx2"));
+    const auto uncached = iblkit(small({"bake", "-o", at("uncached"), "--no-cache", "--json"}));
+    ASSERT_EQ(uncached.exitCode, 0) << uncached.err;
+    EXPECT_EQ(nlohmann::json::parse(uncached.out)["cache"]["hits"], 0);
+    EXPECT_EQ(readFile(scratch.path() / "first" / "specular.ktx2"), readFile(scratch.path() / "uncached" / "specular.ktx2"));
+    expectFailure(small({"bake", "-o", at("both"), "--no-cache", "--cache", at("c")}), "--cache and --no-cache");
 }
 
 // The table's count doubles per mip; the manifest says what each mip took, and both kit

@@ -1,5 +1,6 @@
 #include "run_process.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <spawn.h>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -44,7 +46,15 @@ ProcessResult runProcess(const std::vector<std::string>& command, const std::vec
     for (const auto& argument : command) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
     std::vector<char*> envp;
-    for (char** variable = environ; *variable; ++variable) envp.push_back(*variable);
+    // A variable given here replaces the inherited one: getenv would find the inherited one first.
+    const auto overridden = [&](const char* inherited) {
+        return std::any_of(environment.begin(), environment.end(), [&](const std::string& given) {
+            const auto name = given.substr(0, given.find('=') + 1);
+            return std::string_view(inherited).starts_with(name);
+        });
+    };
+    for (char** variable = environ; *variable; ++variable)
+        if (!overridden(*variable)) envp.push_back(*variable);
     for (const auto& variable : environment) envp.push_back(const_cast<char*>(variable.c_str()));
     envp.push_back(nullptr);
     pid_t pid = 0;

@@ -13,9 +13,10 @@ namespace iblkit::testing {
 // A fresh folder per test for HLSL snippets, removed afterwards.
 class TempFolder {
 public:
-    TempFolder() {
+    // `suffix` tells apart two folders of one test.
+    explicit TempFolder(const std::string& suffix = "") {
         const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = "iblkit-" + std::to_string(::getpid()) + "-" + test->test_suite_name() + "-" + test->name();
+        std::string name = "iblkit-" + std::to_string(::getpid()) + "-" + test->test_suite_name() + "-" + test->name() + suffix;
         std::replace(name.begin(), name.end(), '/', '_'); // parameterized tests' names hold slashes
         path_ = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(path_);

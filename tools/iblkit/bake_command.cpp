@@ -28,7 +28,8 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"half_range_clamps", bake::halfRangeClampsJson(summary.halfRangeClamps)},
             {"sanitized_texels", summary.sanitizedTexels},
             {"negative_texels", summary.negativeTexels.count},
-            {"most_negative", summary.negativeTexels.mostNegative}};
+            {"most_negative", summary.negativeTexels.mostNegative},
+            {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}}};
 }
 
 void printSummary(const bake::BakeSummary& summary) {
@@ -60,6 +61,8 @@ void addBakeCommand(CLI::App& app) {
         bake::BakeSettings settings;
         std::string environment;
         std::string lutFormat = "rg16f";
+        std::string cache;
+        bool noCache = false;
         bool quiet = false;
         bool json = false;
     };
@@ -73,6 +76,10 @@ void addBakeCommand(CLI::App& app) {
     addBakeSettingOptions(*command, s, arguments->lutFormat);
     command->add_option("--scene", s.scene,
                         "A glTF scene (.gltf or .glb): bake only what its materials need (iblkit plan SCENE shows what)");
+    command->add_option("--cache", arguments->cache,
+                        "Cache folder: each output is kept under the hash of everything it depends on, and taken "
+                        "from there when nothing it depends on changed (default $XDG_CACHE_HOME/iblkit, else ~/.cache/iblkit)");
+    command->add_flag("--no-cache", arguments->noCache, "Compute everything, and keep nothing");
     command->add_flag("--dds", s.dds, "Also write .dds files");
     command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
@@ -89,6 +96,9 @@ void addBakeCommand(CLI::App& app) {
         auto settings = arguments->settings;
         if (!arguments->environment.empty()) settings.environment = arguments->environment;
         settings.lutFormat = arguments->lutFormat == "rg32f" ? bake::LutFormat::Rg32Float : bake::LutFormat::Rg16Float;
+        if (arguments->noCache && !arguments->cache.empty()) throw CLI::ValidationError("--cache and --no-cache", "give one of them");
+        if (!arguments->noCache)
+            settings.cache = arguments->cache.empty() ? cache::ContentStore::defaultFolder() : std::filesystem::path(arguments->cache);
         auto log = std::make_shared<vulkan::ValidationLog>();
         settings.context.validationLog = log;
         bake::BakeProgress progress(arguments->quiet);

@@ -1,20 +1,20 @@
 #include "sha256.hpp"
 
-#include "bake_error.hpp"
+#include "cache_error.hpp"
 #include "files.hpp"
 
 #include <openssl/evp.h>
 
 #include <memory>
 
-namespace iblkit::bake {
+namespace iblkit::cache {
 namespace {
 
 class Sha256 {
 public:
     Sha256() : context_(EVP_MD_CTX_new(), EVP_MD_CTX_free) {
         if (!context_ || EVP_DigestInit_ex(context_.get(), EVP_sha256(), nullptr) != 1)
-            throw BakeError("OpenSSL could not start a SHA-256 digest");
+            throw CacheError("OpenSSL could not start a SHA-256 digest");
     }
     void add(const void* data, size_t size) { EVP_DigestUpdate(context_.get(), data, size); }
     std::string hex() {
@@ -45,4 +45,4 @@ std::string sha256OfFile(const std::filesystem::path& path) {
     return digest.hex();
 }
 
-} // namespace iblkit::bake
+} // namespace iblkit::cache

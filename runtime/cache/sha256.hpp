@@ -5,10 +5,10 @@
 #include <span>
 #include <string>
 
-namespace iblkit::bake {
+namespace iblkit::cache {
 
 // SHA-256 (OpenSSL's) as 64 lower-case hex digits.
 std::string sha256Hex(std::span<const std::byte> bytes);
 std::string sha256OfFile(const std::filesystem::path& path); // image_io::ImageError when unreadable or not a regular file
 
-} // namespace iblkit::bake
+} // namespace iblkit::cache

@@ -1,0 +1,157 @@
+#include "bake_cache.hpp"
+
+#include "cache_key.hpp"
+#include "kernels/specular_method.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+namespace iblkit::bake {
+namespace {
+
+using nlohmann::json;
+
+std::string floatBytes(const std::vector<float>& values) {
+    return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+}
+
+// A JSON header line, then the floats.
+std::string withHeader(const json& header, const std::vector<float>& values) { return header.dump() + "\n" + floatBytes(values); }
+
+std::optional<std::pair<json, std::vector<float>>> splitPayload(std::string_view payload) {
+    const size_t newline = payload.find('\n');
+    if (newline == std::string_view::npos) return std::nullopt;
+    auto header = json::parse(payload.substr(0, newline), nullptr, false);
+    const auto bytes = payload.substr(newline + 1);
+    if (header.is_discarded() || !header.is_object() || bytes.size() % sizeof(float) != 0) return std::nullopt;
+    std::vector<float> values(bytes.size() / sizeof(float));
+    std::memcpy(values.data(), bytes.data(), bytes.size());
+    return std::pair{std::move(header), std::move(values)};
+}
+
+std::vector<std::string> sourceKernels(const EnvironmentInput& input) {
+    if (input.kind == InputKind::BuiltIn) return {"SkyCubeCS", "DownsampleCubeCS"};
+    if (input.kind == InputKind::Panorama) return {"EquirectToCubeCS", "DownsampleCubeCS"};
+    return {"DownsampleCubeCS"};
+}
+
+std::vector<std::string> methodKernels(const std::string& method) {
+    std::vector<std::string> names;
+    for (const auto& kernel : kernels::kernelTable())
+        if (kernel.belongsTo(method)) names.push_back(kernel.name);
+    return names;
+}
+
+cache::CacheKey commonKey(const char* output, const vulkan::DeviceInfo& device, const std::string& toolVersion) {
+    cache::CacheKey key;
+    key.add("output", output).add("tool", toolVersion);
+    key.add("device", device.name).add("driver", device.driver).add("api", device.apiVersion);
+    return key;
+}
+
+// The source cube: the environment's bytes, the input policy, the size and the kernels that make it.
+cache::CacheKey& addSource(cache::CacheKey& key, const BakeSettings& settings, const EnvironmentInput& input, uint32_t size,
+                           const kernels::ShaderFiles& files) {
+    key.add("input kind", std::string(inputKindName(input.kind)));
+    for (const auto& file : input.files) key.add("input file", file.sha256);
+    key.add("sanitize", settings.sanitize).add("strict", settings.strict).add("size", size);
+    return key.add("source kernels", kernelSourcesDigest(sourceKernels(input), files));
+}
+
+} // namespace
+
+std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, const kernels::ShaderFiles& files) {
+    cache::CacheKey key;
+    for (const auto& name : kernelNames) {
+        const auto& kernel = kernels::kernelNamed(name);
+        const auto source = kernel.options.source.generic_string();
+        key.add("kernel", name).add(source, files.count(source) ? files.at(source) : "");
+        for (const auto& [define, value] : kernel.options.defines) key.add("define " + define, value);
+    }
+    for (const auto& [path, text] : files)
+        if (path.ends_with(".fxh")) key.add(path, text);
+    return key.hex();
+}
+
+BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                  const vulkan::DeviceInfo& device, const std::string& toolVersion, const kernels::ShaderFiles& files) {
+    std::vector<bool> prefiltered;
+    for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
+    auto specular = commonKey("specular", device, toolVersion);
+    addSource(specular, settings, input, size, files)
+        .add("method", settings.specularMethod)
+        .add("samples", resolvedSamples(settings))
+        .add("prefiltered mips", prefiltered)
+        .add("kernels", kernelSourcesDigest(methodKernels(settings.specularMethod), files))
+        .add("cluster kernel", kernelSourcesDigest({"ClusterCubeCS"}, files)); // the convolution's pyramids
+    auto lut = commonKey("brdf lut", device, toolVersion);
+    lut.add("method", settings.lutMethod).add("samples", resolvedLutSamples(settings)).add("size", settings.lutSize);
+    lut.add("kernels", kernelSourcesDigest(methodKernels(settings.lutMethod), files));
+    auto irradiance = commonKey("irradiance", device, toolVersion);
+    addSource(irradiance, settings, input, size, files)
+        .add("size", settings.irradianceSize)
+        .add("cube", plan.irradiance)
+        .add("kernels", kernelSourcesDigest({"ShProjectCS", "IrradianceCubeCS"}, files));
+    BakeKeys keys{specular.hex(), lut.hex(), irradiance.hex(), ""};
+    auto preview = commonKey("preview", device, toolVersion);
+    preview.add("specular", keys.specular).add("brdf lut", plan.lut ? keys.lut : "none").add("irradiance", keys.irradiance);
+    preview.add("kernels", kernelSourcesDigest({"PreviewCS"}, files));
+    keys.preview = preview.hex();
+    return keys;
+}
+
+std::string texturePayload(const BakedTexture& texture) {
+    return withHeader({{"name", texture.name}, {"format", int(texture.format)}, {"size", texture.size},
+                       {"faces", texture.faces}, {"mips", texture.mips}},
+                      texture.values);
+}
+
+std::optional<BakedTexture> textureFromPayload(std::string_view payload) {
+    auto parts = splitPayload(payload);
+    if (!parts) return std::nullopt;
+    const auto& [header, values] = *parts;
+    try {
+        BakedTexture texture{header.at("name"), image_io::PixelFormat(header.at("format").get<int>()), header.at("size"),
+                             header.at("faces"), header.at("mips"), std::move(parts->second)};
+        size_t texels = 0;
+        for (uint32_t mip = 0; mip < texture.mips; ++mip) texels += size_t(std::max(1u, texture.size >> mip)) * std::max(1u, texture.size >> mip);
+        if (texture.values.size() != texels * texture.faces * image_io::channelCount(texture.format)) return std::nullopt;
+        return texture;
+    } catch (const json::exception&) {
+        return std::nullopt;
+    }
+}
+
+std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube) {
+    json coefficients = json::array();
+    for (const auto& c : sh.shRadiance) coefficients.push_back({c.r, c.g, c.b});
+    return json({{"sh", coefficients}, {"solid_angle", sh.solidAngle}, {"sh_source", sh.shSourceSize},
+                 {"cube_source", sh.cubeSourceSize}})
+               .dump() +
+           "\n" + texturePayload(cube);
+}
+
+std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::string_view payload) {
+    const size_t newline = payload.find('\n');
+    if (newline == std::string_view::npos) return std::nullopt;
+    const auto header = json::parse(payload.substr(0, newline), nullptr, false);
+    auto cube = textureFromPayload(payload.substr(newline + 1));
+    if (header.is_discarded() || !cube) return std::nullopt;
+    try {
+        IrradianceSh sh;
+        for (size_t k = 0; k < 9; ++k) {
+            const auto& c = header.at("sh").at(k);
+            sh.shRadiance[k] = {c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>()};
+        }
+        sh.solidAngle = header.at("solid_angle");
+        sh.shSourceSize = header.at("sh_source");
+        sh.cubeSourceSize = header.at("cube_source");
+        return std::pair{sh, std::move(*cube)};
+    } catch (const json::exception&) {
+        return std::nullopt;
+    }
+}
+
+} // namespace iblkit::bake

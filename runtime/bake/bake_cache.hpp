@@ -1,0 +1,39 @@
+#pragma once
+
+#include "bake_outputs.hpp"
+#include "bake_plan.hpp"
+#include "bake_settings.hpp"
+#include "environment_input.hpp"
+#include "gpu_steps.hpp"
+#include "kernels/kernel_table.hpp"
+#include "vulkan_context.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace iblkit::bake {
+
+// The cache key of each output: the SHA-256 of everything it depends on — the tool's version,
+// the device, the HLSL of its kernels with every header and their defines, the settings it reads
+// and, but for the LUT, the environment's bytes and the input policy. The LUT's key holds no
+// environment, so one LUT serves every environment baked with its settings.
+struct BakeKeys {
+    std::string specular, lut, irradiance, preview;
+};
+BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                  const vulkan::DeviceInfo& device, const std::string& toolVersion,
+                  const kernels::ShaderFiles& files = kernels::embeddedShaderFiles());
+
+// The digest of the named kernels' sources and defines and of every header (.fxh) in `files`.
+std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, const kernels::ShaderFiles& files);
+
+// Cache payloads: the device's values of an output (before any 16-bit rounding), and what goes
+// with them; the preview's is its PNG file. A payload that does not parse is a miss.
+std::string texturePayload(const BakedTexture& texture);
+std::optional<BakedTexture> textureFromPayload(std::string_view payload);
+std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube);
+std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::string_view payload);
+
+} // namespace iblkit::bake

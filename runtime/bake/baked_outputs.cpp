@@ -1,0 +1,183 @@
+#include "baked_outputs.hpp"
+
+#include "bake_cache.hpp"
+#include "bake_error.hpp"
+#include "bake_kernels.hpp"
+#include "content_store.hpp"
+#include "float_image.hpp"
+#include "kernels/specular_method.hpp"
+#include "vulkan_context.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unistd.h>
+
+namespace iblkit::bake {
+namespace {
+
+double cubeChainBytes(uint32_t size) { return 6.0 * size * size * 16 * 4 / 3; }
+
+std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e9); }
+
+// Refuses sizes whose images would not fit, before any of them is made.
+void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
+                 uint32_t size) {
+    const double panorama = double(input.panorama.width) * input.panorama.height * 16;
+    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain.
+    const double pyramids = kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(size) : 0;
+    const double device = 2 * cubeChainBytes(size) + pyramids + panorama + double(settings.lutSize) * settings.lutSize * 8 +
+                          6.0 * settings.irradianceSize * settings.irradianceSize * 16;
+    // The host holds each image as floats while it downloads and encodes it.
+    const double host = device + 2 * cubeChainBytes(size);
+    const double heap = double(context.largestHeapSize());
+    const double ram = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (device > heap)
+        throw BakeError(fmt::format("this bake needs about {} of device memory; the device's largest heap is {} "
+                                    "(lower --size or --lut-size)", gigabytes(device), gigabytes(heap)));
+    if (host > ram)
+        throw BakeError(fmt::format("this bake needs about {} of memory; the machine has {} (lower --size or --lut-size)",
+                                    gigabytes(host), gigabytes(ram)));
+}
+
+void checkFiniteOutput(const std::string& name, const std::vector<float>& values) {
+    const auto bad = std::count_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+    if (bad > 0) throw BakeError(fmt::format("internal error: {} has {} NaN/Inf values", name, bad));
+}
+
+BakedTexture download(const vulkan::VulkanContext& context, const vulkan::Image& image, const std::string& name,
+                      image_io::PixelFormat format) {
+    auto values = image.download(context);
+    checkFiniteOutput(name, values);
+    if (image.desc().format->channels != image_io::channelCount(format))
+        throw BakeError("internal error: " + name + " has the wrong channel count");
+    return {name, format, image.desc().width, image.desc().layers, image.desc().mips, std::move(values)};
+}
+
+// A cached output back on the device, for the preview to read.
+vulkan::Image uploaded(const vulkan::VulkanContext& context, const BakedTexture& texture, const char* format) {
+    vulkan::Image image(context, {texture.name, &vulkan::texelFormatNamed(format), texture.size, texture.size, texture.faces,
+                                  texture.mips, texture.faces == 6, true});
+    image.upload(context, texture.values);
+    return image;
+}
+
+image_io::PixelFormat lutFormatOf(const BakeSettings& settings) {
+    return settings.lutFormat == LutFormat::Rg16Float ? image_io::PixelFormat::Rg16Float : image_io::PixelFormat::Rg32Float;
+}
+
+std::vector<uint8_t> toRgba8(const std::vector<float>& rgba) {
+    std::vector<uint8_t> bytes(rgba.size());
+    std::transform(rgba.begin(), rgba.end(), bytes.begin(),
+                   [](float v) { return uint8_t(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); });
+    return bytes;
+}
+
+struct Cached {
+    std::optional<BakedTexture> specular, lut, irradiance;
+    std::optional<IrradianceSh> sh;
+    std::optional<std::string> previewPng;
+
+    bool complete(const BakePlan& plan) const {
+        return (!plan.specular || specular) && (!plan.lut || lut) && irradiance && previewPng;
+    }
+};
+
+Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& plan, const BakeSettings& settings) {
+    Cached cached;
+    if (!store) return cached;
+    const auto texture = [&](const std::string& key) {
+        const auto payload = store->get(key);
+        return payload ? textureFromPayload(*payload) : std::nullopt;
+    };
+    if (plan.specular) cached.specular = texture(keys.specular);
+    if (plan.lut && (cached.lut = texture(keys.lut))) cached.lut->format = lutFormatOf(settings); // the values are the device's
+    if (const auto payload = store->get(keys.irradiance))
+        if (auto entry = irradianceFromPayload(*payload)) {
+            cached.sh = entry->first;
+            cached.irradiance = std::move(entry->second);
+        }
+    cached.previewPng = store->get(keys.preview);
+    return cached;
+}
+
+void store(cache::ContentStore* store, const std::string& key, const std::string& payload) {
+    if (store) store->put(key, payload);
+}
+
+// What the cache does not hold, computed on the device, and stored.
+BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                             const BakeKeys& keys, Cached cached, BakeProgress& progress, cache::ContentStore* cache) {
+    progress.begin("device");
+    const vulkan::VulkanContext context(settings.context);
+    BakeKernels kernels(context, settings, {plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
+    checkMemory(context, settings, input, size);
+    progress.end();
+    std::optional<vulkan::Image> source;
+    const auto sourceCube = [&]() -> vulkan::Image& {
+        if (!source) source.emplace(buildSourceCube(context, input, size, progress));
+        return *source;
+    };
+    std::vector<bool> prefiltered;
+    for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
+    auto specular = cached.specular ? uploaded(context, *cached.specular, "R32G32B32A32_SFLOAT")
+                                    : prefilterSpecular(context, sourceCube(), prefiltered, kernels.specular(), progress);
+    auto lut = !plan.lut      ? blankBrdfLut(context)
+               : cached.lut ? uploaded(context, *cached.lut, "R32G32_SFLOAT")
+                            : integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress);
+    auto irradiance = cached.irradiance
+                          ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
+                          : computeIrradiance(context, kernels.irradiance(), sourceCube(), settings.irradianceSize, progress,
+                                              plan.irradiance);
+    BakedOutputs outputs;
+    outputs.device = context.deviceInfo().name;
+    outputs.sh = irradiance.sh;
+    outputs.previewExposure = previewExposure(irradiance.sh);
+    if (cached.previewPng) {
+        outputs.previewPng = *cached.previewPng;
+    } else {
+        const auto preview = renderPreview(context, kernels.preview(), specular, irradiance.cube, lut, outputs.previewExposure, progress);
+        outputs.previewPng = image_io::encodePng(preview.width, preview.height, toRgba8(preview.rgba));
+    }
+    const auto rgba16 = image_io::PixelFormat::Rgba16Float;
+    if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, specular, "specular", rgba16);
+    if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, lut, "brdf_lut", lutFormatOf(settings));
+    const auto irradianceCube = cached.irradiance ? *cached.irradiance : download(context, irradiance.cube, "irradiance", rgba16);
+    if (plan.irradiance) outputs.irradiance = irradianceCube;
+    if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular));
+    if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut));
+    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(irradiance.sh, irradianceCube));
+    if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng);
+    return outputs;
+}
+
+vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options) {
+    const auto devices = vulkan::listDevices();
+    return devices[vulkan::chooseDevice(devices, options.device)];
+}
+
+} // namespace
+
+float previewExposure(const IrradianceSh& sh) {
+    const glm::dvec3 mean = sh.shRadiance[0] * 0.282094791773878;
+    const double luminance = 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+    if (!(luminance > 0) || !std::isfinite(luminance)) return 1.f;
+    return float(std::clamp(0.4 / luminance, kMinPreviewExposure, kMaxPreviewExposure));
+}
+
+BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store) {
+    if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
+    progress.begin("cache");
+    const auto device = chosenDevice(settings.context);
+    const auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
+    auto cached = lookUp(store, keys, plan, settings);
+    progress.end();
+    if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, std::move(cached), progress, store);
+    BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, *cached.sh,
+                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name};
+    return outputs;
+}
+
+} // namespace iblkit::bake

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "bake_outputs.hpp"
+#include "bake_plan.hpp"
+#include "bake_progress.hpp"
+#include "bake_settings.hpp"
+#include "environment_input.hpp"
+#include "gpu_steps.hpp"
+
+#include <optional>
+#include <string>
+
+namespace iblkit::cache {
+class ContentStore;
+}
+
+namespace iblkit::bake {
+
+// The device's values of every output a bake writes (before any 16-bit rounding): each from the
+// cache where it holds the output's key (bake_cache.hpp), computed on the device otherwise and
+// then stored. With every output cached, no device is opened at all.
+struct BakedOutputs {
+    std::optional<BakedTexture> specular, lut, irradiance; // those the plan needs
+    IrradianceSh sh;
+    std::string previewPng; // the PNG file's bytes: cached encoded, as encoding is most of a cached bake's time
+    float previewExposure = 1;
+    std::string device;
+};
+
+BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store);
+
+// Exposure that maps the environment's mean luminance (from L00) to 0.4 before the filmic curve,
+// within [kMinPreviewExposure, kMaxPreviewExposure].
+float previewExposure(const IrradianceSh& sh);
+
+} // namespace iblkit::bake

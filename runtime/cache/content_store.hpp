@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace iblkit::cache {
+
+// Entries by key (CacheKey::hex()) under FOLDER/objects/ab/abcd...: each holds its payload's
+// SHA-256 beside the payload, so an entry damaged on disk is found when it is read, removed, and
+// counted a miss. An entry is written to a temporary file and renamed into place, so bakes that
+// share the folder never read half an entry; two that make the same entry write the same bytes,
+// and the last rename wins.
+class ContentStore {
+public:
+    explicit ContentStore(std::filesystem::path folder);
+
+    std::optional<std::string> get(const std::string& key);
+    void put(const std::string& key, std::string_view payload); // throws CacheError when it cannot write
+
+    struct Counts {
+        size_t hits = 0, misses = 0, corrupt = 0;
+    };
+    const Counts& counts() const { return counts_; }
+    const std::filesystem::path& folder() const { return folder_; }
+
+    // $XDG_CACHE_HOME/iblkit, else ~/.cache/iblkit, else build/cache.
+    static std::filesystem::path defaultFolder();
+
+private:
+    std::filesystem::path pathOf(const std::string& key) const;
+
+    std::filesystem::path folder_;
+    Counts counts_;
+};
+
+} // namespace iblkit::cache

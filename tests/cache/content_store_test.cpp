@@ -1,0 +1,97 @@
+// The content store: what is put is got back, a damaged entry is a miss that is written anew,
+// keys follow every part they are made of, and writers racing on one folder never leave half an
+// entry to be read.
+#include "cache_error.hpp"
+#include "cache_key.hpp"
+#include "content_store.hpp"
+#include "temp_folder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <thread>
+
+namespace iblkit::cache {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ContentStore, WhatIsPutIsGotBackAndCounted) {
+    iblkit::testing::TempFolder folder;
+    ContentStore store(folder.path());
+    const auto key = CacheKey().add("what", "lut").hex();
+    EXPECT_FALSE(store.get(key));
+    store.put(key, std::string("\0payload\n", 9));
+    EXPECT_EQ(store.get(key), std::string("\0payload\n", 9));
+    EXPECT_EQ(store.counts().hits, 1u);
+    EXPECT_EQ(store.counts().misses, 1u);
+    EXPECT_TRUE(fs::exists(folder.path() / "objects" / key.substr(0, 2) / key));
+}
+
+TEST(ContentStore, ADamagedEntryIsAMissAndIsRemoved) {
+    iblkit::testing::TempFolder folder;
+    ContentStore store(folder.path());
+    const auto key = CacheKey().add("what", "specular").hex();
+    store.put(key, std::string(1000, 'x'));
+    const auto path = folder.path() / "objects" / key.substr(0, 2) / key;
+    {
+        std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+        file.seekp(500);
+        file.put('y'); // one byte of the payload changed on disk
+    }
+    EXPECT_FALSE(store.get(key));
+    EXPECT_EQ(store.counts().corrupt, 1u);
+    EXPECT_FALSE(fs::exists(path));
+    store.put(key, "whole");
+    fs::resize_file(path, 20); // cut short
+    EXPECT_FALSE(store.get(key));
+    EXPECT_EQ(store.counts().corrupt, 2u);
+}
+
+TEST(CacheKey, EveryPartAndItsLabelCount) {
+    const auto base = CacheKey().add("a", "bc").add("n", uint64_t{7}).hex();
+    EXPECT_EQ(base, CacheKey().add("a", "bc").add("n", uint64_t{7}).hex());
+    EXPECT_NE(base, CacheKey().add("a", "b").add("cn", uint64_t{7}).hex()) << "no collision by concatenation";
+    EXPECT_NE(base, CacheKey().add("a", "bc").add("n", uint64_t{8}).hex());
+    EXPECT_NE(base, CacheKey().add("b", "bc").add("n", uint64_t{7}).hex());
+    EXPECT_NE(CacheKey().add("mips", std::vector<bool>{true, false}).hex(),
+              CacheKey().add("mips", std::vector<bool>{false, true}).hex());
+}
+
+TEST(ContentStore, WritersRacingOnOneFolderLeaveOnlyWholeEntries) {
+    iblkit::testing::TempFolder folder;
+    const auto key = CacheKey().add("what", "shared").hex();
+    const std::string payload(1 << 20, 'p');
+    std::vector<std::thread> writers;
+    std::atomic<int> halfSeen{0};
+    for (int t = 0; t < 4; ++t)
+        writers.emplace_back([&] {
+            ContentStore store(folder.path());
+            for (int i = 0; i < 20; ++i) {
+                store.put(key, payload);
+                const auto got = store.get(key);
+                if (!got || *got != payload) ++halfSeen;
+            }
+        });
+    for (auto& writer : writers) writer.join();
+    EXPECT_EQ(halfSeen, 0);
+    size_t leftovers = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(folder.path()))
+        if (entry.path().filename().string().find(".tmp-") != std::string::npos) ++leftovers;
+    EXPECT_EQ(leftovers, 0u) << "no temporary is left behind";
+}
+
+TEST(ContentStore, AFolderItCannotWriteIsOneError) {
+    iblkit::testing::TempFolder folder;
+    std::ofstream(folder.path() / "file") << "not a folder";
+    ContentStore store(folder.path() / "file");
+    try {
+        store.put(CacheKey().add("a", "b").hex(), "x");
+        ADD_FAILURE() << "no error";
+    } catch (const CacheError& error) {
+        EXPECT_NE(std::string(error.what()).find("cannot make the cache folder"), std::string::npos) << error.what();
+    }
+}
+
+} // namespace
+} // namespace iblkit::cache
