@@ -6,23 +6,16 @@
 #include "bake_manifest.hpp"
 #include "bake_plan.hpp"
 #include "environment_input.hpp"
-#include "float_image.hpp"
 #include "content_store.hpp"
-#include "sha256.hpp"
 
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <bit>
 #include <chrono>
-#include <cmath>
 
 namespace iblkit::bake {
-namespace {
 
 using Clock = std::chrono::steady_clock;
-
-} // namespace
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     const auto started = Clock::now();
@@ -67,8 +60,8 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
 
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
     BakeSummary summary{settings.outputDir, outputs.device, progress.steps(), wall, files,
-                        outputs.sh.shRadiance, clamps, input.sanitizedTexels, input.negative, {}};
-    if (store) summary.cache = store->counts();
+                        outputs.sh.shRadiance, clamps, input.sanitizedTexels, input.negative, {}, outputs.cacheWarnings};
+    if (store && !settings.context.validation) summary.cache = store->counts();
     return summary;
 }
 

@@ -26,6 +26,7 @@ struct BakeSummary {
     size_t sanitizedTexels;               // NaN/Inf input texels set to 0 (--sanitize)
     NegativeTexels negativeTexels;        // input texels of negative radiance, clamped to 0
     cache::ContentStore::Counts cache;    // the cache's hits, misses and damaged entries (zeros without a cache)
+    std::vector<std::string> cacheWarnings; // why an output could not be cached (the bake went on)
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

@@ -1,6 +1,7 @@
 #include "bake_cache.hpp"
 
 #include "cache_key.hpp"
+#include "sha256.hpp"
 #include "kernels/specular_method.hpp"
 
 #include <nlohmann/json.hpp>
@@ -46,17 +47,17 @@ std::vector<std::string> methodKernels(const std::string& method) {
 
 cache::CacheKey commonKey(const char* output, const vulkan::DeviceInfo& device, const std::string& toolVersion) {
     cache::CacheKey key;
-    key.add("output", output).add("tool", toolVersion);
+    key.add("output", output).add("tool", toolVersion).add("program", cache::programDigest());
     key.add("device", device.name).add("driver", device.driver).add("api", device.apiVersion);
     return key;
 }
 
 // The source cube: the environment's bytes, the input policy, the size and the kernels that make it.
-cache::CacheKey& addSource(cache::CacheKey& key, const BakeSettings& settings, const EnvironmentInput& input, uint32_t size,
-                           const kernels::ShaderFiles& files) {
+cache::CacheKey& addSource(cache::CacheKey& key, const EnvironmentInput& input, uint32_t size, const kernels::ShaderFiles& files) {
+    // The input policies are left out: a bake they let through has the same source cube either way.
     key.add("input kind", std::string(inputKindName(input.kind)));
     for (const auto& file : input.files) key.add("input file", file.sha256);
-    key.add("sanitize", settings.sanitize).add("strict", settings.strict).add("size", size);
+    key.add("size", size);
     return key.add("source kernels", kernelSourcesDigest(sourceKernels(input), files));
 }
 
@@ -80,7 +81,7 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
     std::vector<bool> prefiltered;
     for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
     auto specular = commonKey("specular", device, toolVersion);
-    addSource(specular, settings, input, size, files)
+    addSource(specular, input, size, files)
         .add("method", settings.specularMethod)
         .add("samples", resolvedSamples(settings))
         .add("prefiltered mips", prefiltered)
@@ -90,7 +91,7 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
     lut.add("method", settings.lutMethod).add("samples", resolvedLutSamples(settings)).add("size", settings.lutSize);
     lut.add("kernels", kernelSourcesDigest(methodKernels(settings.lutMethod), files));
     auto irradiance = commonKey("irradiance", device, toolVersion);
-    addSource(irradiance, settings, input, size, files)
+    addSource(irradiance, input, size, files)
         .add("size", settings.irradianceSize)
         .add("cube", plan.irradiance)
         .add("kernels", kernelSourcesDigest({"ShProjectCS", "IrradianceCubeCS"}, files));

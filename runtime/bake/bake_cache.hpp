@@ -15,10 +15,11 @@
 
 namespace iblkit::bake {
 
-// The cache key of each output: the SHA-256 of everything it depends on — the tool's version,
-// the device, the HLSL of its kernels with every header and their defines, the settings it reads
-// and, but for the LUT, the environment's bytes and the input policy. The LUT's key holds no
-// environment, so one LUT serves every environment baked with its settings.
+// The cache key of each output: the SHA-256 of everything it depends on — the tool's version and
+// the program's own bytes (so any rebuild starts afresh), the device, the HLSL of its kernels with
+// every header and their defines, the settings it reads and, but for the LUT, the environment's
+// bytes. The LUT's key holds no environment, so one LUT serves every environment baked with its
+// settings.
 struct BakeKeys {
     std::string specular, lut, irradiance, preview;
 };

@@ -208,6 +208,8 @@ json halfRangeJson(const std::vector<HalfRangeClamp>& clamps, const BakeSettings
 
 } // namespace
 
+namespace {
+
 // The specular entry as the plan made it: the prefiltered mips, and the mips no material reads,
 // filled with the source's own.
 json plannedSpecularJson(const ManifestFacts& facts) {
@@ -223,6 +225,8 @@ json plannedSpecularJson(const ManifestFacts& facts) {
 }
 
 json skippedJson(const std::string& why) { return {{"file", nullptr}, {"skipped", why}}; }
+
+} // namespace
 
 json bakeManifest(const ManifestFacts& facts) {
     const auto& s = *facts.settings;

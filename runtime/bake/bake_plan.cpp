@@ -1,5 +1,6 @@
 #include "bake_plan.hpp"
 
+#include "environment_input.hpp"
 #include "kernels/kernel_table.hpp"
 #include "kernels/specular_method.hpp"
 
@@ -80,8 +81,13 @@ void planSpecularMips(const BakeSettings& settings, uint32_t size, const SceneUs
         plan.mips.push_back(mipPlan);
     }
     if (!curve) return;
-    // The error of what is baked: the worst needed mip's.
+    // The error of what is baked: the worst needed mip's, and none when the bench measured no mip
+    // at some needed roughness (another mip count).
     plan.specularEstimate.deviceMs = neededMs;
+    const bool everyNeededMipMeasured = std::all_of(plan.mips.begin(), plan.mips.end(), [](const SpecularMipPlan& mip) {
+        return !mip.needed || mip.mip == 0 || mip.estimate.errorRms;
+    });
+    if (!everyNeededMipMeasured) return;
     for (const auto& mip : plan.mips) {
         if (!mip.needed || !mip.estimate.errorRms) continue;
         plan.specularEstimate.errorRms = std::max(plan.specularEstimate.errorRms.value_or(0), *mip.estimate.errorRms);
@@ -109,7 +115,9 @@ void listKernels(const BakeSettings& settings, BakePlan& plan) {
     const auto add = [&](const std::string& name, const std::string& permutation = "") {
         plan.kernels.push_back(permutation.empty() ? name : name + " (" + permutation + ")");
     };
-    add(settings.environment ? "EquirectToCubeCS" : "SkyCubeCS");
+    // A cube input (.ktx2, .dds, a folder of faces) is uploaded as it is: no conversion kernel.
+    if (!settings.environment) add("SkyCubeCS");
+    else if (!isCubeInput(*settings.environment)) add("EquirectToCubeCS");
     add("DownsampleCubeCS");
     if (plan.specular && kernels::isConvolutionMethod(settings.specularMethod)) add("ClusterCubeCS"); // its pyramids
     for (const auto& kernel : kernels::kernelTable()) {
@@ -118,10 +126,10 @@ void listKernels(const BakeSettings& settings, BakePlan& plan) {
         if (plan.lut && kernel.belongsTo(settings.lutMethod))
             add(kernel.name, fmt::format("{} {}", settings.lutMethod, resolvedLutSamples(settings)));
     }
-    if (plan.irradiance) {
-        add("ShProjectCS");
-        add("IrradianceCubeCS");
-    }
+    // Both irradiance kernels are compiled even when the cube is skipped: the SH projection runs
+    // for the manifest and the preview's exposure.
+    add("ShProjectCS");
+    add("IrradianceCubeCS");
     add("PreviewCS");
 }
 

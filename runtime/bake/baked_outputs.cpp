@@ -3,6 +3,7 @@
 #include "bake_cache.hpp"
 #include "bake_error.hpp"
 #include "bake_kernels.hpp"
+#include "cache_error.hpp"
 #include "content_store.hpp"
 #include "float_image.hpp"
 #include "kernels/specular_method.hpp"
@@ -102,8 +103,15 @@ Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& 
     return cached;
 }
 
-void store(cache::ContentStore* store, const std::string& key, const std::string& payload) {
-    if (store) store->put(key, payload);
+// A cache that cannot be written (a full disk, a read-only folder) costs the next bake its time,
+// not this bake its files: the reason goes to the summary as a warning.
+void store(cache::ContentStore* store, const std::string& key, const std::string& payload, std::vector<std::string>& warnings) {
+    if (!store) return;
+    try {
+        store->put(key, payload);
+    } catch (const cache::CacheError& error) {
+        if (warnings.empty()) warnings.push_back(std::string(error.what()) + " (the bake goes on without caching it)");
+    }
 }
 
 // What the cache does not hold, computed on the device, and stored.
@@ -145,10 +153,11 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
     if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, lut, "brdf_lut", lutFormatOf(settings));
     const auto irradianceCube = cached.irradiance ? *cached.irradiance : download(context, irradiance.cube, "irradiance", rgba16);
     if (plan.irradiance) outputs.irradiance = irradianceCube;
-    if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular));
-    if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut));
-    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(irradiance.sh, irradianceCube));
-    if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng);
+    auto& warnings = outputs.cacheWarnings;
+    if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular), warnings);
+    if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
+    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(irradiance.sh, irradianceCube), warnings);
+    if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
     return outputs;
 }
 
@@ -168,6 +177,9 @@ float previewExposure(const IrradianceSh& sh) {
 
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store) {
+    // A validated bake is one the layer watched: nothing is taken from the cache, and what the
+    // layer may yet fail is not put there.
+    if (settings.context.validation) store = nullptr;
     if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
     progress.begin("cache");
     const auto device = chosenDevice(settings.context);
@@ -176,7 +188,7 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& i
     progress.end();
     if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, std::move(cached), progress, store);
     BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, *cached.sh,
-                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name};
+                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name, {}};
     return outputs;
 }
 

@@ -18,13 +18,15 @@ namespace iblkit::bake {
 
 // The device's values of every output a bake writes (before any 16-bit rounding): each from the
 // cache where it holds the output's key (bake_cache.hpp), computed on the device otherwise and
-// then stored. With every output cached, no device is opened at all.
+// then stored. With every output cached, no device is opened at all. With validation on, the cache
+// is neither read nor written.
 struct BakedOutputs {
     std::optional<BakedTexture> specular, lut, irradiance; // those the plan needs
     IrradianceSh sh;
     std::string previewPng; // the PNG file's bytes: cached encoded, as encoding is most of a cached bake's time
     float previewExposure = 1;
     std::string device;
+    std::vector<std::string> cacheWarnings; // why an output could not be cached
 };
 
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,

@@ -151,4 +151,9 @@ EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, const Inpu
     return loadPanorama(*path, policy);
 }
 
+bool isCubeInput(const std::filesystem::path& path) {
+    std::error_code error;
+    return std::filesystem::is_directory(path, error) || path.extension() == ".ktx2" || path.extension() == ".dds";
+}
+
 } // namespace iblkit::bake

@@ -47,6 +47,10 @@ struct InputPolicy {
 // texels are refused unless policy.sanitize, texels beyond ±kLargestRadiance always, and negative
 // ones (lossy HDR compression leaves small ones) are clamped to 0 unless policy.strict. Throws
 // BakeError or image_io::ImageError, one line each.
+// Whether ENV names a cube (a .ktx2 or .dds file, or a folder of faces), whose own face size is
+// the bake's, rather than a panorama.
+bool isCubeInput(const std::filesystem::path& path);
+
 EnvironmentInput loadEnvironment(const std::optional<std::filesystem::path>& path, const InputPolicy& policy);
 
 } // namespace iblkit::bake

@@ -5,6 +5,8 @@
 
 #include <openssl/evp.h>
 
+#include <cstring>
+#include <link.h>
 #include <memory>
 
 namespace iblkit::cache {
@@ -43,6 +45,47 @@ std::string sha256OfFile(const std::filesystem::path& path) {
     Sha256 digest; // a chunk at a time: outputs can be larger than memory wants to hold twice
     image_io::readFileInChunks(path, [&](std::span<const std::byte> chunk) { digest.add(chunk.data(), chunk.size()); });
     return digest.hex();
+}
+
+namespace {
+
+// The GNU build id the linker wrote into the program (a hash of its whole contents), read from its
+// loaded note segments; "" when it has none.
+std::string buildIdOfProgram() {
+    std::string id;
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void* result) {
+            for (int i = 0; i < info->dlpi_phnum; ++i) {
+                const auto& header = info->dlpi_phdr[i];
+                if (header.p_type != PT_NOTE) continue;
+                const auto* at = reinterpret_cast<const unsigned char*>(info->dlpi_addr + header.p_vaddr);
+                const auto* end = at + header.p_memsz;
+                while (at + sizeof(ElfW(Nhdr)) <= end) {
+                    const auto* note = reinterpret_cast<const ElfW(Nhdr)*>(at);
+                    const auto* name = at + sizeof(ElfW(Nhdr));
+                    const auto* descriptor = name + ((note->n_namesz + 3) & ~3u);
+                    if (note->n_type == NT_GNU_BUILD_ID && note->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0) {
+                        *static_cast<std::string*>(result) = sha256Hex(std::as_bytes(std::span(descriptor, note->n_descsz)));
+                        return 1;
+                    }
+                    at = descriptor + ((note->n_descsz + 3) & ~3u);
+                }
+            }
+            return 1; // the first object is the program itself
+        },
+        &id);
+    return id;
+}
+
+} // namespace
+
+const std::string& programDigest() {
+    // Without a build id, the program file's own bytes (slower: it is read whole).
+    static const std::string digest = [] {
+        auto id = buildIdOfProgram();
+        return id.empty() ? sha256OfFile("/proc/self/exe") : id;
+    }();
+    return digest;
 }
 
 } // namespace iblkit::cache

@@ -11,4 +11,9 @@ namespace iblkit::cache {
 std::string sha256Hex(std::span<const std::byte> bytes);
 std::string sha256OfFile(const std::filesystem::path& path); // image_io::ImageError when unreadable or not a regular file
 
+// What tells this build of the running program from every other, taken once: the digest of the
+// GNU build id its linker wrote (a hash of the whole program), else of its file. A cache key that
+// holds it changes with any rebuild — host code, built-in shaders, statically linked libraries.
+const std::string& programDigest();
+
 } // namespace iblkit::cache

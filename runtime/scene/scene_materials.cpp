@@ -93,10 +93,21 @@ bool usesTheDefaultMaterial(const tinygltf::Model& model) {
     return false;
 }
 
+// tinygltf's image loader, except that an image it cannot decode (KTX2, WebP) is left without
+// texels instead of failing the scene: its texture's range is then assumed (textured()).
+bool loadImageOrLeaveEmpty(tinygltf::Image* image, const int index, std::string* error, std::string* warning, int width,
+                           int height, const unsigned char* bytes, int size, void* user) {
+    if (tinygltf::LoadImageData(image, index, error, warning, width, height, bytes, size, user)) return true;
+    image->image.clear();
+    if (error) error->clear();
+    return true;
+}
+
 tinygltf::Model load(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(file, error)) throw SceneError(file.string() + ": error: no such scene file");
     tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
     tinygltf::Model model;
     std::string problem, warning;
     const bool binary = file.extension() == ".glb";

@@ -77,16 +77,18 @@ TEST_F(BakeCache, OneLutServesEveryEnvironment) {
 
 TEST_F(BakeCache, ADamagedEntryIsComputedAgain) {
     bake(settings("first"));
-    fs::path largest; // the specular chain's entry
+    fs::path specular; // the entry whose payload is the specular chain
     for (const auto& entry : fs::recursive_directory_iterator(scratch.path() / "cache"))
-        if (entry.is_regular_file() && (largest.empty() || entry.file_size() > fs::file_size(largest))) largest = entry.path();
+        if (entry.is_regular_file() && fileText(entry.path()).find(R"("name":"specular")") != std::string::npos) specular = entry.path();
+    ASSERT_FALSE(specular.empty());
     {
-        std::fstream file(largest, std::ios::in | std::ios::out | std::ios::binary);
+        std::fstream file(specular, std::ios::in | std::ios::out | std::ios::binary);
         file.seekp(-5, std::ios::end);
         file.put('!');
     }
     const auto second = bake(settings("second"));
     EXPECT_EQ(second.cache.corrupt, 1u);
+    EXPECT_EQ(second.cache.hits, 3u) << "the LUT, irradiance and preview entries are whole";
     EXPECT_TRUE(openedADevice(second));
     EXPECT_EQ(fileText(scratch.path() / "first" / "specular.ktx2"), fileText(scratch.path() / "second" / "specular.ktx2"));
     EXPECT_EQ(bake(settings("third")).cache.misses, 0u) << "written anew";
@@ -110,25 +112,60 @@ TEST_F(BakeCache, BakesRacingOnOneCacheBothEndWell) {
     EXPECT_EQ(bake(settings("after")).cache.misses, 0u);
 }
 
+TEST_F(BakeCache, AValidatedBakeNeitherReadsNorWritesTheCache) {
+    bake(settings("first"));
+    auto validated = settings("validated");
+    validated.context.validation = true;
+    const auto summary = bake(validated);
+    EXPECT_EQ(summary.cache.hits + summary.cache.misses, 0u);
+    EXPECT_TRUE(openedADevice(summary)) << "the layer watched every step";
+}
+
+TEST_F(BakeCache, ACacheThatCannotBeWrittenIsAWarningNotAFailure) {
+    std::ofstream(scratch.path() / "not-a-folder") << "a file";
+    auto s = settings("out");
+    s.cache = scratch.path() / "not-a-folder";
+    const auto summary = bake(s);
+    EXPECT_TRUE(fs::exists(scratch.path() / "out" / "specular.ktx2"));
+    ASSERT_EQ(summary.cacheWarnings.size(), 1u);
+    EXPECT_NE(summary.cacheWarnings[0].find("cannot make the cache folder"), std::string::npos) << summary.cacheWarnings[0];
+}
+
 TEST(BakeKeys, FollowEveryKernelSourceAndHeader) {
     BakeSettings settings;
     EnvironmentInput input;
     const auto plan = planBake(settings, 256, std::nullopt);
     const vulkan::DeviceInfo device{0, "llvmpipe", "cpu", "mesa", "1.3", true};
     const auto base = bakeKeys(settings, input, 256, plan, device, "1");
-    auto files = kernels::embeddedShaderFiles();
-    files.at("hlsl/document/Common/PBR.fxh") += "\n// a changed include\n";
-    const auto changedHeader = bakeKeys(settings, input, 256, plan, device, "1", files);
-    EXPECT_NE(base.specular, changedHeader.specular);
-    EXPECT_NE(base.lut, changedHeader.lut);
-    files = kernels::embeddedShaderFiles();
-    files.at("hlsl/IrradianceCubeCS.hlsl") += "\n";
-    const auto changedIrradiance = bakeKeys(settings, input, 256, plan, device, "1", files);
-    EXPECT_EQ(base.specular, changedIrradiance.specular) << "a kernel the output does not run";
-    EXPECT_NE(base.irradiance, changedIrradiance.irradiance);
+    const auto keysWithChanged = [&](const std::string& path) {
+        auto files = kernels::embeddedShaderFiles();
+        files.at(path) += "\n// changed\n";
+        return bakeKeys(settings, input, 256, plan, device, "1", files);
+    };
+    const auto header = keysWithChanged("hlsl/document/Common/PBR.fxh"); // an include: every output's key
+    EXPECT_TRUE(header.specular != base.specular && header.lut != base.lut && header.irradiance != base.irradiance);
+    const auto prefilter = keysWithChanged("hlsl/PrefilterConvolutionCS.hlsl"); // the default prefilter
+    EXPECT_NE(prefilter.specular, base.specular);
+    EXPECT_NE(prefilter.preview, base.preview) << "the preview shows the specular chain";
+    EXPECT_EQ(prefilter.lut, base.lut);
+    EXPECT_EQ(prefilter.irradiance, base.irradiance);
+    const auto lutGrid = keysWithChanged("hlsl/BrdfLutGridCS.hlsl"); // the default LUT's
+    EXPECT_NE(lutGrid.lut, base.lut);
+    EXPECT_EQ(lutGrid.specular, base.specular);
+    const auto sky = keysWithChanged("hlsl/SkyCubeCS.hlsl"); // the built-in environment's source
+    EXPECT_TRUE(sky.specular != base.specular && sky.irradiance != base.irradiance);
+    EXPECT_EQ(sky.lut, base.lut) << "no environment in the LUT's key";
+    const auto irradiance = keysWithChanged("hlsl/IrradianceCubeCS.hlsl");
+    EXPECT_EQ(irradiance.specular, base.specular) << "a kernel the output does not run";
+    EXPECT_NE(irradiance.irradiance, base.irradiance);
     EXPECT_NE(base.specular, bakeKeys(settings, input, 256, plan, {0, "a GPU", "discrete-gpu", "x", "1.3", false}, "1").specular);
     EXPECT_NE(base.specular, bakeKeys(settings, input, 256, plan, device, "2").specular) << "the tool's version";
     EXPECT_NE(base.specular, bakeKeys(settings, input, 128, planBake(settings, 128, std::nullopt), device, "1").specular);
+    auto otherMethod = settings;
+    otherMethod.samples = 64;
+    const auto sampled = bakeKeys(otherMethod, input, 256, plan, device, "1");
+    EXPECT_NE(sampled.specular, base.specular);
+    EXPECT_EQ(sampled.lut, base.lut);
 }
 
 } // namespace

@@ -102,6 +102,12 @@ TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
     EXPECT_FALSE(planBake(unmeasured, 256, std::nullopt).specularEstimate.deviceMs) << "no curve: no estimate";
 }
 
+TEST(BakePlan, AMipCountTheBenchDidNotMeasureHasNoSpecularErrorEstimate) {
+    const auto plan = planBake(BakeSettings{}, 128, std::nullopt); // 5 mips at 0, .25, .5, .75, 1; the bench's are in fifths
+    EXPECT_TRUE(plan.specularEstimate.deviceMs.has_value());
+    EXPECT_FALSE(plan.specularEstimate.errorRms.has_value()) << "roughness 1's error alone would understate it";
+}
+
 TEST(BakePlan, TheBuiltInCurvesWereMeasuredAtTheSizesTheyAssume) {
     std::ifstream stream("docs/bench/results.json");
     const auto command = nlohmann::json::parse(stream).at("command").get<std::string>();

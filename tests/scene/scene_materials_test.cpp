@@ -55,6 +55,14 @@ TEST_F(SceneMaterials, TheMetallicRoughnessTexturesTexelsScaleByTheFactors) {
     EXPECT_TRUE(material.notes.empty());
 }
 
+TEST_F(SceneMaterials, AnImageTinygltfCannotDecodeIsAssumedToSpanItsWholeRange) {
+    folder.write("mr.ktx2", std::string("\xABKTX 20\xBB\r\n\x1A\n", 12) + std::string(100, '\0'));
+    const auto scene = read(R"({"pbrMetallicRoughness": {"roughnessFactor": 0.5, "metallicRoughnessTexture": {"index": 0}}})",
+                            R"(, "textures": [{"source": 0}], "images": [{"uri": "mr.ktx2"}])");
+    EXPECT_EQ(scene.materials.at(0).roughness, ValueRange::of(0, 0.5));
+    ASSERT_FALSE(scene.materials.at(0).notes.empty());
+}
+
 TEST_F(SceneMaterials, ATextureWhoseTexelsCannotBeReadIsAssumedToSpanItsWholeRange) {
     const auto scene = read(R"({"pbrMetallicRoughness": {"roughnessFactor": 0.8, "metallicRoughnessTexture": {"index": 0}}})",
                             R"(, "textures": [{"extensions": {"KHR_texture_basisu": {"source": 0}}}],

@@ -50,6 +50,7 @@ void printPolicyReports(const bake::BakeSummary& summary) {
     if (negative.count)
         fmt::print(stderr, "clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n",
                    negative.count, negative.mostNegative);
+    for (const auto& warning : summary.cacheWarnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto sanitized = summary.sanitizedTexels;
     if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
 }

@@ -31,8 +31,10 @@ void addPlanCommand(CLI::App& app) {
         settings.outputDir = "plan"; // never written: validateSettings wants one
         if (!arguments->environment.empty()) settings.environment = arguments->environment;
         bake::validateSettings(settings);
+        // Only a cube input has a size of its own; its texels' NaN or negative values are the bake's to judge.
         uint32_t inputCubeSize = 0;
-        if (settings.environment) inputCubeSize = bake::loadEnvironment(*settings.environment, {}).cubeSize;
+        if (settings.environment && bake::isCubeInput(*settings.environment))
+            inputCubeSize = bake::loadEnvironment(*settings.environment, {true, false}).cubeSize;
         const auto size = bake::resolvedSize(settings, inputCubeSize);
         const auto plan = bake::planBake(settings, size, scene::readSceneMaterials(arguments->scene));
         if (arguments->json) fmt::print("{}\n", bake::planJson(plan).dump(2));
