@@ -78,13 +78,11 @@ std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, con
 
 BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                   const vulkan::DeviceInfo& device, const std::string& toolVersion, const kernels::ShaderFiles& files) {
-    std::vector<bool> prefiltered;
-    for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
     auto specular = commonKey("specular", device, toolVersion);
     addSource(specular, input, size, files)
         .add("method", settings.specularMethod)
         .add("samples", resolvedSamples(settings))
-        .add("prefiltered mips", prefiltered)
+        .add("prefiltered mips", plan.prefilteredMips())
         .add("kernels", kernelSourcesDigest(methodKernels(settings.specularMethod), files))
         .add("cluster kernel", kernelSourcesDigest({"ClusterCubeCS"}, files)); // the convolution's pyramids
     auto lut = commonKey("brdf lut", device, toolVersion);

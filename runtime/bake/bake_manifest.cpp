@@ -233,8 +233,9 @@ json bakeManifest(const ManifestFacts& facts) {
     const auto& plan = *facts.plan;
     json irradiance = irradianceJson(facts);
     if (!plan.irradiance) {
+        auto sh = std::move(irradiance.at("sh"));
         irradiance = skippedJson("every lit material of the scene is all metal (or none is lit)");
-        irradiance["sh"] = irradianceJson(facts).at("sh");
+        irradiance["sh"] = std::move(sh);
     }
     json manifest = {{"generator", "iblkit"},
                      {"version", facts.toolVersion},

@@ -145,12 +145,18 @@ void explain(const std::optional<scene::SceneMaterials>& scene, const SceneUse& 
     if (use.anyTransmission) plan.reasons.push_back("a material transmits light: the whole specular chain");
 }
 
+
+NeededOutputs outputsFor(const SceneUse& use) { return {use.anyLit, use.anyNonMetal, use.anyLit}; }
+
 } // namespace
 
-NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene) {
-    const auto use = useOf(scene);
-    return {use.anyLit, use.anyNonMetal, use.anyLit};
+std::vector<bool> BakePlan::prefilteredMips() const {
+    std::vector<bool> prefiltered;
+    for (const auto& mip : mips) prefiltered.push_back(mip.needed);
+    return prefiltered;
 }
+
+NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene) { return outputsFor(useOf(scene)); }
 
 BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::optional<scene::SceneMaterials>& scene,
                   const BenchCurves& curves) {
@@ -166,7 +172,7 @@ BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::option
         }
     }
     plan.roughness = use.roughness;
-    const auto outputs = neededOutputs(scene);
+    const auto outputs = outputsFor(use);
     plan.specular = outputs.specular;
     plan.lut = outputs.lut;
     plan.irradiance = outputs.irradiance;

@@ -42,6 +42,8 @@ struct BakePlan {
     std::vector<std::string> reasons;     // why each output is or is not needed, in words
     std::vector<std::string> unknownExtensions;
     std::vector<std::string> notes;       // what the scene reader assumed
+
+    std::vector<bool> prefilteredMips() const; // by mip: whether it is prefiltered (needed) or filled
 };
 
 // Which outputs the scene's materials need (all of them without a scene): what planBake says,

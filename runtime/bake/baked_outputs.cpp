@@ -127,10 +127,8 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
         if (!source) source.emplace(buildSourceCube(context, input, size, progress));
         return *source;
     };
-    std::vector<bool> prefiltered;
-    for (const auto& mip : plan.mips) prefiltered.push_back(mip.needed);
     auto specular = cached.specular ? uploaded(context, *cached.specular, "R32G32B32A32_SFLOAT")
-                                    : prefilterSpecular(context, sourceCube(), prefiltered, kernels.specular(), progress);
+                                    : prefilterSpecular(context, sourceCube(), plan.prefilteredMips(), kernels.specular(), progress);
     auto lut = !plan.lut      ? blankBrdfLut(context)
                : cached.lut ? uploaded(context, *cached.lut, "R32G32_SFLOAT")
                             : integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress);

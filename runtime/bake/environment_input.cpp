@@ -145,15 +145,14 @@ EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, const Inpu
     if (!path) return {InputKind::BuiltIn, {}, {}, 0, {}, 0, {}};
     std::error_code error;
     if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
-    if (fs::is_directory(*path, error)) return loadFaces(*path, policy);
-    const std::string extension = image_io::lowerExtension(*path);
-    if (extension == ".ktx2" || extension == ".dds") return loadCubeFile(*path, policy);
-    return loadPanorama(*path, policy);
+    if (!isCubeInput(*path)) return loadPanorama(*path, policy);
+    return fs::is_directory(*path, error) ? loadFaces(*path, policy) : loadCubeFile(*path, policy);
 }
 
 bool isCubeInput(const std::filesystem::path& path) {
     std::error_code error;
-    return std::filesystem::is_directory(path, error) || path.extension() == ".ktx2" || path.extension() == ".dds";
+    const std::string extension = image_io::lowerExtension(path);
+    return std::filesystem::is_directory(path, error) || extension == ".ktx2" || extension == ".dds";
 }
 
 } // namespace iblkit::bake

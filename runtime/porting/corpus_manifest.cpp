@@ -114,10 +114,7 @@ private:
             shader.options.stage = compiler::parseStageName(fields_.text(options.at("stage"), where + ".stage"));
             if (!shader.options.stage) fields_.fail(where + ".stage", "is not a stage (vert, frag, comp, ...)");
         }
-        if (options.contains("enable_16bit_types"))
-            shader.options.enable16BitTypes = fields_.flag(options.at("enable_16bit_types"), where + ".enable_16bit_types");
-        if (options.contains("hlsl_version") && fields_.oneOf(options.at("hlsl_version"), where + ".hlsl_version", {"2018", "2021"}) == "2018")
-            shader.options.hlslVersion = lowering::HlslVersion::Hlsl2018;
+        run::readHlslLanguage(fields_, options, where + ".", shader.options.enable16BitTypes, shader.options.hlslVersion);
         return shader;
     }
 

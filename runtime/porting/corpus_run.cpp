@@ -131,6 +131,10 @@ FeatureOutcome judgeFeature(const CorpusFeature& feature, const ShaderOutcome& s
     return outcome;
 }
 
+const ShaderOutcome& CorpusResults::shaderNamed(const std::string& name) const {
+    return *std::find_if(shaders.begin(), shaders.end(), [&](const ShaderOutcome& outcome) { return outcome.name == name; });
+}
+
 bool CorpusResults::agrees() const {
     return std::all_of(features.begin(), features.end(), [](const FeatureOutcome& f) { return f.mismatches.empty(); });
 }
@@ -142,11 +146,7 @@ CorpusResults runCorpus(const CorpusManifest& manifest, const run::RunOptions& r
         results.shaders.push_back(runCorpusShader(shader, runOptions));
         if (progress) progress(shader.name);
     }
-    for (const auto& feature : manifest.features) {
-        const auto shader = std::find_if(results.shaders.begin(), results.shaders.end(),
-                                         [&](const ShaderOutcome& outcome) { return outcome.name == feature.shader; });
-        results.features.push_back(judgeFeature(feature, *shader));
-    }
+    for (const auto& feature : manifest.features) results.features.push_back(judgeFeature(feature, results.shaderNamed(feature.shader)));
     return results;
 }
 

@@ -51,6 +51,7 @@ struct CorpusResults {
     std::vector<ShaderOutcome> shaders;
     std::vector<FeatureOutcome> features;
     bool agrees() const; // every feature as the manifest says
+    const ShaderOutcome& shaderNamed(const std::string& name) const;
 };
 
 // Every shader of the corpus, then every feature judged. `progress` gets a line per shader.

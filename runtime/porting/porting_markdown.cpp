@@ -92,10 +92,6 @@ std::string notes(const FeatureOutcome& outcome, const ShaderOutcome& shader, co
     return cell(joined);
 }
 
-const ShaderOutcome& shaderOf(const CorpusResults& results, const std::string& name) {
-    return *std::find_if(results.shaders.begin(), results.shaders.end(), [&](const ShaderOutcome& s) { return s.name == name; });
-}
-
 std::string groupTable(const CorpusResults& results, FeatureGroup group, const std::filesystem::path& corpusFolder) {
     std::string table = fmt::format("\n## {}\n\n| feature | status | shader |", groupTitle(group));
     std::string rule = "\n|---|---|---|";
@@ -106,7 +102,7 @@ std::string groupTable(const CorpusResults& results, FeatureGroup group, const s
     table += " run | notes |" + rule + ":-:|---|\n";
     for (const auto& outcome : results.features) {
         if (outcome.feature.group != group) continue;
-        const auto& shader = shaderOf(results, outcome.feature.shader);
+        const auto& shader = results.shaderNamed(outcome.feature.shader);
         table += fmt::format("| {} | {} | [`{}`](../hlsl/porting/{}) |", cell(outcome.feature.description),
                              statusName(outcome.status), outcome.feature.shader, outcome.feature.shader);
         for (const auto target : compiler::kCrossTargets) table += " " + formMark(shader, target) + " |";

@@ -32,9 +32,7 @@ public:
             for (const auto& dir : fields_.textArray(root.at("include"), "include")) spec.includeDirs.push_back(folder_ / dir);
         if (root.contains("defines")) spec.defines = fields_.textMap(root.at("defines"), "defines");
         if (root.contains("image_formats")) spec.imageFormats = fields_.textMap(root.at("image_formats"), "image_formats");
-        if (root.contains("enable_16bit_types")) spec.enable16BitTypes = fields_.flag(root.at("enable_16bit_types"), "enable_16bit_types");
-        if (root.contains("hlsl_version") && fields_.oneOf(root.at("hlsl_version"), "hlsl_version", {"2018", "2021"}) == "2018")
-            spec.hlslVersion = lowering::HlslVersion::Hlsl2018;
+        readHlslLanguage(fields_, root, "", spec.enable16BitTypes, spec.hlslVersion);
         if (root.contains("specialization"))
             for (const auto& [name, value] : fields_.object(root.at("specialization"), "specialization").items())
                 spec.specialization[name] = fields_.number(value, "specialization." + name);
@@ -177,6 +175,16 @@ private:
 };
 
 } // namespace
+
+void readHlslLanguage(const JsonFields& fields, const nlohmann::json& object, const std::string& prefix,
+                      bool& enable16BitTypes, lowering::HlslVersion& version) {
+    if (object.contains("enable_16bit_types"))
+        enable16BitTypes = fields.flag(object.at("enable_16bit_types"), prefix + "enable_16bit_types");
+    if (object.contains("hlsl_version"))
+        version = fields.oneOf(object.at("hlsl_version"), prefix + "hlsl_version", {"2018", "2021"}) == "2018"
+                      ? lowering::HlslVersion::Hlsl2018
+                      : lowering::HlslVersion::Hlsl2021;
+}
 
 RunSpec readRunFile(const std::filesystem::path& path) {
     std::error_code error;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "json_fields.hpp"
 #include "lowering.hpp"
 
 #include <array>
@@ -70,6 +71,12 @@ struct RunSpec {
 
 // Reads a run file (docs/run-files.md); paths in it are relative to the file.
 // Throws RunError naming the file, the key and the problem.
+// The HLSL language keys of a run file's object (and of the porting corpus's "compile" entries):
+// "enable_16bit_types" (true or false) and "hlsl_version" ("2018" or "2021"), each left as it is
+// when absent. `prefix` is "" or "key." for messages.
+void readHlslLanguage(const JsonFields& fields, const nlohmann::json& object, const std::string& prefix,
+                      bool& enable16BitTypes, lowering::HlslVersion& version);
+
 RunSpec readRunFile(const std::filesystem::path& path);
 // The same from the file's text; paths in it are relative to `path`'s folder.
 RunSpec parseRunFile(const std::string& text, const std::filesystem::path& path);
