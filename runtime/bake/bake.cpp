@@ -60,7 +60,8 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
 
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
     BakeSummary summary{settings.outputDir, outputs.device, progress.steps(), wall, files,
-                        outputs.sh.shRadiance, clamps, input.sanitizedTexels, input.negative, {}, outputs.cacheWarnings};
+                        outputs.sh.shRadiance, clamps, input.sanitizedTexels, input.negative, {}, outputs.cacheWarnings,
+                        outputs.compiledKernels, outputs.pipelineCacheBytes};
     if (store && !settings.context.validation) summary.cache = store->counts();
     return summary;
 }

@@ -2,6 +2,7 @@
 
 #include "bake_outputs.hpp"
 #include "content_store.hpp"
+#include "kernels/compiled_kernel_cache.hpp"
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
 #include "texel_checks.hpp"
@@ -27,6 +28,8 @@ struct BakeSummary {
     NegativeTexels negativeTexels;        // input texels of negative radiance, clamped to 0
     cache::ContentStore::Counts cache;    // the cache's hits, misses and damaged entries (zeros without a cache)
     std::vector<std::string> cacheWarnings; // why an output could not be cached (the bake went on)
+    kernels::CompiledKernelCache::Counts compiledKernels; // kernels taken from the cache and compiled (zeros without a device)
+    size_t pipelineCacheBytes = 0;        // Vulkan pipeline cache data an earlier bake on this device left
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

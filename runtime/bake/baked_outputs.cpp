@@ -5,6 +5,7 @@
 #include "bake_kernels.hpp"
 #include "cache_error.hpp"
 #include "content_store.hpp"
+#include "device_caches.hpp"
 #include "float_image.hpp"
 #include "kernels/specular_method.hpp"
 #include "vulkan_context.hpp"
@@ -114,14 +115,15 @@ void store(cache::ContentStore* store, const std::string& key, const std::string
     }
 }
 
-// What the cache does not hold, computed on the device, and stored.
-BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
-                             const BakeKeys& keys, Cached cached, BakeProgress& progress, cache::ContentStore* cache) {
-    progress.begin("device");
-    const vulkan::VulkanContext context(settings.context);
-    BakeKernels kernels(context, settings, {plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
-    checkMemory(context, settings, input, size);
-    progress.end();
+// The device's work, each output taken from the cache where it holds it.
+struct DeviceResults {
+    vulkan::Image specular, lut;
+    Irradiance irradiance;
+};
+
+DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
+                       const EnvironmentInput& input, uint32_t size, const BakePlan& plan, const Cached& cached,
+                       BakeProgress& progress) {
     std::optional<vulkan::Image> source;
     const auto sourceCube = [&]() -> vulkan::Image& {
         if (!source) source.emplace(buildSourceCube(context, input, size, progress));
@@ -136,26 +138,55 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
                           ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
                           : computeIrradiance(context, kernels.irradiance(), sourceCube(), settings.irradianceSize, progress,
                                               plan.irradiance);
+    return {std::move(specular), std::move(lut), std::move(irradiance)};
+}
+
+// Every output's values on the host, from the cache or the device.
+BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
+                        const BakePlan& plan, const Cached& cached, DeviceResults& results, BakeProgress& progress) {
     BakedOutputs outputs;
     outputs.device = context.deviceInfo().name;
-    outputs.sh = irradiance.sh;
-    outputs.previewExposure = previewExposure(irradiance.sh);
+    outputs.sh = results.irradiance.sh;
+    outputs.previewExposure = previewExposure(results.irradiance.sh);
     if (cached.previewPng) {
         outputs.previewPng = *cached.previewPng;
     } else {
-        const auto preview = renderPreview(context, kernels.preview(), specular, irradiance.cube, lut, outputs.previewExposure, progress);
+        const auto preview = renderPreview(context, kernels.preview(), results.specular, results.irradiance.cube, results.lut,
+                                           outputs.previewExposure, progress);
         outputs.previewPng = image_io::encodePng(preview.width, preview.height, toRgba8(preview.rgba));
     }
     const auto rgba16 = image_io::PixelFormat::Rgba16Float;
-    if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, specular, "specular", rgba16);
-    if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, lut, "brdf_lut", lutFormatOf(settings));
-    const auto irradianceCube = cached.irradiance ? *cached.irradiance : download(context, irradiance.cube, "irradiance", rgba16);
-    if (plan.irradiance) outputs.irradiance = irradianceCube;
+    if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, results.specular, "specular", rgba16);
+    if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, results.lut, "brdf_lut", lutFormatOf(settings));
+    outputs.irradiance = cached.irradiance ? *cached.irradiance : download(context, results.irradiance.cube, "irradiance", rgba16);
+    return outputs;
+}
+
+// What the cache did not hold, stored; the irradiance cube goes with its SH even where the plan skips it.
+void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const Cached& cached, BakedOutputs& outputs) {
     auto& warnings = outputs.cacheWarnings;
     if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular), warnings);
     if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
-    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(irradiance.sh, irradianceCube), warnings);
+    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(outputs.sh, *outputs.irradiance), warnings);
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
+}
+
+// What the cache does not hold, computed on the device, and stored.
+BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                             const BakeKeys& keys, const Cached& cached, BakeProgress& progress, cache::ContentStore* cache) {
+    progress.begin("device");
+    const vulkan::VulkanContext context(settings.context);
+    DeviceCaches caches(cache, context);
+    BakeKernels kernels(context, settings, {plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
+    checkMemory(context, settings, input, size);
+    progress.end();
+    auto results = runSteps(context, kernels, settings, input, size, plan, cached, progress);
+    auto outputs = downloaded(context, kernels, settings, plan, cached, results, progress);
+    storeComputed(cache, keys, cached, outputs);
+    if (!plan.irradiance) outputs.irradiance.reset();
+    caches.keepPipelineCache(outputs.cacheWarnings);
+    outputs.compiledKernels = caches.compiledKernels();
+    outputs.pipelineCacheBytes = caches.pipelineCacheBytesLoaded();
     return outputs;
 }
 
@@ -184,9 +215,9 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& i
     const auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
     auto cached = lookUp(store, keys, plan, settings);
     progress.end();
-    if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, std::move(cached), progress, store);
+    if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
     BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, *cached.sh,
-                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name, {}};
+                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name, {}, {}, 0};
     return outputs;
 }
 

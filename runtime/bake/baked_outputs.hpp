@@ -6,6 +6,7 @@
 #include "bake_settings.hpp"
 #include "environment_input.hpp"
 #include "gpu_steps.hpp"
+#include "kernels/compiled_kernel_cache.hpp"
 
 #include <optional>
 #include <string>
@@ -27,6 +28,8 @@ struct BakedOutputs {
     float previewExposure = 1;
     std::string device;
     std::vector<std::string> cacheWarnings; // why an output could not be cached
+    kernels::CompiledKernelCache::Counts compiledKernels; // the kernels the cache held, and those compiled
+    size_t pipelineCacheBytes = 0;                        // the Vulkan pipeline cache data an earlier bake left
 };
 
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,

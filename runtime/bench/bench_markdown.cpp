@@ -96,6 +96,25 @@ std::string irradianceTable(const BenchRun& run) {
     return text;
 }
 
+std::string bakeTable(const std::vector<BakeTiming>& bakes) {
+    std::string text = "| bake | environment | computed on the device | wall s | full bake s | speed-up | needed values |\n"
+                       "|---|---|---|---:|---:|---:|---|\n";
+    double row = 0, rowFull = 0;
+    for (const auto& bake : bakes) {
+        text += fmt::format("| {} | {} | {} | {} | {} | {:.2g}× | {} |\n", bake.bake, bake.environment, bake.computed,
+                            seconds(bake.wallMilliseconds), seconds(bake.fullWallMilliseconds),
+                            bake.fullWallMilliseconds / bake.wallMilliseconds, bake.identical ? "the full bake's" : "**differ**");
+        if (bake.bake.starts_with("in a row")) {
+            row += bake.wallMilliseconds;
+            rowFull += bake.fullWallMilliseconds;
+        }
+    }
+    if (row > 0)
+        text += fmt::format("\nThe environments in a row: {} s on one cache against {} s baked in full ({:.2g}×).\n",
+                            seconds(row), seconds(rowFull), rowFull / row);
+    return text;
+}
+
 std::string images(const std::vector<std::string>& plots, const std::string& prefix, const fs::path& relativeFolder) {
     std::string text;
     for (const auto& plot : plots)
@@ -135,11 +154,13 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
             "per side) and the fit (the polynomial's degree). The RG16F column rounds both to half "
             "floats: 0 or 1 steps apart is the target (the converged value's nearest half, or its neighbour).\n"
             "- Irradiance: every texel against the exact sum over the source cube; relative error of luminance.\n\n";
-    text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
-    text += "### Time to reach the targets\n\n" + targetTable(run, environments) + "\n";
-    text += "### Lowest error at each time budget\n\nSpecular by the worst mip's RMS, the LUT by its max error; a budget "
-            "below a row's first time reaches nothing.\n\n" +
-            frontierTable(run, environments) + "\n";
+    if (!environments.empty()) {
+        text += "## Specular\n\n" + images(plots, "specular_summary", relativeFolder);
+        text += "### Time to reach the targets\n\n" + targetTable(run, environments) + "\n";
+        text += "### Lowest error at each time budget\n\nSpecular by the worst mip's RMS, the LUT by its max error; a "
+                "budget below a row's first time reaches nothing.\n\n" +
+                frontierTable(run, environments) + "\n";
+    }
     for (const auto& environment : environments) {
         text += fmt::format("### {}\n\n", environment);
         text += images(plots, "specular_" + environment + ".", relativeFolder);
@@ -149,6 +170,18 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
         text += "## BRDF LUT\n\n" + images(plots, "lut", relativeFolder) + lutTable(run) + "\n";
     if (!resultsOf(run, BenchOutput::Irradiance, {}).empty())
         text += "## Irradiance\n\n" + images(plots, "irradiance", relativeFolder) + irradianceTable(run);
+    if (!run.bakes.empty())
+        text += "\n## Whole bakes: what the cache and the plan skip\n\n"
+                "`iblkit bake` with its default settings, run in the bench's process: each time is the bake's own wall "
+                "time, from loading the environment to the last file written (the program's start is not in it), the "
+                "median of the repeats. \"Empty caches\" is a fresh machine's first bake: the kit's cache and Mesa's "
+                "shader cache (where lavapipe keeps the code LLVM compiled) both empty; every other bake finds Mesa's "
+                "warm. \"In a row\" bakes the Blender worlds one after the other on the cache the sky's bakes filled: "
+                "the LUT and the compiled kernels come from it. The scenes (bench_scenes.cpp) are baked without a "
+                "cache. \"Needed values\" compares the files with the same environment's full bake wherever the plan "
+                "needs values (every output it writes; of the specular chain, the prefiltered mips): bit for bit the "
+                "same is the full bake's error, unchanged.\n\n" +
+                bakeTable(run.bakes);
     return text;
 }
 

@@ -11,7 +11,7 @@
 
 namespace iblkit::bench {
 
-enum class BenchOutput { Specular, Lut, Irradiance };
+enum class BenchOutput { Specular, Lut, Irradiance, Bake };
 std::string_view outputName(BenchOutput output);
 
 struct BenchOptions {
@@ -63,11 +63,24 @@ struct BenchResult {
     uint32_t halfSteps = 0; // LUT only: the furthest texel, rounded to half floats, in half steps from the converged value's nearest half
 };
 
+// A whole bake, as `iblkit bake` runs it with its default settings, timed (BenchOutput::Bake).
+struct BakeTiming {
+    std::string bake;        // what was baked, and with which cache: "full, no cache", "again", "scene: unlit", ...
+    std::string environment;
+    std::string computed;    // what the device computed: "specular mips 1-5, lut, irradiance, preview"; "nothing" when cached
+    double wallMilliseconds = 0;     // the bake's own wall time, load to last file written; median over the repeats
+    double fullWallMilliseconds = 0; // the same environment's full bake without a cache, the same way
+    uint32_t repeat = 0;
+    // Whether every value the bake's plan needs is bit for bit the full bake's, in the files both wrote.
+    bool identical = true;
+};
+
 struct BenchRun {
     std::string device;
     std::string machine;
     std::string date;
     std::vector<BenchResult> results;
+    std::vector<BakeTiming> bakes;
 };
 
 } // namespace iblkit::bench

@@ -39,8 +39,13 @@ nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
                            {"seam_jump", number(result.seamJump)}, {"reference_seam_jump", number(result.referenceSeamJump)},
                            {"mips", mips}});
     }
+    nlohmann::json bakes = nlohmann::json::array();
+    for (const auto& bake : run.bakes)
+        bakes.push_back({{"bake", bake.bake}, {"environment", bake.environment}, {"computed", bake.computed},
+                         {"wall_ms", bake.wallMilliseconds}, {"full_wall_ms", bake.fullWallMilliseconds},
+                         {"repeat", bake.repeat}, {"identical", bake.identical}});
     return {{"machine", run.machine}, {"device", run.device}, {"date", run.date}, {"command", command},
-            {"results", results}};
+            {"results", results}, {"bakes", bakes}};
 }
 
 std::string csvRow(const BenchResult& result, const std::string& mip, double roughness, uint32_t texels, double rms,
@@ -120,7 +125,9 @@ std::vector<std::string> writeBenchResults(const BenchRun& run, const std::strin
     const ScratchFolder scratch;
     const auto json = resultsJson(run, command).dump(2) + "\n";
     files::writeFileAtomically(scratch.path() / "results.json", json);
-    const auto plots = drawPlots(scratch.path() / "results.json", scratch.path());
+    // Whole bakes alone have nothing to plot.
+    const auto plots = run.results.empty() ? std::vector<std::pair<std::string, std::string>>{}
+                                           : drawPlots(scratch.path() / "results.json", scratch.path());
     std::vector<std::string> names;
     fs::create_directories(folder);
     files::AtomicOutput output;

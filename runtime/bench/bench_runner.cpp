@@ -1,5 +1,6 @@
 #include "bench_runner.hpp"
 
+#include "bake_bench.hpp"
 #include "bench_environments.hpp"
 #include "bench_error.hpp"
 #include "gpu_steps.hpp"
@@ -185,6 +186,7 @@ std::string_view outputName(BenchOutput output) {
     case BenchOutput::Specular: return "specular";
     case BenchOutput::Lut: return "lut";
     case BenchOutput::Irradiance: return "irradiance";
+    case BenchOutput::Bake: return "bake";
     }
     return "?";
 }
@@ -195,8 +197,10 @@ BenchRun runBench(const BenchOptions& options) {
     const ReferenceCache cache(cacheDir);
     const auto environments = resolveEnvironments(options.environments, options.size, cacheDir);
     logSpecularLimits(options, methods.specular);
+    // Whole bakes first, while no other device is open.
+    auto bakes = wants(options, BenchOutput::Bake) ? benchBakes(options, environments, cacheDir) : std::vector<BakeTiming>{};
     const vulkan::VulkanContext context(options.context);
-    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}};
+    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}, std::move(bakes)};
     if (wants(options, BenchOutput::Lut)) {
         if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
         LutBench lut(context, options, cache);

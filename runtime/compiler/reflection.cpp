@@ -3,7 +3,6 @@
 #include "compile_error.hpp"
 #include "image_formats.hpp"
 
-#include <nlohmann/json.hpp>
 #include <spirv_cross/spirv_cross.hpp>
 
 #include <algorithm>
@@ -211,56 +210,6 @@ ShaderReflection reflectSpirv(const std::vector<uint32_t>& spirv, const std::str
         throw CompileError(sourceName + ": error: not a SPIR-V module iblkit can read: " + error.what());
     }
     return reflectShader(spirv, registers, entryPoint, *stage);
-}
-
-nlohmann::json toJson(const ShaderReflection& reflection) {
-    using nlohmann::json;
-    const auto membersJson = [](const std::vector<BlockMember>& members) {
-        json array = json::array();
-        for (const auto& member : members)
-            array.push_back({{"name", member.name}, {"type", member.type}, {"offset", member.offset}, {"size", member.size}});
-        return array;
-    };
-    json resources = json::array();
-    for (const auto& resource : reflection.resources) {
-        const auto& location = resource.location;
-        json entry = {{"name", resource.name},
-                      {"kind", resourceKindName(resource.kind)},
-                      {"register", location.vulkanBinding ? json(nullptr) : json(location.registerName())},
-                      {"space", location.vulkanBinding ? json(nullptr) : json(location.space)},
-                      {"explicit_register", location.explicitRegister},
-                      {"vk_binding", location.vulkanBinding},
-                      {"count", location.count},
-                      {"set", location.set},
-                      {"binding", location.binding}};
-        if (!resource.dimension.empty()) {
-            entry["dimension"] = resource.dimension;
-            entry["component_type"] = resource.componentType;
-        }
-        if (resource.kind == ResourceKind::StorageImage || resource.kind == ResourceKind::StorageTexelBuffer) {
-            entry["format"] = resource.format;
-            entry["vulkan_format"] = resource.vulkanFormat;
-        }
-        if (resource.kind == ResourceKind::ConstantBuffer || resource.kind == ResourceKind::StorageBuffer) {
-            entry["size"] = resource.blockSize;
-            entry["members"] = membersJson(resource.members);
-        }
-        if (resource.kind == ResourceKind::StorageBuffer) entry["read_only"] = resource.readOnly;
-        resources.push_back(std::move(entry));
-    }
-    json specialization = json::array();
-    for (const auto& constant : reflection.specializationConstants)
-        specialization.push_back({{"name", constant.name}, {"constant_id", constant.constantId},
-                                  {"type", constant.type}, {"default", constant.defaultValue}});
-    json out = {{"entry_point", reflection.entryPoint},
-                {"stage", stageName(reflection.stage)},
-                {"resources", std::move(resources)},
-                {"push_constants", {{"block", reflection.pushConstantBlock},
-                                    {"size", reflection.pushConstantSize},
-                                    {"members", membersJson(reflection.pushConstants)}}},
-                {"specialization_constants", std::move(specialization)}};
-    if (reflection.stage == ShaderStage::Compute) out["workgroup_size"] = reflection.workgroupSize;
-    return out;
 }
 
 } // namespace iblkit::compiler

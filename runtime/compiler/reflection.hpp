@@ -66,5 +66,7 @@ ShaderReflection reflectSpirv(const std::vector<uint32_t>& spirv, const std::str
                               const std::string& sourceName);
 
 nlohmann::json toJson(const ShaderReflection& reflection);
+// The inverse of toJson. Throws CompileError naming what is missing or malformed.
+ShaderReflection reflectionFromJson(const nlohmann::json& object);
 
 } // namespace iblkit::compiler

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,15 @@ public:
     const vk::raii::Device& device() const { return device_; }
     const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
     const vk::raii::PipelineCache& pipelineCache() const { return pipelineCache_; }
+    // The pipeline cache's contents (vkGetPipelineCacheData), for a later context on this device.
+    std::vector<std::byte> pipelineCacheData() const;
+    // Merges what an earlier context's pipelineCacheData gave into this one's cache, before any
+    // pipeline is made. Data whose header names another device, driver build or header version
+    // is not given to the driver: false.
+    bool addPipelineCacheData(std::span<const std::byte> data) const;
+    // The device and driver build a pipeline cache's data is for: vendor, device and the
+    // pipelineCacheUUID, in hex.
+    std::string pipelineCacheIdentity() const;
     bool validationEnabled() const { return validationEnabled_; }
     const ShaderFeatures& shaderFeatures() const { return shaderFeatures_; } // enabled: all the device has
     uint64_t mostGroupsPerDispatch() const { return mostGroupsPerDispatch_; }

@@ -75,6 +75,30 @@ TEST_F(BakeCache, OneLutServesEveryEnvironment) {
     EXPECT_EQ(fileText(scratch.path() / "sky" / "brdf_lut.ktx2"), fileText(scratch.path() / "grey" / "brdf_lut.ktx2"));
 }
 
+// Kernels and the pipeline cache outlive a bake: a second environment compiles nothing, and its
+// files are those of a bake that compiled everything.
+TEST_F(BakeCache, ASecondEnvironmentCompilesNoKernel) {
+    image_io::writeExr(scratch.path() / "grey.exr", {64, 32, 3, std::vector<float>(64 * 32 * 3, 0.5f)});
+    image_io::writeExr(scratch.path() / "dim.exr", {64, 32, 3, std::vector<float>(64 * 32 * 3, 0.125f)});
+    auto grey = settings("grey");
+    grey.environment = scratch.path() / "grey.exr";
+    const auto first = bake(grey);
+    EXPECT_GT(first.compiledKernels.misses, 0u);
+    auto dim = settings("dim");
+    dim.environment = scratch.path() / "dim.exr";
+    const auto second = bake(dim);
+    EXPECT_EQ(second.compiledKernels.misses, 0u);
+    EXPECT_EQ(second.compiledKernels.hits, first.compiledKernels.misses - 2)
+        << "all but the LUT's grid and resample kernels: the LUT is cached";
+    EXPECT_GE(second.pipelineCacheBytes, 32u) << "the first bake's pipeline cache, header and all";
+    auto uncached = settings("uncached");
+    uncached.environment = dim.environment;
+    uncached.cache.reset();
+    EXPECT_EQ(bake(uncached).compiledKernels.misses, 0u) << "no cache, nothing counted";
+    for (const char* file : {"specular.ktx2", "irradiance.ktx2", "preview.png"})
+        EXPECT_EQ(fileText(scratch.path() / "dim" / file), fileText(scratch.path() / "uncached" / file)) << file;
+}
+
 TEST_F(BakeCache, ADamagedEntryIsComputedAgain) {
     bake(settings("first"));
     fs::path specular; // the entry whose payload is the specular chain

@@ -1,4 +1,5 @@
 // Reflection of what the seed shaders lack: specialization and push constants, cbuffer packing.
+#include "compile_error.hpp"
 #include "compiler.hpp"
 #include "temp_folder.hpp"
 
@@ -95,6 +96,89 @@ void main(uint3 id : SV_DispatchThreadID) { Lut[id.xy] = Layers.SampleLevel(Poin
     EXPECT_EQ(lut.at("format"), "rg32f");
     EXPECT_EQ(lut.at("vulkan_format"), "R32G32_SFLOAT");
     EXPECT_EQ(json.at("workgroup_size"), nlohmann::json::array({8, 8, 1}));
+}
+
+void expectSameMembers(const std::vector<BlockMember>& read, const std::vector<BlockMember>& written) {
+    ASSERT_EQ(read.size(), written.size());
+    for (size_t i = 0; i < read.size(); ++i) {
+        EXPECT_EQ(read[i].name, written[i].name);
+        EXPECT_EQ(read[i].type, written[i].type);
+        EXPECT_EQ(read[i].offset, written[i].offset);
+        EXPECT_EQ(read[i].size, written[i].size);
+    }
+}
+
+void expectSameResource(const ReflectedResource& read, const ReflectedResource& written) {
+    SCOPED_TRACE(written.name);
+    EXPECT_EQ(read.name, written.name);
+    EXPECT_EQ(read.kind, written.kind);
+    EXPECT_EQ(read.dimension, written.dimension);
+    EXPECT_EQ(read.format, written.format);
+    EXPECT_EQ(read.vulkanFormat, written.vulkanFormat);
+    EXPECT_EQ(read.componentType, written.componentType);
+    EXPECT_EQ(read.readOnly, written.readOnly);
+    EXPECT_EQ(read.blockSize, written.blockSize);
+    expectSameMembers(read.members, written.members);
+    const auto &a = read.location, &b = written.location;
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.registerClass, b.registerClass);
+    EXPECT_EQ(a.vulkanBinding, b.vulkanBinding);
+    if (!b.vulkanBinding) {
+        EXPECT_EQ(a.registerIndex, b.registerIndex);
+        EXPECT_EQ(a.space, b.space);
+    }
+    EXPECT_EQ(a.count, b.count);
+    EXPECT_EQ(a.explicitRegister, b.explicitRegister);
+    EXPECT_EQ(a.set, b.set);
+    EXPECT_EQ(a.binding, b.binding);
+}
+
+// Compiled kernels are cached with their reflection as JSON: what is read back must bind as the
+// compile's own does, field by field, for every kind of resource.
+TEST(Reflection, JsonReadsBackEveryField) {
+    const auto written = reflect(R"(
+[[vk::constant_id(3)]] const uint SampleCount = 256;
+struct Push { float Scale; uint Count; };
+[[vk::push_constant]] Push push;
+cbuffer Parameters : register(b2, space1) { float4x4 Transform; float Roughness; uint2 Size; };
+Texture2D<float4> Source : register(t3);
+TextureCube<float4> Environment;
+SamplerState Linear : register(s1);
+StructuredBuffer<float2> Nodes;
+RWStructuredBuffer<uint> Counts : register(u5);
+RWTexture2D<float2> Output;
+Buffer<float> Weights;
+[[vk::binding(7, 2)]] RWTexture2DArray<float4> Faces;
+[numthreads(8, 4, 2)]
+void main(uint3 id : SV_DispatchThreadID) {
+    float4 c = Source.SampleLevel(Linear, float2(id.xy) / Size, 0) + Environment.SampleLevel(Linear, float3(1, 0, 0), 0);
+    Output[id.xy] = c.xy * Transform[0].x * Roughness * Nodes[id.x] * push.Scale * Weights[id.x] * SampleCount;
+    Faces[id] = c;
+    InterlockedAdd(Counts[0], push.Count);
+}
+)");
+    const auto read = reflectionFromJson(toJson(written));
+    EXPECT_EQ(read.entryPoint, written.entryPoint);
+    EXPECT_EQ(read.stage, written.stage);
+    EXPECT_EQ(read.workgroupSize, written.workgroupSize);
+    ASSERT_EQ(read.resources.size(), written.resources.size());
+    for (size_t i = 0; i < read.resources.size(); ++i) expectSameResource(read.resources[i], written.resources[i]);
+    EXPECT_EQ(read.pushConstantBlock, written.pushConstantBlock);
+    EXPECT_EQ(read.pushConstantSize, written.pushConstantSize);
+    expectSameMembers(read.pushConstants, written.pushConstants);
+    ASSERT_EQ(read.specializationConstants.size(), 1u);
+    EXPECT_EQ(read.specializationConstants[0].constantId, 3u);
+    EXPECT_EQ(read.specializationConstants[0].defaultValue, 256);
+    EXPECT_EQ(toJson(read), toJson(written));
+}
+
+TEST(Reflection, MalformedJsonIsACompileError) {
+    auto json = toJson(reflect("RWTexture2D<float> Output;\n[numthreads(1, 1, 1)] void main() { Output[uint2(0, 0)] = 1; }\n"));
+    json["resources"][0]["register"] = "x9";
+    EXPECT_THROW(reflectionFromJson(json), CompileError);
+    json.erase("resources");
+    EXPECT_THROW(reflectionFromJson(json), CompileError);
+    EXPECT_THROW(reflectionFromJson(nlohmann::json::array()), CompileError);
 }
 
 } // namespace

@@ -16,6 +16,7 @@ namespace {
 
 nlohmann::json summaryJson(const bake::BakeSummary& summary) {
     nlohmann::json steps = nlohmann::json::array();
+    const auto& kernels = summary.compiledKernels;
     for (const auto& step : summary.steps)
         steps.push_back({{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}});
     return {{"output", image_io::utf8Name(summary.outputDir)},
@@ -29,7 +30,10 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"sanitized_texels", summary.sanitizedTexels},
             {"negative_texels", summary.negativeTexels.count},
             {"most_negative", summary.negativeTexels.mostNegative},
-            {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}}};
+            {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}},
+            {"compiled_kernels", {{"hits", kernels.hits}, {"misses", kernels.misses}, {"stale", kernels.stale},
+                                  {"damaged", kernels.damaged}}},
+            {"pipeline_cache_bytes", summary.pipelineCacheBytes}};
 }
 
 void printSummary(const bake::BakeSummary& summary) {

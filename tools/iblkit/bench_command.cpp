@@ -15,7 +15,8 @@ namespace {
 std::vector<bench::BenchOutput> parseOutputs(const std::vector<std::string>& names) {
     std::vector<bench::BenchOutput> outputs;
     for (const auto& name : names)
-        for (const auto output : {bench::BenchOutput::Specular, bench::BenchOutput::Lut, bench::BenchOutput::Irradiance})
+        for (const auto output : {bench::BenchOutput::Specular, bench::BenchOutput::Lut, bench::BenchOutput::Irradiance,
+                                  bench::BenchOutput::Bake})
             if (bench::outputName(output) == name) outputs.push_back(output);
     return outputs;
 }
@@ -78,9 +79,11 @@ void addBenchCommand(CLI::App& app) {
     command->add_option("--texels", o.texelsPerMip, "Reference texels per specular mip (default 192)");
     command->add_option("--seed", o.seed, "Seed of the reference texels (default 1)");
     command->add_option("--repeat", o.repeat, "Timed runs per configuration; times are medians (default 3)");
-    command->add_option("--outputs", arguments->outputs, "What to measure (default specular,lut,irradiance)")
+    command->add_option("--outputs", arguments->outputs,
+                        "What to measure (default specular,lut,irradiance; bake: whole default bakes, with and "
+                        "without the cache, and the bench's scenes)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"specular", "lut", "irradiance"}));
+        ->check(CLI::IsMember({"specular", "lut", "irradiance", "bake"}));
     command->add_option("--cache", arguments->cache, "Folder for converged references and downloads "
                                                      "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
     command->add_option("--out", arguments->out, "Folder for results.csv, results.json and the plots")->required();
