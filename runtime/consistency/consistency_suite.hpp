@@ -111,6 +111,7 @@ Bounds ringBounds();
 Bounds previewBounds();
 Bounds pbrProbeBounds();
 Bounds lutProbeBounds();
+Bounds bsdfProbeBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.
 std::string knownDivergence(const std::string& kernel, const std::string& path);

@@ -11,7 +11,7 @@
 
 namespace iblkit::consistency {
 
-// What a probe kernel (PbrProbeCS, LutProbeCS) evaluates: one argument per thread, and for
+// What a probe kernel (PbrProbeCS, LutProbeCS, BsdfProbeCS) evaluates: one argument per thread, and for
 // PbrProbeCS the (i, n) of each argument's Hammersley point.
 struct ProbeArguments {
     std::vector<glm::vec4> values;
@@ -21,6 +21,7 @@ struct ProbeArguments {
 // float4 results per argument (see the shaders' headers).
 inline constexpr uint32_t kPbrProbeResults = 4;
 inline constexpr uint32_t kLutProbeResults = 1;
+inline constexpr uint32_t kBsdfProbeResults = 7;
 
 // The probe's Results, resultsPerArgument float4 per argument, on a Vulkan path and on OpenGL.
 std::vector<float> gpuProbe(const vulkan::VulkanContext& context, const PathProgram& program,
@@ -34,5 +35,8 @@ template <typename T>
 std::vector<T> pbrProbeReference(const ProbeArguments& arguments);
 template <typename T>
 std::vector<T> lutProbeReference(const ProbeArguments& arguments);
+// BsdfProbeCS's twin (reference::path_tracer_*.hpp), laid out as its Results.
+template <typename T>
+std::vector<T> bsdfProbeReference(const ProbeArguments& arguments);
 
 } // namespace iblkit::consistency

@@ -24,6 +24,16 @@ ProbeArguments regularArguments() {
     return arguments;
 }
 
+// (cos θ_L, cos θ_V, roughness, φ_V) about N = +Z: grazing to head on, at two azimuths.
+ProbeArguments bsdfArguments() {
+    ProbeArguments arguments;
+    for (const float cosL : {0.15f, 0.6f, 0.95f})
+        for (const float cosV : {0.3f, 0.8f})
+            for (const float roughness : {0.2f, 0.6f, 1.f})
+                for (const float phiV : {1.f, 4.f}) arguments.values.emplace_back(cosL, cosV, roughness, phiV);
+    return arguments;
+}
+
 } // namespace
 
 void addProbeOutputs(SuiteRun& run) {
@@ -41,6 +51,13 @@ void addProbeOutputs(SuiteRun& run) {
               {lutProbeReference<float>(arguments), lutProbeReference<double>(arguments)},
               [&](const PathProgram& program) { return gpuProbe(run.vulkan, program, arguments, kLutProbeResults); },
               [&](const OpenGlForm& form) { return glProbe(run.gl, form, arguments, kLutProbeResults); });
+    const auto bsdf = bsdfArguments();
+    addOutput(run, {"BsdfProbeCS", fmt::format("the path tracer's BRDF, BTDF, BSDF, D, G, sampling and lights at {} "
+                                               "arguments", bsdf.values.size()),
+                    bsdfProbeBounds()},
+              {bsdfProbeReference<float>(bsdf), bsdfProbeReference<double>(bsdf)},
+              [&](const PathProgram& program) { return gpuProbe(run.vulkan, program, bsdf, kBsdfProbeResults); },
+              [&](const OpenGlForm& form) { return glProbe(run.gl, form, bsdf, kBsdfProbeResults); });
 }
 
 } // namespace iblkit::consistency

@@ -41,6 +41,17 @@ ProbeArguments pbrArguments() {
     return arguments;
 }
 
+// (N.L, N.V, roughness, azimuth of V): both cosines and the roughness at their edges, V beside L and
+// opposite it.
+ProbeArguments bsdfArguments() {
+    ProbeArguments arguments;
+    for (const float cosL : kCosines)
+        for (const float cosV : kCosines)
+            for (const float roughness : kRoughnesses)
+                for (const float phi : {0.f, 3.14159265f}) arguments.values.emplace_back(cosL, cosV, roughness, phi);
+    return arguments;
+}
+
 ProbeArguments lutArguments() {
     ProbeArguments arguments;
     for (const float ndotv : kCosines)
@@ -57,6 +68,8 @@ const float kSmallestMipRoughness = bake::roughnessOfMip(1, uint32_t(std::bit_wi
 bool lutDomain(const glm::vec4& argument) { return argument.x >= kSmallestLutArgument && argument.y >= kSmallestLutArgument; }
 bool anywhere(const glm::vec4&) { return true; }
 bool prefilterDomain(const glm::vec4& argument) { return argument.y >= kSmallestMipRoughness; }
+// The path tracer's functions: no bake calls them (iblkit render will; its domain is judged there).
+bool noBake(const glm::vec4&) { return false; }
 // The sample's roughness is the LUT's (the smaller); xi comes from Hammersley, whose xi.y < 1.
 bool sampleDomain(const glm::vec4& argument) { return argument.y >= kSmallestLutArgument && argument.w < 1.f; }
 
@@ -73,6 +86,10 @@ std::string ofSample(const ProbeArguments& arguments, size_t i) {
     const auto& v = arguments.values[i];
     return fmt::format("xi = ({:g}, {:g}), normal {}, r = {:g}", v.z, v.w, i % 5, v.y);
 }
+std::string ofDirections(const ProbeArguments& arguments, size_t i) {
+    const auto& v = arguments.values[i];
+    return fmt::format("N.L = {:g}, N.V = {:g}, r = {:g}", v.x, v.y, v.z); // at any azimuth and metalness
+}
 std::string ofHammersley(const ProbeArguments& arguments, size_t i) {
     return fmt::format("i = {}, n = {}", arguments.sampleIndices[i].x, arguments.sampleIndices[i].y);
 }
@@ -80,9 +97,15 @@ std::string ofHammersley(const ProbeArguments& arguments, size_t i) {
 // A function's place in its probe's results, how its error is measured and where the bake calls
 // it. Each bound is twice the largest error measured on lavapipe where the bake calls the
 // function, rounded up (why each is what it is: docs/stability.md).
+enum class Probe { Pbr, Lut, Bsdf };
+
+const char* kernelOf(Probe probe) {
+    return probe == Probe::Pbr ? "PbrProbeCS" : probe == Probe::Lut ? "LutProbeCS" : "BsdfProbeCS";
+}
+
 struct ProbeFunction {
     const char* name;
-    bool lutProbe;         // LutProbeCS, else PbrProbeCS
+    Probe probe;
     uint32_t first, count; // floats within one argument's results
     bool relative;
     double bound;
@@ -90,14 +113,28 @@ struct ProbeFunction {
     std::string (*describe)(const ProbeArguments& arguments, size_t index);
 };
 const ProbeFunction kFunctions[] = {
-    {"DistributionGGX (D)", false, 0, 1, true, 1e-6, prefilterDomain, ofNdotvAndRoughness},
-    {"GeometrySmithForIBL (G)", false, 1, 1, false, 2e-7, lutDomain, ofSmith},
-    {"GeometrySchlickGGXForIBL (G1)", false, 2, 1, false, 1e-7, lutDomain, ofNdotvAndRoughness},
-    {"FresnelSchlick (F)", false, 4, 3, false, 2.4e-7, anywhere, ofFresnel},
-    {"ImportanceSampleGGX", false, 8, 3, false, 0.56, sampleDomain, ofSample},
-    {"Hammersley", false, 12, 2, false, 4e-8, anywhere, ofHammersley},
-    {"IntegrateBRDF (1024 samples)", false, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
-    {"IntegrateBrdfQuadrature (the kit's LUT)", true, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
+    {"DistributionGGX (D)", Probe::Pbr, 0, 1, true, 1e-6, prefilterDomain, ofNdotvAndRoughness},
+    {"GeometrySmithForIBL (G)", Probe::Pbr, 1, 1, false, 2e-7, lutDomain, ofSmith},
+    {"GeometrySchlickGGXForIBL (G1)", Probe::Pbr, 2, 1, false, 1e-7, lutDomain, ofNdotvAndRoughness},
+    {"FresnelSchlick (F)", Probe::Pbr, 4, 3, false, 2.4e-7, anywhere, ofFresnel},
+    {"ImportanceSampleGGX", Probe::Pbr, 8, 3, false, 0.56, sampleDomain, ofSample},
+    {"Hammersley", Probe::Pbr, 12, 2, false, 4e-8, anywhere, ofHammersley},
+    {"IntegrateBRDF (1024 samples)", Probe::Pbr, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
+    {"IntegrateBrdfQuadrature (the kit's LUT)", Probe::Lut, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
+    // The path tracer's: no bake calls them, so no bound applies yet; the sweep finds their singular
+    // points and any NaN/Inf a path makes where the references are finite.
+    {"BRDF", Probe::Bsdf, 0, 3, true, 0, noBake, ofDirections},
+    {"D", Probe::Bsdf, 3, 1, true, 0, noBake, ofDirections},
+    {"BTDF", Probe::Bsdf, 4, 3, true, 0, noBake, ofDirections},
+    {"G (direct light)", Probe::Bsdf, 7, 1, false, 0, noBake, ofDirections},
+    {"BSDF", Probe::Bsdf, 8, 4, true, 0, noBake, ofDirections},
+    {"SampleCosineHemisphere", Probe::Bsdf, 12, 3, false, 0, noBake, ofDirections},
+    {"CosineHemispherePdf", Probe::Bsdf, 15, 1, false, 0, noBake, ofDirections},
+    {"SampleGGX", Probe::Bsdf, 16, 3, false, 0, noBake, ofDirections},
+    {"GgxHalfVectorPdf", Probe::Bsdf, 19, 1, true, 0, noBake, ofDirections},
+    {"PointLightTerm", Probe::Bsdf, 20, 3, true, 0, noBake, ofDirections},
+    {"Random", Probe::Bsdf, 23, 1, false, 0, noBake, ofDirections},
+    {"AreaLightTerm, DirectionalLightTerm", Probe::Bsdf, 24, 4, true, 0, noBake, ofDirections},
 };
 
 const char* finiteness(double value) {
@@ -119,7 +156,7 @@ struct ProbeValues {
 
 ProbeRow judge(const ProbeFunction& function, const ProbeArguments& arguments, const ProbeValues& references,
                const std::vector<float>& path, std::string pathName, bool isFloatReference) {
-    ProbeRow row{function.lutProbe ? "LutProbeCS" : "PbrProbeCS", function.name, std::move(pathName)};
+    ProbeRow row{kernelOf(function.probe), function.name, std::move(pathName)};
     row.relative = function.relative;
     row.bound = function.bound;
     for (size_t a = 0; a < arguments.values.size(); ++a)
@@ -153,20 +190,30 @@ void recordSingularPoints(const ProbeFunction& function, const ProbeArguments& a
         }
 }
 
-void sweepProbe(consistency::SuiteRun& run, const char* kernel, const ProbeArguments& arguments, bool lutProbe,
-                ProbeSweep& sweep) {
-    const uint32_t results = lutProbe ? consistency::kLutProbeResults : consistency::kPbrProbeResults;
-    const ProbeValues references{
-        lutProbe ? consistency::lutProbeReference<float>(arguments) : consistency::pbrProbeReference<float>(arguments),
-        lutProbe ? consistency::lutProbeReference<double>(arguments) : consistency::pbrProbeReference<double>(arguments),
-        results * 4};
+uint32_t resultsOf(Probe probe) {
+    return probe == Probe::Pbr ? consistency::kPbrProbeResults
+           : probe == Probe::Lut ? consistency::kLutProbeResults
+                                 : consistency::kBsdfProbeResults;
+}
+
+template <typename T>
+std::vector<T> referenceOf(Probe probe, const ProbeArguments& arguments) {
+    return probe == Probe::Pbr ? consistency::pbrProbeReference<T>(arguments)
+           : probe == Probe::Lut ? consistency::lutProbeReference<T>(arguments)
+                                 : consistency::bsdfProbeReference<T>(arguments);
+}
+
+void sweepProbe(consistency::SuiteRun& run, const ProbeArguments& arguments, Probe probe, ProbeSweep& sweep) {
+    const char* kernel = kernelOf(probe);
+    const uint32_t results = resultsOf(probe);
+    const ProbeValues references{referenceOf<float>(probe, arguments), referenceOf<double>(probe, arguments), results * 4};
     std::vector<std::pair<std::string, std::vector<float>>> paths{{"f. C++ reference, float", references.inFloat}};
     for (const auto path : consistency::kVulkanPaths)
         paths.emplace_back(consistency::pathName(path),
                            consistency::gpuProbe(run.vulkan, run.program(kernel, path), arguments, results));
     paths.emplace_back(consistency::openGlPathName(), consistency::glProbe(run.gl, run.openGl(kernel), arguments, results));
     for (const auto& function : kFunctions) {
-        if (function.lutProbe != lutProbe) continue;
+        if (function.probe != probe) continue;
         for (size_t p = 0; p < paths.size(); ++p)
             sweep.rows.push_back(judge(function, arguments, references, paths[p].second, paths[p].first, p == 0));
         recordSingularPoints(function, arguments, references, sweep.singular);
@@ -179,10 +226,13 @@ ProbeSweep sweepProbes(consistency::SuiteRun& run) {
     ProbeSweep sweep;
     const auto pbr = pbrArguments();
     const auto lut = lutArguments();
+    const auto bsdf = bsdfArguments();
     sweep.pbrArguments = pbr.values.size();
     sweep.lutArguments = lut.values.size();
-    sweepProbe(run, "PbrProbeCS", pbr, false, sweep);
-    sweepProbe(run, "LutProbeCS", lut, true, sweep);
+    sweep.bsdfArguments = bsdf.values.size();
+    sweepProbe(run, pbr, Probe::Pbr, sweep);
+    sweepProbe(run, lut, Probe::Lut, sweep);
+    sweepProbe(run, bsdf, Probe::Bsdf, sweep);
     return sweep;
 }
 

@@ -9,7 +9,7 @@ namespace iblkit::stress {
 
 // One function of a probe kernel on one path over the stress arguments (probe_sweep.cpp).
 struct ProbeRow {
-    std::string kernel; // PbrProbeCS or LutProbeCS
+    std::string kernel; // PbrProbeCS, LutProbeCS or BsdfProbeCS
     std::string function;
     std::string path;
     size_t values = 0;
@@ -41,12 +41,13 @@ struct SingularPoint {
 struct ProbeSweep {
     std::vector<ProbeRow> rows;
     std::vector<SingularPoint> singular;
-    size_t pbrArguments = 0, lutArguments = 0;
+    size_t pbrArguments = 0, lutArguments = 0, bsdfArguments = 0;
 };
 
 // PbrProbeCS and LutProbeCS over every combination of N.V (or N.H) in {0, the smallest
 // denormal, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1}, roughness in {0, the smallest denormal, 1e-4, 0.01,
-// 0.5, 1} and N.L, V.H (or the GGX sample's xi) at their edges, on every path of `run`.
+// 0.5, 1} and N.L, V.H (or the GGX sample's xi) at their edges, and BsdfProbeCS with N.L and N.V
+// in the first set and roughness in the second, on every path of `run`.
 ProbeSweep sweepProbes(consistency::SuiteRun& run);
 
 } // namespace iblkit::stress

@@ -18,11 +18,14 @@ std::string probeTable(const ProbeSweep& sweep) {
         "{{0, the smallest denormal, 1e-7, 1e-4, 0.5, 1 − 1e-7, 1}}, roughness in {{0, the smallest denormal, 1e-4, "
         "0.01, 0.5, 1}}, and N·L, V·H (the GGX sample's ξ) in {{0, the smallest denormal, 1e-7, 0.5, 1 − 1e-7, 1}}; "
         "Hammersley at (i, n) for n from 1 to 2³² − 1. LutProbeCS evaluates the kit's LUT function at the {} (N·V, "
-        "roughness) pairs. A value is *singular in the math* where the C++ double is NaN/Inf, *singular in float* "
+        "roughness) pairs. BsdfProbeCS evaluates the path tracer's functions (`document/Common/Bsdf.fxh`, "
+        "`Sampling.fxh`, `Lights.fxh`, `Random.fxh`) at {} arguments: N·L and N·V in the set above, roughness in "
+        "the set above, V beside L and opposite it, metalness 0, 0.5 and 1; no bake calls them, so their errors are "
+        "reported, not judged, until `iblkit render` does. A value is *singular in the math* where the C++ double is NaN/Inf, *singular in float* "
         "where the C++ float (the shader's arithmetic) is and the double is not; the paths' values there are listed "
         "below, not judged. Everywhere else a path must have no NaN/Inf, and its error against the double, where a "
         "bake calls the function, must be within the bound.\n\n",
-        sweep.pbrArguments, sweep.lutArguments);
+        sweep.pbrArguments, sweep.lutArguments, sweep.bsdfArguments);
     text += "| kernel | function | path | values | singular in the math | singular in float | NaN/Inf elsewhere | max "
             "error vs double where a bake calls it | bound | at the other arguments | |\n"
             "|---|---|---|---|---|---|---|---|---|---|---|\n";

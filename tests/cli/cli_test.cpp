@@ -185,7 +185,7 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
                              "BrdfLutQuadratureCS",    "PrefilterFilteredCS", "PrefilterTableCS",
                              "BrdfLutGridCS",          "BrdfLutResampleCS",   "PrefilterPyramidCS",
                              "PrefilterRingCS",        "BrdfLutFitCS",        "PbrProbeCS",
-                             "LutProbeCS"};
+                             "BsdfProbeCS",            "LutProbeCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;

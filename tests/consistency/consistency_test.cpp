@@ -51,12 +51,12 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 35u * 6u + 5u)
+    ASSERT_EQ(rows.size(), 36u * 6u + 5u)
         << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, the polynomial LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered, table and pyramid "
-           "prefilters at four roughnesses, the pyramid's ring at the two of them wide enough for it, the two probes: the float "
+           "prefilters at four roughnesses, the pyramid's ring at the two of them wide enough for it, the three probes: the float "
            "reference and five paths each; the preview: path a as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 36)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 37)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())
@@ -118,6 +118,26 @@ TEST_F(BrokenVariant, KFromDirectLightingFailsTheLut) {
     const auto rows = run(broken("document/Common/PBR.fxh", "float k = ( a * a ) / 2.f;", "float k = ( ( a + 1.f ) * ( a + 1.f ) ) / 8.f;"));
     expectEveryPathFails(rows, "PrecomputedBrdfCS");
     expectEveryPathFails(rows, "PrecomputedBrdfChunkCS");
+}
+
+// The path tracer's port: each mistake the document invites fails the probe on every path.
+TEST_F(BrokenVariant, KForImageBasedLightingFailsThePathTracersG) {
+    const auto rows = run(broken("document/Common/Bsdf.fxh", "float k = ( Roughness + 1.f ) * ( Roughness + 1.f ) / 8.f;",
+                                 "float k = Roughness * Roughness / 2.f;"));
+    expectEveryPathFails(rows, "BsdfProbeCS");
+}
+
+TEST_F(BrokenVariant, InvertedEtaFailsTheBtdf) {
+    const auto rows = run(broken("document/Common/Bsdf.fxh",
+                                 "float EtaI = LightOutside ? 1.f : X.Eta;\n    float EtaO = LightOutside ? X.Eta : 1.f;",
+                                 "float EtaI = LightOutside ? X.Eta : 1.f;\n    float EtaO = LightOutside ? 1.f : X.Eta;"));
+    expectEveryPathFails(rows, "BsdfProbeCS");
+}
+
+TEST_F(BrokenVariant, TheDocumentsHalfVectorSignFailsTheBtdf) {
+    const auto rows = run(broken("document/Common/Bsdf.fxh", "float3 H = -normalize( EtaI * L + EtaO * V );",
+                                 "float3 H = normalize( EtaI * L + EtaO * V );"));
+    expectEveryPathFails(rows, "BsdfProbeCS");
 }
 
 TEST_F(BrokenVariant, TransposedTangentFrameFailsThePrefilter) {
