@@ -21,6 +21,6 @@ CacheKey& CacheKey::add(std::string_view label, const std::vector<bool>& flags) 
     return add(label, text);
 }
 
-std::string CacheKey::hex() const { return sha256Hex(std::as_bytes(std::span(parts_.data(), parts_.size()))); }
+std::string CacheKey::hex() const { return sha256Hex(std::string_view(parts_)); }
 
 } // namespace iblkit::cache

@@ -17,8 +17,6 @@ namespace fs = std::filesystem;
 constexpr std::string_view kMagic = "IBLKCAS1"; // then the payload's SHA-256 in hex, a newline, the payload
 constexpr size_t kHeader = 8 + 64 + 1;
 
-std::string digestOf(std::string_view payload) { return sha256Hex(std::as_bytes(std::span(payload.data(), payload.size()))); }
-
 std::optional<std::string> readWhole(const fs::path& path) {
     std::error_code error;
     const auto size = fs::file_size(path, error);
@@ -49,7 +47,7 @@ std::optional<std::string> ContentStore::get(const std::string& key) {
         return std::nullopt;
     }
     const bool whole = entry->size() >= kHeader && std::string_view(*entry).substr(0, 8) == kMagic && (*entry)[72] == '\n';
-    if (!whole || entry->compare(8, 64, digestOf(std::string_view(*entry).substr(kHeader))) != 0) {
+    if (!whole || entry->compare(8, 64, sha256Hex(std::string_view(*entry).substr(kHeader))) != 0) {
         std::error_code ignored;
         fs::remove(path, ignored); // damaged: computed again and written anew
         ++counts_.corrupt;
@@ -69,7 +67,7 @@ void ContentStore::put(const std::string& key, std::string_view payload) {
     const auto temporary = temporaryBeside(path);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << kMagic << digestOf(payload) << '\n';
+        out << kMagic << sha256Hex(payload) << '\n';
         out.write(payload.data(), std::streamsize(payload.size()));
         if (!out) {
             fs::remove(temporary, error);

@@ -79,6 +79,8 @@ std::string buildIdOfProgram() {
 
 } // namespace
 
+std::string sha256Hex(std::string_view text) { return sha256Hex(std::as_bytes(std::span(text.data(), text.size()))); }
+
 const std::string& programDigest() {
     // Without a build id, the program file's own bytes (slower: it is read whole).
     static const std::string digest = [] {

@@ -20,8 +20,6 @@ using nlohmann::json;
 
 thread_local CompiledKernelCache* cacheInUse = nullptr;
 
-std::string digestOf(std::string_view text) { return cache::sha256Hex(std::as_bytes(std::span(text.data(), text.size()))); }
-
 std::string keyOf(const compiler::CompileOptions& options) {
     cache::CacheKey key;
     key.add("entry", "compiled kernel").add("program", cache::programDigest());
@@ -49,7 +47,7 @@ std::optional<std::string> includedText(const compiler::CompileOptions& options,
 bool includesUnchanged(const compiler::CompileOptions& options, const json& includes) {
     for (const auto& include : includes) {
         const auto text = includedText(options, include.at(0));
-        if (!text || digestOf(*text) != include.at(1)) return false;
+        if (!text || cache::sha256Hex(*text) != include.at(1)) return false;
     }
     return true;
 }
@@ -57,7 +55,7 @@ bool includesUnchanged(const compiler::CompileOptions& options, const json& incl
 std::string payloadOf(const compiler::CompileOptions& options, const compiler::CompiledShader& shader) {
     json includes = json::array();
     for (const auto& name : shader.includedFiles)
-        if (const auto text = includedText(options, name)) includes.push_back({name, digestOf(*text)});
+        if (const auto text = includedText(options, name)) includes.push_back({name, cache::sha256Hex(*text)});
     const auto* words = reinterpret_cast<const uint8_t*>(shader.spirv.data());
     const json payload = {{"includes", std::move(includes)},
                           {"spirv", json::binary({words, words + shader.spirv.size() * 4})},
