@@ -3,6 +3,7 @@
 #include "kernels/kernel_table.hpp"
 #include "kernels/lut_methods.hpp"
 #include "shader_manifest.hpp"
+#include "render_outputs.hpp"
 #include "suite_run.hpp"
 
 #include <filesystem>
@@ -57,6 +58,7 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
     addConvolutionOutputs(run);
     addFilteredOutputs(run);
     addPreviewOutput(run);
+    addRenderOutputs(run);
     addProbeOutputs(run);
     return {std::move(run.rows), gl.renderer()};
 }
@@ -68,6 +70,7 @@ void addEnvironmentOutputs(SuiteRun& run) {
     addConvolutionOutputs(run);
     addFilteredOutputs(run);
     addPreviewOutput(run);
+    addRenderOutputs(run);
 }
 
 } // namespace iblkit::consistency

@@ -112,6 +112,8 @@ Bounds previewBounds();
 Bounds pbrProbeBounds();
 Bounds lutProbeBounds();
 Bounds bsdfProbeBounds();
+Bounds renderReferenceBounds();
+Bounds splitSumSpheresBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.
 std::string knownDivergence(const std::string& kernel, const std::string& path);

@@ -115,20 +115,25 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
     return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
 }
 
-std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
-    const auto program = glpath::program(context, form);
+GlShadingMaps bindShadingMaps(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
     const auto cubeMap = [&](const MippedCube& cube) {
         return glpath::cubeTexture(context, GL_TEXTURE_CUBE_MAP, cube.size, cube.mips, cube.texels);
     };
-    const auto specular = cubeMap(inputs.specular), irradiance = cubeMap(inputs.irradiance);
-    const auto lut = glpath::texture2D(context, GL_RG32F, GL_RG, inputs.lutSize, inputs.lutSize, inputs.lut);
-    const auto sampler = glpath::linearClampSampler(context);
-    for (const auto& [resource, texture] : {std::pair{"Specular+LinearClamp", &specular},
-                                            std::pair{"IrradianceMap+LinearClamp", &irradiance},
-                                            std::pair{"BrdfLut+LinearClamp", &lut}}) {
+    GlShadingMaps maps{cubeMap(inputs.specular), cubeMap(inputs.irradiance),
+                       glpath::texture2D(context, GL_RG32F, GL_RG, inputs.lutSize, inputs.lutSize, inputs.lut),
+                       glpath::linearClampSampler(context)};
+    for (const auto& [resource, texture] : {std::pair{"Specular+LinearClamp", &maps.specular},
+                                            std::pair{"IrradianceMap+LinearClamp", &maps.irradiance},
+                                            std::pair{"BrdfLut+LinearClamp", &maps.lut}}) {
         glpath::bindTexture(context, form, resource, *texture);
-        context.gl().BindSampler(glpath::slotOf(form, resource), sampler.name());
+        context.gl().BindSampler(glpath::slotOf(form, resource), maps.sampler.name());
     }
+    return maps;
+}
+
+std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
+    const auto program = glpath::program(context, form);
+    const auto maps = bindShadingMaps(context, form, inputs);
     const auto image = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, inputs.width, inputs.height);
     context.gl().BindImageTexture(glpath::slotOf(form, "Preview"), image.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const auto parameters = glpath::bindParameters(context, form, inputs.parameters.members());

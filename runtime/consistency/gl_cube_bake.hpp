@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gl_bake.hpp"
+#include "gl_object.hpp"
 #include "kernels/kernel_steps.hpp"
 #include "suite_inputs.hpp"
 
@@ -28,6 +29,13 @@ std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const Op
                                      const kernels::NamedValues& parameters, uint32_t size);
 std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                     std::span<const glm::vec4> table, uint32_t size);
+// The maps PreviewCS and SplitSumSpheresCS shade with, bound to Specular, IrradianceMap and BrdfLut
+// with the linear clamp sampler; kept alive while the shader runs.
+struct GlShadingMaps {
+    opengl::GlObject specular, irradiance, lut, sampler;
+};
+GlShadingMaps bindShadingMaps(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
+
 std::vector<float> glPreview(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
 
 } // namespace iblkit::consistency

@@ -27,7 +27,8 @@ std::string header(const vulkan::VulkanContext& context, const std::string& open
             "NaN and infinite GPU values; against the C++ reference computed in float (f) and in double (g). "
             "A path passes when it has no NaN or infinity and its largest and RMS errors against both are within the "
             "bounds (max / RMS). The row \"f.\" is the float reference against the double one, shown for scale. "
-            "PreviewCS has no C++ reference: both columns of its rows are against path a.\n"
+            "PreviewCS, RenderReferenceCS, RenderReferenceSplitSumMaterialCS and SplitSumSpheresCS have no C++ reference: "
+            "both columns of their rows are against path a.\n"
             "\n";
     return text;
 }

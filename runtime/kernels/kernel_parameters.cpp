@@ -58,6 +58,19 @@ NamedValues PreviewParameters::members() const {
             {"StripPanelWidth", {double(stripPanelWidth)}}, {"Exposure", {exposure}}};
 }
 
+NamedValues RenderReferenceParameters::members() const {
+    return {{"Columns", {double(columns)}},         {"MetalRows", {double(metalRows)}},
+            {"CellSize", {double(cellSize)}},       {"FirstSample", {double(firstSample)}},
+            {"SampleCount", {double(sampleCount)}}, {"Seed", {double(seed)}},
+            {"LightCount", {double(lightCount)}},   {"DistributionSize", {double(distributionSize)}},
+            {"EnvironmentMip", {double(environmentMip)}}, {"ActiveCount", {double(activeCount)}}};
+}
+
+NamedValues RenderSplitSumParameters::members() const {
+    return {{"Columns", {double(columns)}}, {"MetalRows", {double(metalRows)}},
+            {"CellSize", {double(cellSize)}}, {"SpecularMips", {double(specularMips)}}};
+}
+
 NamedValues ProbeParameters::members() const { return {{"ArgumentCount", {double(argumentCount)}}}; }
 
 } // namespace iblkit::kernels

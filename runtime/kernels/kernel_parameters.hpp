@@ -86,6 +86,23 @@ struct PreviewParameters {
     NamedValues members() const;
 };
 
+// RenderReferenceCS: the sphere grid (Common/SphereGrid.fxh), which samples this dispatch adds (to
+// how many active pixels),
+// the run's seed, the lights, and the face size and mip of the environment's sampling distribution.
+struct RenderReferenceParameters {
+    uint32_t columns = 0, metalRows = 0, cellSize = 0;
+    uint32_t firstSample = 0, sampleCount = 0, seed = 0;
+    uint32_t lightCount = 0, distributionSize = 0, environmentMip = 0;
+    uint32_t activeCount = 0;
+    NamedValues members() const;
+};
+
+// SplitSumSpheresCS: the sphere grid and the specular cube's mip count.
+struct RenderSplitSumParameters {
+    uint32_t columns = 0, metalRows = 0, cellSize = 0, specularMips = 0;
+    NamedValues members() const;
+};
+
 // PbrProbeCS and LutProbeCS: how many arguments to evaluate.
 struct ProbeParameters {
     uint32_t argumentCount = 0;

@@ -186,6 +186,29 @@ void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradian
     kernel.run({image.desc().width, image.desc().height, 1});
 }
 
+void runRenderReference(Kernel& kernel, const RenderReferenceResources& resources, const RenderReferenceParameters& parameters) {
+    auto& program = kernel.program();
+    program.bind("Environment", resources.environment);
+    program.bind("EnvironmentCdf", resources.environmentCdf);
+    program.bind("Lights", resources.lights);
+    program.bind("ActivePixels", resources.activePixels);
+    program.bind("RadianceSum", resources.radianceSum);
+    program.bind("SquareSum", resources.squareSum);
+    kernel.setParameters(parameters.members());
+    kernel.run({parameters.activeCount, 1, 1});
+}
+
+void runRenderSplitSum(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
+                       const vulkan::Sampler& sampler, vulkan::Image& image, const RenderSplitSumParameters& parameters) {
+    kernel.program().bind("Specular", specular);
+    kernel.program().bind("IrradianceMap", irradiance);
+    kernel.program().bind("BrdfLut", brdfLut);
+    kernel.program().bind("LinearClamp", sampler);
+    kernel.program().bind("SplitSum", image);
+    kernel.setParameters(parameters.members());
+    kernel.run({image.desc().width, image.desc().height, 1});
+}
+
 void runProbe(Kernel& kernel, const ProbeBuffers& buffers, uint32_t argumentCount) {
     kernel.program().bind("Arguments", buffers.arguments);
     if (buffers.sampleIndices) kernel.program().bind("SampleIndices", *buffers.sampleIndices);

@@ -114,6 +114,21 @@ void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& tar
 void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
                 const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters);
 
+// RenderReference: one batch of Monte Carlo samples for each active pixel; the sums accumulate.
+struct RenderReferenceResources {
+    vulkan::Image& environment;
+    const vulkan::Buffer& environmentCdf;
+    const vulkan::Buffer& lights;
+    const vulkan::Buffer& activePixels; // parameters.activeCount of them
+    vulkan::Image& radianceSum;
+    vulkan::Image& squareSum;
+};
+void runRenderReference(Kernel& kernel, const RenderReferenceResources& resources, const RenderReferenceParameters& parameters);
+
+// RenderSplitSum: the spheres shaded with the baked maps into `image`.
+void runRenderSplitSum(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
+                       const vulkan::Sampler& sampler, vulkan::Image& image, const RenderSplitSumParameters& parameters);
+
 // Probe: the buffers of PbrProbeCS or LutProbeCS (which has no SampleIndices).
 struct ProbeBuffers {
     const vulkan::Buffer& arguments;

@@ -28,6 +28,8 @@ constexpr std::pair<std::string_view, KernelRole> kRoles[] = {
     {"sh-project", KernelRole::ShProject},
     {"irradiance-cube", KernelRole::IrradianceCube},
     {"preview", KernelRole::Preview},
+    {"render-reference", KernelRole::RenderReference},
+    {"render-split-sum", KernelRole::RenderSplitSum},
     {"probe", KernelRole::Probe},
 };
 

@@ -31,6 +31,8 @@ enum class KernelRole {
     ShProject,
     IrradianceCube,
     Preview,
+    RenderReference, // Environment + EnvironmentCdf + Lights -> RadianceSum + SquareSum; RenderReferenceParameters
+    RenderSplitSum,  // Specular + IrradianceMap + BrdfLut -> SplitSum; RenderSplitSumParameters
     Probe,          // StructuredBuffer Arguments (+ SampleIndices) -> RWStructuredBuffer Results; ProbeParameters
 };
 

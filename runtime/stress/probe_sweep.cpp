@@ -68,7 +68,8 @@ const float kSmallestMipRoughness = bake::roughnessOfMip(1, uint32_t(std::bit_wi
 bool lutDomain(const glm::vec4& argument) { return argument.x >= kSmallestLutArgument && argument.y >= kSmallestLutArgument; }
 bool anywhere(const glm::vec4&) { return true; }
 bool prefilterDomain(const glm::vec4& argument) { return argument.y >= kSmallestMipRoughness; }
-// The path tracer's functions: no bake calls them (iblkit render will; its domain is judged there).
+// The path tracer's functions: only iblkit render calls them, and no bound is set for its domain yet
+// (roughness from 0.05, N.L and N.V above 0): reported, not judged.
 bool noBake(const glm::vec4&) { return false; }
 // The sample's roughness is the LUT's (the smaller); xi comes from Hammersley, whose xi.y < 1.
 bool sampleDomain(const glm::vec4& argument) { return argument.y >= kSmallestLutArgument && argument.w < 1.f; }
@@ -121,7 +122,7 @@ const ProbeFunction kFunctions[] = {
     {"Hammersley", Probe::Pbr, 12, 2, false, 4e-8, anywhere, ofHammersley},
     {"IntegrateBRDF (1024 samples)", Probe::Pbr, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
     {"IntegrateBrdfQuadrature (the kit's LUT)", Probe::Lut, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
-    // The path tracer's: no bake calls them, so no bound applies yet; the sweep finds their singular
+    // The path tracer's: no bound is set for iblkit render's domain yet; the sweep finds their singular
     // points and any NaN/Inf a path makes where the references are finite.
     {"BRDF", Probe::Bsdf, 0, 3, true, 0, noBake, ofDirections},
     {"D", Probe::Bsdf, 3, 1, true, 0, noBake, ofDirections},

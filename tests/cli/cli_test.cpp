@@ -127,7 +127,7 @@ TEST_F(Cli, AnUnknownCommandIsNamedWithTheCommands) {
     const auto result = iblkit({"frobnicate"});
     EXPECT_EQ(result.exitCode, 2);
     EXPECT_EQ(result.err, "iblkit: error: unknown command 'frobnicate' (commands: compile, compile-all, devices, run, "
-                          "consistency, stress, bake, plan, bench, lut-fit, porting)\n");
+                          "consistency, stress, bake, plan, bench, lut-fit, porting, render, render-report)\n");
 }
 
 TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {
@@ -173,8 +173,9 @@ TEST_F(Cli, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
     }
 }
 
-// Every form of every shader but the ESSL of the two chunked accumulators, which read and write an
-// rg32f image: ESSL 3.10 cannot, so that form is refused with its reason and the rest written.
+// Every form of every shader but the ESSL of the two chunked accumulators and the two Monte Carlo
+// references, which read and write an rg32f or rgba32f image: ESSL 3.10 cannot, so that form is
+// refused with its reason and the rest written.
 TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
     const auto result = iblkit({"compile-all", "hlsl/shaders.json", "-o", at("all")});
     ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -185,11 +186,13 @@ TEST_F(Cli, CompileAllPrintsOneLinePerShaderAndWritesEveryForm) {
                              "BrdfLutQuadratureCS",    "PrefilterFilteredCS", "PrefilterTableCS",
                              "BrdfLutGridCS",          "BrdfLutResampleCS",   "PrefilterPyramidCS",
                              "PrefilterRingCS",        "BrdfLutFitCS",        "PbrProbeCS",
-                             "BsdfProbeCS",            "LutProbeCS"};
+                             "BsdfProbeCS",            "LutProbeCS",          "RenderReferenceCS",
+                             "RenderReferenceSplitSumMaterialCS", "SplitSumSpheresCS"};
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), std::size(shaders)) << result.out;
     EXPECT_EQ(result.out.rfind("PrecomputedBrdfCS ", 0), 0u) << result.out;
     for (const char* name : shaders) EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;
-    const std::set<std::string> refusedEssl = {"PrecomputedBrdfChunkCS", "PrefilterSpecularChunkCS"};
+    const std::set<std::string> refusedEssl = {"PrecomputedBrdfChunkCS", "PrefilterSpecularChunkCS", "RenderReferenceCS",
+                                               "RenderReferenceSplitSumMaterialCS"};
     for (const char* name : shaders)
         for (const std::string extension : {".spv", ".glsl", ".essl", ".metal", ".hlsl", ".json"})
             EXPECT_EQ(fs::exists(out / "all" / (name + extension)), !(extension == ".essl" && refusedEssl.contains(name)))

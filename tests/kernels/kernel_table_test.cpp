@@ -20,7 +20,7 @@ TEST(KernelTable, EveryManifestShaderIsAKernelAndCompiles) {
         roles.insert(kernel.role);
         EXPECT_NO_THROW(compileKernel(kernel)) << kernel.name;
     }
-    EXPECT_EQ(roles.size(), 18u) << "every role has a kernel";
+    EXPECT_EQ(roles.size(), 20u) << "every role has a kernel";
 }
 
 TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
@@ -38,6 +38,7 @@ TEST(KernelTable, TheDocumentsShadersAreTheFrozenOnes) {
 TEST(KernelTable, AKernelSharedByMethodsServesEach) {
     // The ring is the pyramid's for wide lobes and the mip chain's.
     EXPECT_EQ(methodsOf(KernelRole::PrefilterRing), (std::vector<std::string>{"pyramid", "mipchain"}));
+    EXPECT_EQ(methodsOf(KernelRole::RenderReference), (std::vector<std::string>{"document", "split-sum-material"}));
     EXPECT_EQ(kernelFor(KernelRole::PrefilterRing, "pyramid").name, "PrefilterRingCS");
     EXPECT_EQ(kernelFor(KernelRole::PrefilterRing, "mipchain").name, "PrefilterRingCS");
     EXPECT_THROW(kernelFor(KernelRole::PrefilterPyramid, "mipchain"), std::out_of_range);

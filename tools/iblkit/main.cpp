@@ -9,6 +9,7 @@
 #include "lut_fit_command.hpp"
 #include "plan_command.hpp"
 #include "porting_command.hpp"
+#include "render_command.hpp"
 #include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);
     iblkit::cli::addPortingCommand(app);
+    iblkit::cli::addRenderCommand(app);
+    iblkit::cli::addRenderReportCommand(app);
     // CLI11 calls a word it does not know "A subcommand is required"; name it and the commands.
     const auto commands = app.get_subcommands({});
     const auto known = [&](const std::string& word) {

@@ -1,0 +1,63 @@
+// iblkit render's split-sum image: the spheres of Common/SphereGrid.fxh shaded with the baked maps,
+// in linear radiance, for the host to hold against RenderReferenceCS's Monte Carlo reference.
+// Opaque spheres take the preview's shading: the documents' split-sum specular plus the
+// irradiance cube's diffuse. Glass takes the split sum's analogue for transmission that engines
+// use (Filament's solid-sphere refraction), here with the sphere's exact chord: the prefiltered
+// radiance along the direction a smooth sphere sends the view ray out, at the roughness's mip,
+// times Schlick's transmission (1 - F) at the way in and at the way out.
+#include "Common/ImageBasedLighting.fxh"
+#include "Common/SphereGrid.fxh"
+
+cbuffer SplitSumParameter : register( b0 )
+{
+    uint Columns;
+    uint MetalRows;
+    uint CellSize;
+    uint SpecularMips;
+};
+
+TextureCube Specular;
+TextureCube IrradianceMap;
+Texture2D<float2> BrdfLut;
+SamplerState LinearClamp;
+RWTexture2D<float4> SplitSum;
+
+float SchlickTransmission( float cosine, float f0 )
+{
+    return 1.f - ( f0 + ( 1.f - f0 ) * pow( 1.f - saturate( cosine ), 5.f ) );
+}
+
+float3 GlassSplitSum( float3 normal, float3 viewDirection, float roughness )
+{
+    float dielectric = ( 1.f - GLASS_ETA ) / ( 1.f + GLASS_ETA );
+    float f0 = dielectric * dielectric;
+    float3 inside = refract( -viewDirection, normal, 1.f / GLASS_ETA );
+    float3 exitPoint = normalize( normal - 2.f * dot( normal, inside ) * inside );
+    float3 outside = refract( inside, -exitPoint, GLASS_ETA );
+    if ( dot( outside, outside ) == 0.f )
+        return ( float3 )0.f; // a smooth sphere refracts every ray out: only float rounding lands here
+    float transmission = SchlickTransmission( dot( normal, viewDirection ), f0 ) * SchlickTransmission( dot( exitPoint, outside ), f0 );
+    return Specular.SampleLevel( LinearClamp, outside, roughness * ( SpecularMips - 1 ) ).rgb * transmission;
+}
+
+[numthreads(8, 8, 1)]
+void main( uint3 DTid : SV_DispatchThreadId )
+{
+    uint2 dims = ( uint2 )0;
+    SplitSum.GetDimensions( dims.x, dims.y );
+    if ( any( DTid.xy >= dims ) )
+        return;
+    SphereHit hit = SphereAt( DTid.xy, Columns, MetalRows, CellSize );
+    float3 color = ( float3 )0.f;
+    float3 viewDirection = float3( 0.f, 0.f, 1.f );
+    SphereMaterial material = hit.Material;
+    if ( hit.Covered && material.Transmittance > 0.f )
+        color = GlassSplitSum( hit.Normal, viewDirection, material.Roughness );
+    else if ( hit.Covered )
+    {
+        float3 f0 = lerp( ( float3 )0.04f, material.Albedo, material.Metalness );
+        color = SplitSumSpecular( hit.Normal, viewDirection, material.Roughness, f0, Specular, SpecularMips, BrdfLut, LinearClamp )
+              + IrradianceDiffuse( hit.Normal, material.Albedo, material.Metalness, IrradianceMap, LinearClamp );
+    }
+    SplitSum[DTid.xy] = float4( color, hit.Covered ? 1.f : 0.f );
+}

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "render/lights_file.hpp"
+#include "render/sphere_images.hpp"
+
+#include "bake_progress.hpp"
+#include "image.hpp"
+#include "kernels/kernel.hpp"
+
+namespace iblkit::render {
+
+struct ReferenceOptions {
+    uint32_t cellSize = 0;
+    uint32_t maxSamples = 0;  // paths per pixel at the most
+    uint32_t seed = 0;
+    double floor = 0;         // luminance below which relative errors are taken against this
+    double standardErrorBound = 0;
+};
+
+struct ReferenceImage {
+    SphereImage mean;                 // the Monte Carlo estimate, alpha the coverage
+    std::vector<float> standardError; // of the mean, RGB per pixel (alpha 0)
+    std::vector<uint32_t> samples;    // paths per pixel (0 outside the spheres)
+    uint32_t minSamples = 0, maxSamples = 0; // over the spheres' pixels
+    double meanSamples = 0;
+    // Over covered pixels: the standard error of the luminance (taking the channels' errors as
+    // fully correlated, which bounds it) against max(luminance, floor).
+    double maxRelativeStandardError = 0;
+    double p99RelativeStandardError = 0;
+    bool converged = false;
+    double deviceMilliseconds = 0;
+};
+
+// RenderReferenceCS over `coverage`'s pixels (the split-sum image, whose alpha marks the spheres),
+// batch after batch, each batch over the pixels still active: a pixel leaves once it has at least
+// kMinSamples paths and its relative standard error is within the bound, or options.maxSamples.
+// Converged when every pixel left by the bound. Stopping each pixel by its own estimate biases it
+// by far less than its standard error. `environment` is the source cube; its sampling
+// distribution comes from its first mip of at most 256² texels.
+ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& environment,
+                               const std::vector<RenderLight>& lights, const SphereImage& coverage,
+                               const ReferenceOptions& options, bake::BakeProgress& progress);
+
+} // namespace iblkit::render

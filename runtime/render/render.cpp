@@ -1,0 +1,85 @@
+#include "render/render.hpp"
+
+#include "render/baked_maps.hpp"
+#include "render/render_error.hpp"
+#include "render/render_files.hpp"
+#include "render/split_sum_render.hpp"
+
+#include "bake_directory.hpp"
+#include "bake_manifest.hpp"
+#include "baked_outputs.hpp"
+#include "environment_input.hpp"
+#include "file_names.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <fstream>
+
+namespace iblkit::render {
+namespace {
+
+// The environment's mean radiance luminance, from its SH projection's constant term.
+double meanLuminance(const bake::IrradianceSh& sh) {
+    const glm::dvec3 mean = sh.shRadiance[0] * 0.282094791773878;
+    return 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+}
+
+void writeManifest(const std::filesystem::path& folder, const std::string& toolVersion,
+                   std::vector<bake::WrittenFile> files) {
+    const nlohmann::json manifest = {{"generator", "iblkit"}, {"version", toolVersion}, {"kind", "render"},
+                                     {"files", bake::filesJson(files)}};
+    std::ofstream stream(folder / "manifest.json", std::ios::binary);
+    stream << manifest.dump(2) << "\n";
+    stream.close();
+    if (!stream) throw RenderError("cannot write " + (folder / "manifest.json").string());
+}
+
+std::string environmentName(const RenderSettings& settings) {
+    return settings.environment ? image_io::utf8Name(settings.environment->filename()) : "built-in sky";
+}
+
+void requireConverged(const ReferenceImage& reference, const RenderSettings& settings) {
+    if (reference.converged) return;
+    throw RenderError(fmt::format("the reference did not converge in {} samples per pixel: a pixel's standard error is "
+                                  "{:.2f} % of its value, past the {:.2f} % bound (raise --samples or --max-standard-error)",
+                                  settings.maxSamples, 100 * reference.maxRelativeStandardError,
+                                  100 * settings.standardErrorBound));
+}
+
+} // namespace
+
+RenderSummary renderSpheres(const RenderSettings& settings, const std::string& toolVersion, bake::BakeProgress& progress) {
+    const auto started = std::chrono::steady_clock::now();
+    validateSettings(settings);
+    const auto lights = settings.lights ? readLightsFile(*settings.lights) : std::vector<RenderLight>{};
+    bake::BakeDirectory directory(settings.outputDir, settings.environment);
+    const auto input = bake::loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
+    const vulkan::VulkanContext context(settings.context);
+    auto maps = bakeMaps(context, input, progress);
+    auto splitSumKernel = bake::makeKernel(context, kernels::KernelRole::RenderSplitSum);
+    kernels::Kernel referenceKernel(
+        context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(settings.bsdf))));
+    const auto splitSum = renderSplitSum(context, splitSumKernel, maps, settings.cellSize, progress);
+    const double floor = kRelativeFloor * std::max(meanLuminance(maps.irradiance.sh), 1e-30);
+    const auto reference = renderReference(context, referenceKernel, maps.source, lights, splitSum,
+                                           {settings.cellSize, settings.maxSamples, settings.seed, floor, settings.standardErrorBound},
+                                           progress);
+    requireConverged(reference, settings);
+    RenderSummary summary;
+    summary.spheres = sphereErrors(reference, splitSum, settings.cellSize, floor);
+    const RenderReport report{environmentName(settings), settings.bsdf, settings.cellSize, floor, settings.standardErrorBound,
+                              bake::previewExposure(maps.irradiance.sh), &reference, &summary.spheres};
+    summary.files = writeRenderFiles(directory.staging(), report, splitSum);
+    writeManifest(directory.staging(), toolVersion, summary.files);
+    directory.commit();
+    summary.outputDir = settings.outputDir;
+    summary.device = context.deviceInfo().name;
+    summary.meanSamples = reference.meanSamples;
+    summary.maxSamples = reference.maxSamples;
+    summary.maxRelativeStandardError = reference.maxRelativeStandardError;
+    summary.wallMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    return summary;
+}
+
+} // namespace iblkit::render

@@ -1,0 +1,31 @@
+#include "render_settings.hpp"
+
+#include "render_error.hpp"
+
+#include <fmt/core.h>
+
+namespace iblkit::render {
+
+std::string_view methodOf(ReferenceBsdf bsdf) {
+    return bsdf == ReferenceBsdf::Document ? "document" : "split-sum-material";
+}
+
+ReferenceBsdf referenceBsdfNamed(std::string_view name) {
+    if (name == "document") return ReferenceBsdf::Document;
+    if (name == "split-sum") return ReferenceBsdf::SplitSum;
+    throw RenderError(fmt::format("--bsdf {}: expected document or split-sum", name));
+}
+
+void validateSettings(const RenderSettings& settings) {
+    if (settings.maxSamples < kMinSamples || settings.maxSamples > kMaxSamples)
+        throw RenderError(fmt::format("--samples {} is out of range: the reference takes {} to {} samples per pixel",
+                                      settings.maxSamples, kMinSamples, kMaxSamples));
+    if (!(settings.standardErrorBound >= kMinStandardErrorBound && settings.standardErrorBound <= kMaxStandardErrorBound))
+        throw RenderError(fmt::format("--max-standard-error {} is out of range: {} to {}", settings.standardErrorBound,
+                                      kMinStandardErrorBound, kMaxStandardErrorBound));
+    if (settings.cellSize < 8 || settings.cellSize > kMaxCellSize)
+        throw RenderError(fmt::format("--cell-size {} is out of range: 8 to {} pixels", settings.cellSize, kMaxCellSize));
+    if (settings.sanitize && settings.strict) throw RenderError("--sanitize and --strict cannot be given together");
+}
+
+} // namespace iblkit::render

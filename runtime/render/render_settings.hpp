@@ -1,0 +1,66 @@
+#pragma once
+
+#include "vulkan_context.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace iblkit::render {
+
+// The sphere grid of hlsl/Common/SphereGrid.fxh: roughness across, metalness down, then glass.
+inline constexpr uint32_t kColumns = 7;   // roughness kMinRoughness, 1/6, ..., 1
+inline constexpr uint32_t kMetalRows = 3; // metalness 0, 0.5, 1
+inline constexpr uint32_t kRows = kMetalRows + 1;
+inline constexpr float kMinRoughness = 0.05f; // MIN_ROUGHNESS
+inline constexpr float kGlassEta = 1.5f;      // GLASS_ETA
+inline constexpr uint32_t kDefaultCellSize = 64;
+inline constexpr uint32_t kMaxCellSize = 256; // 1792 x 1024 pixels: a 1D dispatch of 64-thread groups
+
+// The reference renders in batches, each over the pixels still short of the bound
+// (kDefaultStandardErrorBound of their value): a pixel stops once within it, never before
+// kMinSamples (so that a rare bright path has had its chances to show in the variance), never past
+// --samples. A batch is kBatchSamples paths a pixel, more as fewer pixels remain (up to
+// kMaxBatchSamples, far below llvmpipe's 65535 iterations a loop). At 2 % a pixel's noise moves a
+// sphere's mean error by about 1.6 % at most.
+inline constexpr uint32_t kBatchSamples = 64;
+inline constexpr uint32_t kMaxBatchSamples = 16384;
+inline constexpr uint32_t kMinSamples = 256;
+inline constexpr uint32_t kDefaultMaxSamples = 1u << 20;
+inline constexpr uint32_t kMaxSamples = 1u << 20;
+inline constexpr double kDefaultStandardErrorBound = 0.02;
+inline constexpr double kMinStandardErrorBound = 0.001, kMaxStandardErrorBound = 0.5;
+// Relative errors, and standard errors, are taken against max(value, this share of the
+// environment's mean radiance), so that a pixel the environment leaves nearly black (rough glass
+// in the document's model, which absorbs what it reflects inside) does not turn noise into large
+// ratios.
+inline constexpr double kRelativeFloor = 0.1;
+
+// The reference's BSDF: the path tracer document's as ported, or the same with the split sum's
+// choices of k and of the diffuse weight (hlsl/Common/SplitSumMaterial.fxh), which leaves the
+// split sum's approximation alone in the error. Named as RenderReferenceCS's methods.
+enum class ReferenceBsdf { Document, SplitSum };
+std::string_view methodOf(ReferenceBsdf bsdf);
+// "document" or "split-sum"; throws RenderError for anything else.
+ReferenceBsdf referenceBsdfNamed(std::string_view name);
+
+struct RenderSettings {
+    std::optional<std::filesystem::path> environment; // empty: the built-in sky
+    std::optional<std::filesystem::path> lights;      // a lights file (lights_file.hpp)
+    std::optional<std::filesystem::path> cache;       // the bake's content store
+    std::filesystem::path outputDir;
+    uint32_t maxSamples = kDefaultMaxSamples;
+    double standardErrorBound = kDefaultStandardErrorBound;
+    ReferenceBsdf bsdf = ReferenceBsdf::Document;
+    uint32_t cellSize = kDefaultCellSize;
+    uint32_t seed = 1;
+    bool sanitize = false; // as the bake's --sanitize and --strict
+    bool strict = false;
+    vulkan::ContextOptions context;
+};
+
+// Throws RenderError naming the first setting out of range.
+void validateSettings(const RenderSettings& settings);
+
+} // namespace iblkit::render

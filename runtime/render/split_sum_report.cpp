@@ -1,0 +1,141 @@
+#include "render/split_sum_report.hpp"
+
+#include "render/render_error.hpp"
+
+#include "bench_environments.hpp"
+
+#include <fmt/core.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace iblkit::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct EnvironmentRenders {
+    std::string name;
+    std::map<ReferenceBsdf, RenderSummary> renders;
+};
+
+std::optional<fs::path> environmentPath(const std::string& name, const fs::path& cache) {
+    if (name == "sky") return std::nullopt;
+    for (const char* world : bench::kBlenderWorlds)
+        if (name == world) return bench::blenderWorlds(cache) / (name + ".exr");
+    throw RenderError(fmt::format("no report environment '{}': sky or one of blender's worlds (forest, courtyard, ...)", name));
+}
+
+std::string bsdfName(ReferenceBsdf bsdf) { return bsdf == ReferenceBsdf::Document ? "document" : "split-sum"; }
+
+// Renders into a scratch folder beside the pictures, then keeps its PNGs and errors.json.
+RenderSummary renderInto(const fs::path& pictures, const std::string& environment, ReferenceBsdf bsdf,
+                         const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress) {
+    RenderSettings settings;
+    settings.environment = environmentPath(environment, options.cache);
+    settings.bsdf = bsdf;
+    settings.context = options.context;
+    settings.outputDir = pictures / fmt::format(".render-{}", bsdfName(bsdf));
+    fs::remove_all(settings.outputDir);
+    auto summary = renderSpheres(settings, toolVersion, progress);
+    const auto keep = [&](const char* name, const std::string& as) {
+        fs::copy_file(settings.outputDir / name, pictures / as, fs::copy_options::overwrite_existing);
+    };
+    if (bsdf == ReferenceBsdf::Document) {
+        keep("reference.png", "reference.png");
+        keep("splitsum.png", "splitsum.png");
+    }
+    keep("error.png", fmt::format("error-{}.png", bsdfName(bsdf)));
+    keep("errors.json", fmt::format("errors-{}.json", bsdfName(bsdf)));
+    fs::remove_all(settings.outputDir);
+    return summary;
+}
+
+std::string rowName(const SphereError& sphere) {
+    return sphere.transmittance > 0 ? "glass" : fmt::format("metalness {:g}", sphere.metalness);
+}
+
+// One row per sphere row, one column per roughness: the mean |error|, with the sphere's summed
+// (signed) error after it.
+void writeTable(std::ostream& out, const RenderSummary& render) {
+    out << "| |";
+    for (uint32_t column = 0; column < kColumns; ++column) out << fmt::format(" r {:.2g} |", render.spheres[column].roughness);
+    out << "\n|---|";
+    for (uint32_t column = 0; column < kColumns; ++column) out << "---:|";
+    out << "\n";
+    for (uint32_t row = 0; row < kRows; ++row) {
+        out << "| " << rowName(render.spheres[row * kColumns]) << " |";
+        for (uint32_t column = 0; column < kColumns; ++column) {
+            const auto& sphere = render.spheres[row * kColumns + column];
+            out << fmt::format(" {:.1f} ({:+.1f}) |", 100 * sphere.meanRelativeError, 100 * sphere.totalRelativeError);
+        }
+        out << "\n";
+    }
+}
+
+// The spheres whose mean error against the split sum's own BSDF passes `threshold`.
+std::string spheresPast(const RenderSummary& render, double threshold) {
+    std::string list;
+    for (const auto& sphere : render.spheres)
+        if (sphere.meanRelativeError > threshold)
+            list += fmt::format("{}{} at roughness {:.2g}", list.empty() ? "" : ", ", rowName(sphere), sphere.roughness);
+    return list.empty() ? "none" : list;
+}
+
+void writeEnvironment(std::ostream& out, const EnvironmentRenders& environment) {
+    const auto& document = environment.renders.at(ReferenceBsdf::Document);
+    const auto& matched = environment.renders.at(ReferenceBsdf::SplitSum);
+    out << fmt::format("## {}\n\n", environment.name);
+    out << fmt::format("Reference: {:.0f} paths per pixel on average (up to {}) with the document's BSDF, {:.0f} (up to "
+                       "{}) with the split sum's; every pixel's standard error within {:.2f} % and {:.2f} %.\n\n",
+                       document.meanSamples, document.maxSamples, matched.meanSamples, matched.maxSamples,
+                       100 * document.maxRelativeStandardError, 100 * matched.maxRelativeStandardError);
+    out << fmt::format("Past 10 % from the approximation alone: {}.\n\n", spheresPast(matched, 0.1));
+    out << "Against the path tracer's BSDF as ported (all of the split sum's error):\n\n";
+    writeTable(out, document);
+    out << "\nAgainst the same BSDF with the split sum's k and diffuse weight (the approximation alone):\n\n";
+    writeTable(out, matched);
+    const auto pictures = "split-sum/" + environment.name + "/";
+    out << fmt::format("\n| reference (document's BSDF) | split sum | error, document's BSDF | error, split sum's BSDF |\n"
+                       "|---|---|---|---|\n"
+                       "| ![]({0}reference.png) | ![]({0}splitsum.png) | ![]({0}error-document.png) | "
+                       "![]({0}error-split-sum.png) |\n\n",
+                       pictures);
+}
+
+} // namespace
+
+void writeSplitSumReport(const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress) {
+    std::vector<EnvironmentRenders> environments;
+    for (const auto& name : options.environments) {
+        const auto pictures = options.markdown.parent_path() / "split-sum" / name;
+        fs::create_directories(pictures);
+        EnvironmentRenders renders{name, {}};
+        for (const auto bsdf : {ReferenceBsdf::Document, ReferenceBsdf::SplitSum})
+            renders.renders.emplace(bsdf, renderInto(pictures, name, bsdf, options, toolVersion, progress));
+        environments.push_back(std::move(renders));
+    }
+    std::ostringstream page;
+    page << "# The split sum's error against a Monte Carlo reference\n\n"
+         << fmt::format("Generated by `{}`: do not edit by hand. How the renders are made, and how to read them: "
+                        "[render.md](render.md).\n\n",
+                        options.command)
+         << fmt::format("Each cell is one sphere of `iblkit render`'s grid: the mean over its pixels of |split sum - "
+                        "reference| / reference, in percent, and in brackets the error of the sphere's summed luminance, "
+                        "signed (negative: the split sum is darker). Errors are taken in luminance against max(reference, "
+                        "{:g} % of the environment's mean radiance). Opaque spheres have base colour (1, 0.766, 0.336); "
+                        "glass has eta {:g}; the first column is roughness {:g}, not 0 (hlsl/Common/SphereGrid.fxh). Each "
+                        "environment is measured twice: against the path tracer document's BSDF as ported, and against "
+                        "the same BSDF with the split sum's two choices (k = roughness² / 2 in G, the diffuse weighted by "
+                        "1 - metalness alone: hlsl/Common/SplitSumMaterial.fxh), which leaves the approximation alone. "
+                        "A pixel's noise moves a sphere's mean error by at most about its standard error.\n\n",
+                        100 * kRelativeFloor, kGlassEta, kMinRoughness);
+    for (const auto& environment : environments) writeEnvironment(page, environment);
+    std::ofstream stream(options.markdown, std::ios::binary);
+    stream << page.str();
+    stream.close();
+    if (!stream) throw RenderError("cannot write " + options.markdown.string());
+}
+
+} // namespace iblkit::render

@@ -1,0 +1,87 @@
+// `iblkit render` as a user runs it: a small render's files and its errors.json, and one line and
+// nothing written for every input it refuses, an earlier render left as it was.
+#include "read_file.hpp"
+#include "run_process.hpp"
+#include "temp_folder.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace iblkit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 64 x 32 panorama of radiance 1, uncompressed RGBE.
+fs::path whitePanorama(const TempFolder& folder) {
+    std::string text = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32 +X 64\n";
+    for (int i = 0; i < 64 * 32; ++i) text += std::string("\x80\x80\x80\x81", 4);
+    return folder.write("white.hdr", text);
+}
+
+// A small, quick render; `options` replace its defaults.
+std::vector<std::string> renderCommand(const fs::path& environment, const fs::path& output,
+                                       std::map<std::string, std::string> options = {}) {
+    options.try_emplace("--cell-size", "9");
+    options.try_emplace("--max-standard-error", "0.05");
+    std::vector<std::string> command = {IBLKIT_EXECUTABLE, "render", environment.string(), "-o", output.string(), "-q"};
+    for (const auto& [option, value] : options) command.insert(command.end(), {option, value});
+    return command;
+}
+
+TEST(RenderCli, WritesBothImagesTheErrorMapAndTheTable) {
+    TempFolder folder;
+    const auto output = folder.path() / "render";
+    const auto result = runProcess(renderCommand(whitePanorama(folder), output));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    for (const char* name : {"reference.png", "reference.exr", "standard_error.exr", "splitsum.png", "splitsum.exr",
+                             "error.png", "errors.json", "manifest.json"})
+        EXPECT_TRUE(fs::exists(output / name)) << name;
+    const auto errors = nlohmann::json::parse(readFile(output / "errors.json"));
+    EXPECT_EQ(errors.at("spheres").size(), 28u) << "7 roughnesses by 3 metalnesses and glass";
+    EXPECT_EQ(errors.at("reference").at("converged"), true);
+    EXPECT_LE(errors.at("reference").at("max_relative_standard_error").get<double>(), 0.05);
+    EXPECT_EQ(errors.at("spheres").at(27).at("material"), "glass");
+    EXPECT_GT(errors.at("spheres").at(0).at("pixels").get<int>(), 40);
+}
+
+TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
+    TempFolder folder;
+    const auto environment = whitePanorama(folder);
+    const auto output = folder.path() / "render";
+    const auto refused = [&](const std::map<std::string, std::string>& options, const std::string& expected) {
+        const auto result = runProcess(renderCommand(environment, output, options));
+        EXPECT_NE(result.exitCode, 0) << expected;
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_FALSE(fs::exists(output)) << expected;
+    };
+    refused({{"--samples", "0"}}, "--samples 0 is out of range");
+    refused({{"--cell-size", "4"}}, "--cell-size 4 is out of range");
+    refused({{"--max-standard-error", "0"}}, "--max-standard-error 0 is out of range");
+    refused({{"--lights", (folder.path() / "none.json").string()}}, "does not exist");
+    refused({{"--lights", folder.write("bad.json", R"({"lights": [{"type": "spot"}]})").string()}}, "unknown type \"spot\"");
+    refused({{"--bsdf", "phong"}}, "--bsdf");
+    refused({{"--samples", "256"}, {"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
+}
+
+TEST(RenderCli, AFailedRenderLeavesTheEarlierOneAsItWas) {
+    TempFolder folder;
+    const auto environment = whitePanorama(folder);
+    const auto output = folder.path() / "render";
+    ASSERT_EQ(runProcess(renderCommand(environment, output)).exitCode, 0);
+    const auto before = readFile(output / "errors.json");
+    const auto failed = runProcess(renderCommand(environment, output, {{"--samples", "256"}, {"--max-standard-error", "0.001"}}));
+    EXPECT_NE(failed.err.find("did not converge"), std::string::npos) << failed.err;
+    EXPECT_EQ(readFile(output / "errors.json"), before);
+    const auto notARender = folder.write("notes/todo.txt", "keep me");
+    const auto result = runProcess(renderCommand(environment, notARender.parent_path()));
+    EXPECT_NE(result.err.find("other files"), std::string::npos) << result.err;
+    EXPECT_EQ(readFile(notARender), "keep me");
+}
+
+} // namespace
+} // namespace iblkit::testing
