@@ -3,6 +3,7 @@
 #include "cube_environment.hpp"
 #include "reference_bake.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <numbers>
@@ -41,9 +42,12 @@ PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t column
                             uint32_t sampleCount) {
     PreviewInputs inputs;
     inputs.specular = environmentCube(environment, specularSize, uint32_t(std::bit_width(specularSize)));
-    const auto irradianceSource = environmentCube(environment, specularSize, 3);
-    const auto mip2 = irradianceSource.mip(2);
-    inputs.irradiance = {irradianceSource.mipSize(2), 1, std::vector<float>(mip2.begin(), mip2.end())};
+    // A cube under 4² has no mip 2: its last mip stands in (reading past the chain read whatever
+    // memory followed it, and NaN now and then).
+    const uint32_t chain = std::min(3u, uint32_t(std::bit_width(specularSize)));
+    const auto irradianceSource = environmentCube(environment, specularSize, chain);
+    const auto last = irradianceSource.mip(chain - 1);
+    inputs.irradiance = {irradianceSource.mipSize(chain - 1), 1, std::vector<float>(last.begin(), last.end())};
     inputs.lutSize = lutSize;
     inputs.lut = reference::referenceBrdfLut<float>(lutSize, sampleCount);
     inputs.width = columns * cellSize;

@@ -31,7 +31,7 @@ struct PreviewInputs {
     uint32_t height = 0;
 };
 // A grid of columns x rows spheres of cellSize pixels over the environment at specularSize with
-// all its mips, its mip 2 as the irradiance cube and the float reference LUT.
+// all its mips, its mip 2 (its last, under 4²) as the irradiance cube and the float reference LUT.
 PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t columns, uint32_t rows, uint32_t cellSize, uint32_t specularSize, uint32_t lutSize,
                             uint32_t sampleCount);
 
