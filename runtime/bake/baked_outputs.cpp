@@ -197,9 +197,13 @@ vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options) {
 
 } // namespace
 
-float previewExposure(const IrradianceSh& sh) {
+double meanLuminance(const IrradianceSh& sh) {
     const glm::dvec3 mean = sh.shRadiance[0] * 0.282094791773878;
-    const double luminance = 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+    return 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+}
+
+float previewExposure(const IrradianceSh& sh) {
+    const double luminance = meanLuminance(sh);
     if (!(luminance > 0) || !std::isfinite(luminance)) return 1.f;
     return float(std::clamp(0.4 / luminance, kMinPreviewExposure, kMaxPreviewExposure));
 }

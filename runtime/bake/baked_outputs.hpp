@@ -35,6 +35,9 @@ struct BakedOutputs {
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store);
 
+// The environment's mean radiance, in luminance, from L00 of its SH projection.
+double meanLuminance(const IrradianceSh& sh);
+
 // Exposure that maps the environment's mean luminance (from L00) to 0.4 before the filmic curve,
 // within [kMinPreviewExposure, kMaxPreviewExposure].
 float previewExposure(const IrradianceSh& sh);

@@ -83,17 +83,21 @@ std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const
     return prefiltered.download(context);
 }
 
+GpuShadingMaps uploadShadingMaps(const vulkan::VulkanContext& context, const PreviewInputs& inputs) {
+    const auto& rg32 = vulkan::texelFormatNamed("R32G32_SFLOAT");
+    GpuShadingMaps maps{uploadCube(context, "Specular", inputs.specular), uploadCube(context, "IrradianceMap", inputs.irradiance),
+                        vulkan::Image(context, {"BrdfLut", &rg32, inputs.lutSize, inputs.lutSize, 1, 1, false, false})};
+    maps.lut.upload(context, inputs.lut);
+    return maps;
+}
+
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs) {
     kernels::Kernel kernel(context, program);
-    auto specular = uploadCube(context, "Specular", inputs.specular);
-    auto irradiance = uploadCube(context, "IrradianceMap", inputs.irradiance);
-    const auto& rg32 = vulkan::texelFormatNamed("R32G32_SFLOAT");
-    vulkan::Image lut(context, {"BrdfLut", &rg32, inputs.lutSize, inputs.lutSize, 1, 1, false, false});
-    lut.upload(context, inputs.lut);
+    auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
     vulkan::Image preview(context, {"Preview", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
-    kernels::runPreview(kernel, specular, irradiance, lut, linear, preview, inputs.parameters);
+    kernels::runPreview(kernel, maps.specular, maps.irradiance, maps.lut, linear, preview, inputs.parameters);
     return preview.download(context);
 }
 

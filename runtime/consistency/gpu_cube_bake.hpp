@@ -45,6 +45,12 @@ std::vector<float> gpuMippedPrefilter(const vulkan::VulkanContext& context, cons
 // PrefilterTable: the same, each texel summing `table`'s samples.
 std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const PathProgram& program,
                                      const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size);
+// The maps PreviewCS and SplitSumSpheresCS shade with, uploaded: Specular, IrradianceMap, BrdfLut.
+struct GpuShadingMaps {
+    vulkan::Image specular, irradiance, lut;
+};
+GpuShadingMaps uploadShadingMaps(const vulkan::VulkanContext& context, const PreviewInputs& inputs);
+
 // Preview: the RGBA image, row by row.
 std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathProgram& program,
                               const PreviewInputs& inputs);

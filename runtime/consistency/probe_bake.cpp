@@ -18,13 +18,6 @@ size_t resultBytes(const ProbeArguments& arguments, uint32_t resultsPerArgument)
     return arguments.values.size() * resultsPerArgument * sizeof(glm::vec4);
 }
 
-vulkan::Buffer storageBuffer(const vulkan::VulkanContext& context, std::span<const std::byte> bytes, size_t size,
-                             const std::string& name) {
-    vulkan::Buffer buffer(context, size, vk::BufferUsageFlagBits::eStorageBuffer, name);
-    if (!bytes.empty()) buffer.write(bytes);
-    return buffer;
-}
-
 // PbrProbeCS's ProbeNormals, the same floats.
 template <typename T>
 reference::vec3<T> probeNormal(size_t index) {
@@ -42,12 +35,12 @@ std::vector<float> gpuProbe(const vulkan::VulkanContext& context, const PathProg
                             const ProbeArguments& arguments, uint32_t resultsPerArgument) {
     kernels::Kernel kernel(context, program);
     const auto values = std::as_bytes(std::span(arguments.values));
-    const auto argumentBuffer = storageBuffer(context, values, values.size(), "Arguments");
-    const auto results = storageBuffer(context, {}, resultBytes(arguments, resultsPerArgument), "Results");
+    const auto argumentBuffer = vulkan::storageBuffer(context, values, "Arguments");
+    const auto results = vulkan::storageBuffer(context, {}, "Results", resultBytes(arguments, resultsPerArgument));
     std::optional<vulkan::Buffer> sampleIndices;
     if (!arguments.sampleIndices.empty()) {
         const auto indices = std::as_bytes(std::span(arguments.sampleIndices));
-        sampleIndices.emplace(storageBuffer(context, indices, indices.size(), "SampleIndices"));
+        sampleIndices.emplace(vulkan::storageBuffer(context, indices, "SampleIndices"));
     }
     kernels::runProbe(kernel, {argumentBuffer, sampleIndices ? &*sampleIndices : nullptr, results},
                       uint32_t(arguments.values.size()));

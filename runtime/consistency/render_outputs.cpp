@@ -1,6 +1,7 @@
 #include "render_outputs.hpp"
 
 #include "gl_cube_bake.hpp"
+#include "gpu_cube_bake.hpp"
 #include "gl_support.hpp"
 #include "consistency_suite.hpp"
 #include "suite_inputs.hpp"
@@ -47,23 +48,15 @@ ReferenceInputs referenceInputs(const SuiteOptions& options) {
     return inputs;
 }
 
-template <typename T>
-vulkan::Buffer storageBuffer(const vulkan::VulkanContext& context, std::span<const T> values, const char* name) {
-    const auto bytes = std::as_bytes(values);
-    vulkan::Buffer buffer(context, bytes.size(), vk::BufferUsageFlagBits::eStorageBuffer, name);
-    buffer.write(bytes);
-    return buffer;
-}
-
 // The radiance sums, then the sums of squares.
 std::vector<float> gpuReference(const vulkan::VulkanContext& context, const PathProgram& program, const ReferenceInputs& inputs) {
     kernels::Kernel kernel(context, program);
     vulkan::Image environment(context, {"Environment", &rgba32(), inputs.environment.size, inputs.environment.size, 6,
                                         inputs.environment.mips, false, false});
     environment.upload(context, inputs.environment.texels);
-    const auto cdf = storageBuffer(context, std::span<const float>(inputs.cdf), "EnvironmentCdf");
-    const auto lights = storageBuffer(context, std::span<const float>(inputs.lights), "Lights");
-    const auto pixels = storageBuffer(context, std::span<const uint32_t>(inputs.pixels), "ActivePixels");
+    const auto cdf = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.cdf)), "EnvironmentCdf");
+    const auto lights = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.lights)), "Lights");
+    const auto pixels = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.pixels)), "ActivePixels");
     vulkan::Image sums(context, {"RadianceSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
     vulkan::Image squares(context, {"SquareSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
     const std::vector<float> zeros(sums.valueCount(), 0.f);
@@ -103,18 +96,10 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
 std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathProgram& program, const PreviewInputs& inputs,
                                const kernels::RenderSplitSumParameters& parameters) {
     kernels::Kernel kernel(context, program);
-    const auto upload = [&](const char* name, const MippedCube& cube) {
-        vulkan::Image image(context, {name, &rgba32(), cube.size, cube.size, 6, cube.mips, true, false});
-        image.upload(context, cube.texels);
-        return image;
-    };
-    auto specular = upload("Specular", inputs.specular);
-    auto irradiance = upload("IrradianceMap", inputs.irradiance);
-    vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), inputs.lutSize, inputs.lutSize, 1, 1, false, false});
-    lut.upload(context, inputs.lut);
+    auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
     vulkan::Image image(context, {"SplitSum", &rgba32(), render::kColumns * kCellSize, render::kRows * kCellSize, 1, 1, false, true});
-    kernels::runRenderSplitSum(kernel, specular, irradiance, lut, linear, image, parameters);
+    kernels::runRenderSplitSum(kernel, maps.specular, maps.irradiance, maps.lut, linear, image, parameters);
     return image.download(context);
 }
 

@@ -1,19 +1,13 @@
 #include "environment_distribution.hpp"
 
 #include "reference/cube_geometry.hpp"
+#include "render/sphere_images.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 namespace iblkit::render {
-namespace {
-
-double luminance(std::span<const float> rgba) {
-    return 0.2126 * rgba[0] + 0.7152 * rgba[1] + 0.0722 * rgba[2];
-}
-
-} // namespace
 
 std::vector<float> environmentCdf(std::span<const float> faces, uint32_t faceSize) {
     const size_t texels = size_t(6) * faceSize * faceSize;

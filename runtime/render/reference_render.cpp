@@ -17,14 +17,6 @@ namespace {
 
 constexpr uint32_t kDistributionLimit = 256;
 
-template <typename T>
-vulkan::Buffer storageBuffer(const vulkan::VulkanContext& context, std::span<const T> values, const char* name) {
-    const auto bytes = std::as_bytes(values);
-    vulkan::Buffer buffer(context, std::max<size_t>(bytes.size(), 4), vk::BufferUsageFlagBits::eStorageBuffer, name);
-    if (!bytes.empty()) buffer.write(bytes);
-    return buffer;
-}
-
 struct Distribution {
     std::vector<float> cdf;
     uint32_t faceSize, mip;
@@ -52,11 +44,12 @@ struct Accumulators {
 
 std::span<const float> rgbAt(const std::vector<float>& rgba, size_t pixel) { return std::span(rgba).subspan(4 * pixel, 3); }
 
-// Each pixel's mean and standard error from its sums over its own count of paths.
-void estimate(ReferenceImage& image, const std::vector<float>& sums, const std::vector<float>& squares) {
-    for (size_t pixel = 0; pixel < image.samples.size(); ++pixel) {
+// The mean and standard error of each of `pixels` from its sums over its own count of paths (the
+// other pixels' sums have not moved).
+void estimate(ReferenceImage& image, const std::vector<uint32_t>& pixels, const std::vector<float>& sums,
+              const std::vector<float>& squares) {
+    for (const uint32_t pixel : pixels) {
         const double n = image.samples[pixel];
-        if (n == 0) continue;
         for (size_t c = 0; c < 3; ++c) {
             const double mean = sums[4 * pixel + c] / n;
             const double variance = std::max(squares[4 * pixel + c] / n - mean * mean, 0.0) * n / (n - 1);
@@ -119,9 +112,9 @@ ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Ke
                                const ReferenceOptions& options, bake::BakeProgress& progress) {
     progress.begin("reference");
     const auto distribution = distributionOf(context, environment);
-    const auto cdf = storageBuffer(context, std::span<const float>(distribution.cdf), "EnvironmentCdf");
+    const auto cdf = vulkan::storageBuffer(context, std::as_bytes(std::span(distribution.cdf)), "EnvironmentCdf");
     const auto lightValues = packLights(lights);
-    const auto lightBuffer = storageBuffer(context, std::span<const float>(lightValues), "Lights");
+    const auto lightBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(lightValues)), "Lights");
     Accumulators sums(context, coverage.width, coverage.height);
     const size_t pixels = size_t(coverage.width) * coverage.height;
     ReferenceImage image;
@@ -138,14 +131,14 @@ ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Ke
     kernels::RenderReferenceParameters parameters{kColumns, kMetalRows, options.cellSize, 0, 0, options.seed,
                                                   uint32_t(lights.size()), distribution.faceSize, distribution.mip, 0};
     for (uint32_t done = 0; !active.empty(); done += parameters.sampleCount) {
-        const auto activeBuffer = storageBuffer(context, std::span<const uint32_t>(active), "ActivePixels");
+        const auto activeBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(active)), "ActivePixels");
         parameters.firstSample = done;
         parameters.sampleCount = std::min(batchSamples(covered, active.size()), options.maxSamples - done);
         parameters.activeCount = uint32_t(active.size());
         kernels::runRenderReference(kernel, {environment, cdf, lightBuffer, activeBuffer, sums.radiance, sums.squares},
                                     parameters);
         for (const uint32_t pixel : active) image.samples[pixel] += parameters.sampleCount;
-        estimate(image, sums.radiance.download(context), sums.squares.download(context));
+        estimate(image, active, sums.radiance.download(context), sums.squares.download(context));
         active = stillActive(image, active, options);
         progress.advance(1.0 - double(active.size()) / double(covered),
                          fmt::format("{} paths, {} pixels to go", done + parameters.sampleCount, active.size()));

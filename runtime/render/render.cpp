@@ -19,12 +19,6 @@
 namespace iblkit::render {
 namespace {
 
-// The environment's mean radiance luminance, from its SH projection's constant term.
-double meanLuminance(const bake::IrradianceSh& sh) {
-    const glm::dvec3 mean = sh.shRadiance[0] * 0.282094791773878;
-    return 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
-}
-
 void writeManifest(const std::filesystem::path& folder, const std::string& toolVersion,
                    std::vector<bake::WrittenFile> files) {
     const nlohmann::json manifest = {{"generator", "iblkit"}, {"version", toolVersion}, {"kind", "render"},
@@ -61,7 +55,7 @@ RenderSummary renderSpheres(const RenderSettings& settings, const std::string& t
     kernels::Kernel referenceKernel(
         context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(settings.bsdf))));
     const auto splitSum = renderSplitSum(context, splitSumKernel, maps, settings.cellSize, progress);
-    const double floor = kRelativeFloor * std::max(meanLuminance(maps.irradiance.sh), 1e-30);
+    const double floor = kRelativeFloor * std::max(bake::meanLuminance(maps.irradiance.sh), 1e-30);
     const auto reference = renderReference(context, referenceKernel, maps.source, lights, splitSum,
                                            {settings.cellSize, settings.maxSamples, settings.seed, floor, settings.standardErrorBound},
                                            progress);

@@ -59,7 +59,7 @@ nlohmann::json errorsJson(const RenderReport& report) {
     for (const auto& sphere : *report.spheres) spheres.push_back(sphereJson(sphere));
     return {{"generator", "iblkit"},
             {"environment", report.environment},
-            {"reference_bsdf", report.bsdf == ReferenceBsdf::Document ? "document" : "split-sum"},
+            {"reference_bsdf", nameOf(report.bsdf)},
             {"grid", {{"columns", kColumns}, {"metal_rows", kMetalRows}, {"glass_rows", 1}, {"cell_size", report.cellSize},
                       {"min_roughness", kMinRoughness}, {"glass_eta", kGlassEta}}},
             {"relative_to", {{"floor", report.floor}, {"floor_share_of_mean_radiance", kRelativeFloor}}},

@@ -10,9 +10,11 @@ std::string_view methodOf(ReferenceBsdf bsdf) {
     return bsdf == ReferenceBsdf::Document ? "document" : "split-sum-material";
 }
 
+std::string_view nameOf(ReferenceBsdf bsdf) { return bsdf == ReferenceBsdf::Document ? "document" : "split-sum"; }
+
 ReferenceBsdf referenceBsdfNamed(std::string_view name) {
-    if (name == "document") return ReferenceBsdf::Document;
-    if (name == "split-sum") return ReferenceBsdf::SplitSum;
+    for (const auto bsdf : {ReferenceBsdf::Document, ReferenceBsdf::SplitSum})
+        if (name == nameOf(bsdf)) return bsdf;
     throw RenderError(fmt::format("--bsdf {}: expected document or split-sum", name));
 }
 

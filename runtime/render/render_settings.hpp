@@ -42,7 +42,9 @@ inline constexpr double kRelativeFloor = 0.1;
 // split sum's approximation alone in the error. Named as RenderReferenceCS's methods.
 enum class ReferenceBsdf { Document, SplitSum };
 std::string_view methodOf(ReferenceBsdf bsdf);
-// "document" or "split-sum"; throws RenderError for anything else.
+// "document" or "split-sum", as --bsdf and errors.json name it.
+std::string_view nameOf(ReferenceBsdf bsdf);
+// The ReferenceBsdf of nameOf; throws RenderError for anything else.
 ReferenceBsdf referenceBsdfNamed(std::string_view name);
 
 struct RenderSettings {

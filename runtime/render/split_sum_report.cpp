@@ -27,8 +27,6 @@ std::optional<fs::path> environmentPath(const std::string& name, const fs::path&
     throw RenderError(fmt::format("no report environment '{}': sky or one of blender's worlds (forest, courtyard, ...)", name));
 }
 
-std::string bsdfName(ReferenceBsdf bsdf) { return bsdf == ReferenceBsdf::Document ? "document" : "split-sum"; }
-
 // Renders into a scratch folder beside the pictures, then keeps its PNGs and errors.json.
 RenderSummary renderInto(const fs::path& pictures, const std::string& environment, ReferenceBsdf bsdf,
                          const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress) {
@@ -36,7 +34,7 @@ RenderSummary renderInto(const fs::path& pictures, const std::string& environmen
     settings.environment = environmentPath(environment, options.cache);
     settings.bsdf = bsdf;
     settings.context = options.context;
-    settings.outputDir = pictures / fmt::format(".render-{}", bsdfName(bsdf));
+    settings.outputDir = pictures / fmt::format(".render-{}", nameOf(bsdf));
     fs::remove_all(settings.outputDir);
     auto summary = renderSpheres(settings, toolVersion, progress);
     const auto keep = [&](const char* name, const std::string& as) {
@@ -46,8 +44,8 @@ RenderSummary renderInto(const fs::path& pictures, const std::string& environmen
         keep("reference.png", "reference.png");
         keep("splitsum.png", "splitsum.png");
     }
-    keep("error.png", fmt::format("error-{}.png", bsdfName(bsdf)));
-    keep("errors.json", fmt::format("errors-{}.json", bsdfName(bsdf)));
+    keep("error.png", fmt::format("error-{}.png", nameOf(bsdf)));
+    keep("errors.json", fmt::format("errors-{}.json", nameOf(bsdf)));
     fs::remove_all(settings.outputDir);
     return summary;
 }

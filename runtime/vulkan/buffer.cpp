@@ -3,6 +3,7 @@
 #include "device_memory.hpp"
 #include "vulkan_error.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace iblkit::vulkan {
@@ -34,6 +35,13 @@ std::vector<std::byte> Buffer::read() const {
     std::vector<std::byte> bytes(size_);
     std::memcpy(bytes.data(), mapped_, size_);
     return bytes;
+}
+
+Buffer storageBuffer(const VulkanContext& context, std::span<const std::byte> bytes, const std::string& name,
+                     vk::DeviceSize size) {
+    Buffer buffer(context, std::max<vk::DeviceSize>({size, bytes.size(), 4}), vk::BufferUsageFlagBits::eStorageBuffer, name);
+    if (!bytes.empty()) buffer.write(bytes);
+    return buffer;
 }
 
 } // namespace iblkit::vulkan

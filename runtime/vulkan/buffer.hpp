@@ -31,4 +31,9 @@ private:
     void* mapped_ = nullptr;
 };
 
+// A storage buffer of `size` bytes (at least `bytes`' and 4: Vulkan has no empty buffer) that
+// starts with `bytes`.
+Buffer storageBuffer(const VulkanContext& context, std::span<const std::byte> bytes, const std::string& name,
+                     vk::DeviceSize size = 0);
+
 } // namespace iblkit::vulkan
