@@ -1,6 +1,8 @@
 // The prefilter integral of PrefilterSpecular (N = V = R), summed over the source's texels
 // instead of estimated from samples:
-//   P(N) = sum_t L_t W_t / sum_t W_t,  W_t = D(N.H) N.L over texel t,  N.H = sqrt((1 + N.L) / 2).
+//   P(N) = sum_t L_t W_t / sum_t W_t,  W_t = D(N.H) N.L over texel t,  N.H = sqrt((1 + N.L) / 2),
+// or, with Weighting 1, W_t = D(N.H) G1(N.L), Smith-Schlick's G1 with k = roughness² / 2: the
+// split sum's own reflected lobe at N = V (runtime/shading/lobe_table.hpp).
 // Texels are visited as a tree over ClusterCubeCS's energy pyramid (Barnes & Hut's): a block
 // far from N (its centre more than Refine of its own widths away) is one term, its light taken
 // by its mean direction and spread (the luminance-weighted first moment of its directions), so
@@ -21,6 +23,7 @@ cbuffer PrefilterConvolutionParameter : register( b0 )
     uint FineLevel;  // the finest level it opens blocks into
     float Refine;    // a block opens when its centre is within Refine of its widths of N
     uint HorizonLevel; // the finest level a block across N's horizon opens into
+    uint Weighting;    // 0: N.L, as the documents; 1: G1(N.L)
 };
 
 Texture2DArray<float4> Energy;
@@ -55,25 +58,45 @@ float ClippedMean( float mean, float spread )
     return clipped;
 }
 
+// Smith-Schlick's G1 of the split sum's k = r² / 2 (PBR.fxh's GeometrySchlickGGXForIBL), written
+// as u / (c u + k) with c = 1 - k.
+float WeightingG1( float u, float k )
+{
+    return u / ( ( 1.f - k ) * u + k );
+}
+
 // The lobe's expected weight over light whose N.L has mean `ndotl` and variance `variance`.
-// As a function of N.L = u the lobe is g(u) = D(u) u, D(u) = a2 / (PI (A + B u)^2) with
-// A = (1 + a2) / 2, B = (a2 - 1) / 2: away from the horizon E[g] = g + g'' variance / 2
-// (g'' = D (-B) (4A - 2B u) / (A + B u)^2); across it, the clip max(u, 0) is taken in expectation
-// over a normal spread and D at the mean.
+// As a function of N.L = u the lobe is g(u) = D(u) w(u), D(u) = a2 / (PI (A + B u)^2) with
+// A = (1 + a2) / 2, B = (a2 - 1) / 2, and w(u) = u or G1(u): away from the horizon
+// E[g] = g + g'' variance / 2, g'' / D = w (6 B² / s² ) - 4 B w' / s + w'' with s = A + B u
+// (for w = u: (-B) (4A - 2B u) / s²; for G1: w' = k / (c u + k)², w'' = -2 c k / (c u + k)³);
+// across it, the clip max(u, 0) is taken in expectation over a normal spread, and w and D at the
+// mean.
 float ExpectedLobeWeight( float ndotl, float variance, float roughness )
 {
     float spread = sqrt( max( variance, 0.f ) );
     float D = DistributionGGX( sqrt( 0.5f + 0.5f * max( ndotl, 0.f ) ), roughness );
+    float k = 0.5f * roughness * roughness;
     float expected;
     if ( ndotl > 3.f * spread )
     {
         float a2 = roughness * roughness * roughness * roughness;
         float A = 0.5f + 0.5f * a2, B = 0.5f * a2 - 0.5f;
         float s = A + B * ndotl;
-        expected = ndotl + 0.5f * variance * ( -B ) * ( 4.f * A - 2.f * B * ndotl ) / ( s * s );
+        if ( Weighting == 0u )
+            expected = ndotl + 0.5f * variance * ( -B ) * ( 4.f * A - 2.f * B * ndotl ) / ( s * s );
+        else
+        {
+            float q = ( 1.f - k ) * ndotl + k;
+            float w = ndotl / q, w1 = k / ( q * q ), w2 = -2.f * ( 1.f - k ) * k / ( q * q * q );
+            expected = w + 0.5f * variance * ( w * 6.f * B * B / ( s * s ) - 4.f * B * w1 / s + w2 );
+        }
     }
     else
-        expected = max( ClippedMean( ndotl, spread ), 0.f );
+    {
+        float clipped = max( ClippedMean( ndotl, spread ), 0.f );
+        expected = Weighting == 0u ? clipped : WeightingG1( clipped, k );
+    }
     return D * expected;
 }
 

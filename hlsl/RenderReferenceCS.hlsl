@@ -25,7 +25,6 @@
 cbuffer RenderParameter : register( b0 )
 {
     uint Columns;
-    uint MetalRows;
     uint CellSize;
     uint FirstSample;
     uint SampleCount;
@@ -36,12 +35,16 @@ cbuffer RenderParameter : register( b0 )
     uint ActiveCount;      // how many of ActivePixels to render
 };
 
-// The cube's faces, read texel by texel at the distribution's mip, through the same face selection
-// as the density: the radiance is then constant over each texel the distribution draws from, as
-// the density is. (Filtered, a sun bled half a texel past the texels that sample it, a rare and
-// bright ring only the BSDF's draws found: standard errors of 10 % at 1024 samples; read by a
-// sampler's own face selection, a draw that rounds across a texel's edge met another texel's
-// radiance, and fireflies of 4 % stood out at 7000 samples.)
+// The cube's faces at the distribution's mip, read as a sampler reads them: bilinearly between
+// texel centres, clamped to the edge of each face. The distribution draws a texel, then a point
+// about its centre from a tent one texel wide each way, folded back into the face at its edges:
+// its density is then the same bilinear blend of the texels' probabilities as the radiance is of
+// their values, so a bright texel's radiance and density fall off together and their ratio stays
+// flat. (Read texel by texel, the reference saw the environment as blocks where the split sum,
+// reading through a sampler, sees it smooth: near-mirror spheres differed texel edge by texel
+// edge. Read through a sampler with the density of whole texels, a sun bled half a texel past
+// the texels that sample it, a rare and bright ring only the BSDF's draws found: standard errors
+// of 10 % at 1024 samples.)
 Texture2DArray<float4> Environment;
 // Cumulative probabilities of the distribution's texels, face +X..-Z, row, column, each a multiple
 // of 2^-24 (so a draw of Random() falls in a texel exactly as often as its difference says); the
@@ -82,24 +85,74 @@ float TexelProbability( uint index )
     return EnvironmentCdf[index] - ( index > 0u ? EnvironmentCdf[index - 1u] : 0.f );
 }
 
-// The distribution's texel a direction falls in, and the stretch 1 + x² + y² of the face there.
-uint DistributionTexel( float3 direction, out float stretch )
+// The four texels a direction's bilinear reading blends (clamped to its face's edge), their
+// weights, and the stretch 1 + x² + y² of the face there.
+struct TexelBlend
 {
+    uint Face;
+    uint2 Low, High; // the texels' columns and rows
+    float2 Fraction; // the weight of High along each axis
+    float Stretch;
+};
+
+TexelBlend BlendAt( float3 direction )
+{
+    TexelBlend blend;
     float2 uv;
-    uint face = CubeFaceOf( direction, uv );
-    uint2 texel = min( uint2( uv * DistributionSize ), ( uint2 )( DistributionSize - 1u ) );
+    blend.Face = CubeFaceOf( direction, uv );
+    float2 at = uv * DistributionSize - 0.5f;
+    float2 low = floor( at );
+    blend.Fraction = at - low;
+    int last = int( DistributionSize ) - 1;
+    blend.Low = uint2( clamp( int2( low ), 0, last ) );
+    blend.High = uint2( clamp( int2( low ) + 1, 0, last ) );
     float2 xy = uv * 2.f - 1.f;
-    stretch = 1.f + dot( xy, xy );
+    blend.Stretch = 1.f + dot( xy, xy );
+    return blend;
+}
+
+uint TexelIndex( uint face, uint2 texel )
+{
     return ( face * DistributionSize + texel.y ) * DistributionSize + texel.x;
 }
 
-// The density per solid angle: uniform within a texel of the face, where dA = (1 + x² + y²)^1.5 dω.
+float4 BlendWeights( TexelBlend blend )
+{
+    float2 f = blend.Fraction;
+    return float4( ( 1.f - f.x ) * ( 1.f - f.y ), f.x * ( 1.f - f.y ), ( 1.f - f.x ) * f.y, f.x * f.y );
+}
+
+// The density per solid angle: the texels' probabilities blended per unit of face area, where
+// dA = (1 + x² + y²)^1.5 dω.
 float EnvironmentPdf( float3 direction )
 {
-    float stretch;
-    uint index = DistributionTexel( direction, stretch );
+    TexelBlend blend = BlendAt( direction );
+    float4 w = BlendWeights( blend );
+    float probability = w.x * TexelProbability( TexelIndex( blend.Face, blend.Low ) )
+                      + w.y * TexelProbability( TexelIndex( blend.Face, uint2( blend.High.x, blend.Low.y ) ) )
+                      + w.z * TexelProbability( TexelIndex( blend.Face, uint2( blend.Low.x, blend.High.y ) ) )
+                      + w.w * TexelProbability( TexelIndex( blend.Face, blend.High ) );
     float halfSize = 0.5f * DistributionSize;
-    return TexelProbability( index ) * halfSize * halfSize * stretch * sqrt( stretch );
+    return probability * halfSize * halfSize * blend.Stretch * sqrt( blend.Stretch );
+}
+
+float3 TexelRadiance( uint face, uint2 texel )
+{
+    return Environment.Load( int4( texel, face, EnvironmentMip ) ).rgb;
+}
+
+float3 EnvironmentRadiance( float3 direction )
+{
+    TexelBlend blend = BlendAt( direction );
+    float4 w = BlendWeights( blend );
+    return w.x * TexelRadiance( blend.Face, blend.Low ) + w.y * TexelRadiance( blend.Face, uint2( blend.High.x, blend.Low.y ) )
+         + w.z * TexelRadiance( blend.Face, uint2( blend.Low.x, blend.High.y ) ) + w.w * TexelRadiance( blend.Face, blend.High );
+}
+
+// A draw from the tent 1 - |t| on [-1, 1].
+float TentDraw( float u )
+{
+    return u < 0.5f ? sqrt( 2.f * u ) - 1.f : 1.f - sqrt( 2.f - 2.f * u );
 }
 
 float3 SampleEnvironment( inout RandomState rng, out float pdf )
@@ -115,20 +168,13 @@ float3 SampleEnvironment( inout RandomState rng, out float pdf )
     }
     uint face = low / ( DistributionSize * DistributionSize );
     uint texel = low % ( DistributionSize * DistributionSize );
-    float2 jitter = float2( Random( rng ), Random( rng ) );
-    float2 uv = ( float2( texel % DistributionSize, texel / DistributionSize ) + jitter ) / DistributionSize;
-    float3 direction = CubeFaceDirection( face, uv );
+    float2 offset = float2( TentDraw( Random( rng ) ), TentDraw( Random( rng ) ) );
+    float2 at = float2( texel % DistributionSize, texel / DistributionSize ) + 0.5f + offset;
+    float size = float( DistributionSize );
+    at = min( abs( at ), 2.f * size - abs( at ) ); // folded back into the face at its edges
+    float3 direction = CubeFaceDirection( face, at / size );
     pdf = EnvironmentPdf( direction );
     return direction;
-}
-
-float3 EnvironmentRadiance( float3 direction )
-{
-    float stretch;
-    uint index = DistributionTexel( direction, stretch );
-    uint texel = index % ( DistributionSize * DistributionSize );
-    uint face = index / ( DistributionSize * DistributionSize );
-    return Environment.Load( int4( texel % DistributionSize, texel / DistributionSize, face, EnvironmentMip ) ).rgb;
 }
 
 // An orthonormal frame about n, for directions the samplers draw about +Z.
@@ -233,12 +279,12 @@ Vertex MakeVertex( float3 position, float3 V, SphereMaterial material )
     vertex.X.Roughness = material.Roughness;
     vertex.X.Metalness = material.Metalness;
     vertex.X.Transmittance = material.Transmittance;
-    vertex.X.Eta = GLASS_ETA;
+    vertex.X.Eta = material.Eta;
     vertex.V = V;
     bool outside = dot( position, V ) >= 0.f;
     vertex.NormalOnV = outside ? position : -position;
-    vertex.EtaV = outside ? 1.f : GLASS_ETA;
-    vertex.EtaL = outside ? GLASS_ETA : 1.f;
+    vertex.EtaV = outside ? 1.f : material.Eta;
+    vertex.EtaL = outside ? material.Eta : 1.f;
     vertex.SpecularShare = lerp( 0.5f, 1.f, material.Metalness );
     return vertex;
 }
@@ -356,7 +402,7 @@ void main( uint3 DTid : SV_DispatchThreadId )
     RadianceSum.GetDimensions( dims.x, dims.y );
     uint index = ActivePixels[DTid.x];
     uint2 pixel = uint2( index % dims.x, index / dims.x );
-    SphereHit hit = SphereAt( pixel, Columns, MetalRows, CellSize );
+    SphereHit hit = SphereAt( pixel, Columns, CellSize );
     if ( !hit.Covered || pixel.y >= dims.y )
         return;
     float3 sum = ( float3 )0.f, squares = ( float3 )0.f;

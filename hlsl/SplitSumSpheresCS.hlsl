@@ -1,43 +1,67 @@
 // iblkit render's split-sum image: the spheres of Common/SphereGrid.fxh shaded with the baked maps,
 // in linear radiance, for the host to hold against RenderReferenceCS's Monte Carlo reference.
-// Opaque spheres take the preview's shading: the documents' split-sum specular plus the
-// irradiance cube's diffuse. Glass takes the split sum's analogue for transmission that engines
-// use (Filament's solid-sphere refraction), here with the sphere's exact chord: the prefiltered
-// radiance along the direction a smooth sphere sends the view ray out, at the roughness's mip,
-// times Schlick's transmission (1 - F) at the way in and at the way out.
+// Opaque spheres take the recipe's shading (Common/ImageBasedLighting.fxh's IblShadeOpaque; the
+// documents' combine is the recipe of linear lods, R and one lookup at the surface's roughness,
+// no lights). Glass takes the split sum's analogue for transmission that engines use (Filament's
+// solid-sphere refraction), here with the sphere's exact chord: the prefiltered radiance along the
+// direction a smooth sphere sends the view ray out, at the roughness's mip, times Schlick's
+// transmission (1 - F) at the way in and at the way out.
 #include "Common/ImageBasedLighting.fxh"
 #include "Common/SphereGrid.fxh"
 
 cbuffer SplitSumParameter : register( b0 )
 {
     uint Columns;
-    uint MetalRows;
     uint CellSize;
     uint SpecularMips;
+    uint SpecularSize;
+    uint LodMapping;
+    float LodParameter;
+    uint Direction;
+    uint Lookup;
+    uint LightCount;
+    uint LightLevel;
 };
 
 TextureCube Specular;
 TextureCube IrradianceMap;
 Texture2D<float2> BrdfLut;
+Texture2D<float4> LobeTable;
+// Two float4 per light: (direction towards it, angular radius), (radiance, solid angle).
+StructuredBuffer<float4> Lights;
 SamplerState LinearClamp;
 RWTexture2D<float4> SplitSum;
+
+IblRecipe Recipe()
+{
+    IblRecipe recipe;
+    recipe.LodMapping = LodMapping;
+    recipe.LodParameter = LodParameter;
+    recipe.SpecularMips = SpecularMips;
+    recipe.SpecularSize = SpecularSize;
+    recipe.Direction = Direction;
+    recipe.Lookup = Lookup;
+    recipe.LightCount = LightCount;
+    recipe.LightLevel = LightLevel;
+    return recipe;
+}
 
 float SchlickTransmission( float cosine, float f0 )
 {
     return 1.f - ( f0 + ( 1.f - f0 ) * pow( 1.f - saturate( cosine ), 5.f ) );
 }
 
-float3 GlassSplitSum( float3 normal, float3 viewDirection, float roughness )
+float3 GlassSplitSum( float3 normal, float3 viewDirection, float roughness, float eta )
 {
-    float dielectric = ( 1.f - GLASS_ETA ) / ( 1.f + GLASS_ETA );
+    float dielectric = ( 1.f - eta ) / ( 1.f + eta );
     float f0 = dielectric * dielectric;
-    float3 inside = refract( -viewDirection, normal, 1.f / GLASS_ETA );
+    float3 inside = refract( -viewDirection, normal, 1.f / eta );
     float3 exitPoint = normalize( normal - 2.f * dot( normal, inside ) * inside );
-    float3 outside = refract( inside, -exitPoint, GLASS_ETA );
+    float3 outside = refract( inside, -exitPoint, eta );
     if ( dot( outside, outside ) == 0.f )
         return ( float3 )0.f; // a smooth sphere refracts every ray out: only float rounding lands here
     float transmission = SchlickTransmission( dot( normal, viewDirection ), f0 ) * SchlickTransmission( dot( exitPoint, outside ), f0 );
-    return Specular.SampleLevel( LinearClamp, outside, roughness * ( SpecularMips - 1 ) ).rgb * transmission;
+    return Specular.SampleLevel( LinearClamp, outside, IblLodOfRoughness( roughness, Recipe() ) ).rgb * transmission;
 }
 
 [numthreads(8, 8, 1)]
@@ -47,17 +71,22 @@ void main( uint3 DTid : SV_DispatchThreadId )
     SplitSum.GetDimensions( dims.x, dims.y );
     if ( any( DTid.xy >= dims ) )
         return;
-    SphereHit hit = SphereAt( DTid.xy, Columns, MetalRows, CellSize );
+    SphereHit hit = SphereAt( DTid.xy, Columns, CellSize );
     float3 color = ( float3 )0.f;
     float3 viewDirection = float3( 0.f, 0.f, 1.f );
     SphereMaterial material = hit.Material;
     if ( hit.Covered && material.Transmittance > 0.f )
-        color = GlassSplitSum( hit.Normal, viewDirection, material.Roughness );
+        color = GlassSplitSum( hit.Normal, viewDirection, material.Roughness, material.Eta );
     else if ( hit.Covered )
     {
+        float residualShare;
+        color = IblShadeOpaque( hit.Normal, viewDirection, material.Albedo, material.Roughness, material.Metalness, Recipe(),
+                                Specular, IrradianceMap, BrdfLut, LobeTable, LinearClamp, residualShare );
         float3 f0 = lerp( ( float3 )0.04f, material.Albedo, material.Metalness );
-        color = SplitSumSpecular( hit.Normal, viewDirection, material.Roughness, f0, Specular, SpecularMips, BrdfLut, LinearClamp )
-              + IrradianceDiffuse( hit.Normal, material.Albedo, material.Metalness, IrradianceMap, LinearClamp );
+        float3 albedo = IblDirectionalAlbedo( hit.Normal, viewDirection, material.Roughness, f0, BrdfLut, LinearClamp );
+        for ( uint i = 0u; i < LightCount; ++i )
+            color += IblDiskLight( hit.Normal, viewDirection, material.Roughness, f0, albedo,
+                                   material.Albedo * ( 1.f - material.Metalness ), residualShare, Lights[2u * i], Lights[2u * i + 1u] );
     }
     SplitSum[DTid.xy] = float4( color, hit.Covered ? 1.f : 0.f );
 }

@@ -1,4 +1,6 @@
-// Common/ImageBasedLighting.fxh — shading with the baked maps: the documents' split-sum combine.
+// Common/ImageBasedLighting.fxh — shading with the baked maps: the documents' split-sum combine,
+// and the kit's, whose every choice was measured against a Monte Carlo reference of the same BSDF
+// (docs/shading.md).
 #ifndef COMMON_IMAGE_BASED_LIGHTING_FXH
 #define COMMON_IMAGE_BASED_LIGHTING_FXH
 
@@ -23,6 +25,243 @@ float3 IrradianceDiffuse( float3 normal, float3 albedo, float metalness, Texture
                           SamplerState linearSampler )
 {
     return irradianceMap.SampleLevel( linearSampler, normal, 0 ).rgb * albedo * ( 1.f - metalness );
+}
+
+// ---------------------------------------------------------------------------------------------
+// The kit's split sum. A recipe says how the maps were made and how they are read; the bake
+// writes it into manifest.json and the files' key/value data (docs/shading.md).
+
+// How a lookup's roughness becomes a mip level, n = mips - 1 (runtime/shading/mip_schedule.hpp):
+static const uint IBL_LOD_LINEAR = 0;    // r n: the documents, the glTF Sample Viewer
+static const uint IBL_LOD_QUADRATIC = 1; // r (2 - r) n: three.js, Filament
+static const uint IBL_LOD_POWER = 2;     // r^p n
+static const uint IBL_LOD_BABYLON = 3;   // 0.8 log2(r² size), clamped to [0, n]
+static const uint IBL_LOD_LOGARITHMIC = 4; // k log2(r² size) + b, clamped to [0, n]: mip 1 at r² = c / size, mip n at 1
+                                           // (linear for fewer than 3 mips, or faces no larger than c)
+
+// Where the lookup looks:
+static const uint IBL_DIRECTION_REFLECTED = 0; // R
+static const uint IBL_DIRECTION_FROSTBITE = 1; // lerp(N, R, s (sqrt(s) + α)), s = 1 - α (Lagarde and de Rousiers 2014)
+static const uint IBL_DIRECTION_FILAMENT = 2;  // lerp(R, N, α²)
+static const uint IBL_DIRECTION_FITTED = 3;    // the lobe's mean direction, from the lobe table
+
+// What the lookups read:
+static const uint IBL_LOOKUP_ROUGHNESS = 0; // one lookup at the surface's roughness
+static const uint IBL_LOOKUP_FITTED = 1;    // one lookup at the lobe table's roughness
+static const uint IBL_LOOKUP_PAIR = 2;      // two lookups about the mean direction, the lobe table's pair
+
+struct IblRecipe
+{
+    uint LodMapping;
+    float LodParameter; // IBL_LOD_POWER's p, IBL_LOD_LOGARITHMIC's c
+    uint SpecularMips;
+    uint SpecularSize; // mip 0's face size
+    uint Direction;
+    uint Lookup;
+    uint LightCount;
+    uint LightLevel;   // the first mip prefiltered without the lights (mips below it hold them)
+};
+
+float IblLodOfRoughness( float roughness, IblRecipe recipe )
+{
+    float last = float( recipe.SpecularMips - 1u );
+    float r = saturate( roughness );
+    if ( recipe.LodMapping == IBL_LOD_QUADRATIC )
+        return r * ( 2.f - r ) * last;
+    if ( recipe.LodMapping == IBL_LOD_POWER )
+        return pow( r, recipe.LodParameter ) * last;
+    if ( recipe.LodMapping == IBL_LOD_BABYLON )
+        return r > 0.f ? clamp( 0.8f * log2( r * r * float( recipe.SpecularSize ) ), 0.f, last ) : 0.f;
+    if ( recipe.LodMapping == IBL_LOD_LOGARITHMIC && recipe.SpecularMips >= 3u && float( recipe.SpecularSize ) > recipe.LodParameter )
+    {
+        float size = float( recipe.SpecularSize );
+        float slope = ( last - 1.f ) / log2( size / recipe.LodParameter );
+        return r > 0.f ? clamp( slope * ( log2( r * r * size ) - log2( size ) ) + last, 0.f, last ) : 0.f;
+    }
+    return r * last;
+}
+
+// The lobe table at (N·V, roughness): (blend, roughness, pair roughness, pair spread), as
+// runtime/shading/lobe_table.hpp fits them to the split sum's reflection lobe.
+float4 IblLobeFit( float ndotv, float roughness, Texture2D<float4> lobeTable, SamplerState linearSampler )
+{
+    return lobeTable.SampleLevel( linearSampler, float2( ndotv, roughness ), 0 );
+}
+
+// The direction `share` of the way from N to R, along the great circle.
+float3 IblTowardsReflection( float3 normal, float3 reflected, float share )
+{
+    float cosine = clamp( dot( normal, reflected ), -1.f, 1.f );
+    float angle = acos( cosine );
+    if ( angle < 1e-4f )
+        return reflected;
+    float sine = sin( angle );
+    return ( sin( ( 1.f - share ) * angle ) * normal + sin( share * angle ) * reflected ) / sine;
+}
+
+float3 IblLookupDirection( float3 normal, float3 reflected, float roughness, float blend, uint mode )
+{
+    float alpha = roughness * roughness;
+    if ( mode == IBL_DIRECTION_FROSTBITE )
+    {
+        float smoothness = saturate( 1.f - alpha );
+        return normalize( lerp( normal, reflected, smoothness * ( sqrt( smoothness ) + alpha ) ) );
+    }
+    if ( mode == IBL_DIRECTION_FILAMENT )
+        return normalize( lerp( reflected, normal, alpha * alpha ) );
+    if ( mode == IBL_DIRECTION_FITTED )
+        return IblTowardsReflection( normal, reflected, blend );
+    return reflected;
+}
+
+// A lookup's share of levels prefiltered without the lights: the weight its trilinear blend
+// gives to mips at or past LightLevel.
+float IblResidualShare( float lod, IblRecipe recipe )
+{
+    return recipe.LightCount > 0u ? saturate( lod - float( recipe.LightLevel ) + 1.f ) : 0.f;
+}
+
+float3 IblLookup( TextureCube prefiltered, SamplerState linearSampler, float3 direction, float roughness,
+                  IblRecipe recipe, inout float residualShare, float weight )
+{
+    float lod = IblLodOfRoughness( roughness, recipe );
+    residualShare += weight * IblResidualShare( lod, recipe );
+    return weight * prefiltered.SampleLevel( linearSampler, direction, lod ).rgb;
+}
+
+// The prefiltered radiance the recipe reads for (N, V, roughness); residualShare is how much of it
+// came from levels without the lights, whose specular the caller adds analytically.
+float3 IblSpecularRadiance( float3 normal, float3 viewDirection, float roughness, IblRecipe recipe,
+                            TextureCube prefiltered, Texture2D<float4> lobeTable, SamplerState linearSampler,
+                            out float residualShare )
+{
+    residualShare = 0.f;
+    float ndotv = saturate( dot( normal, viewDirection ) );
+    float3 reflected = reflect( -viewDirection, normal );
+    float4 fit = IblLobeFit( ndotv, roughness, lobeTable, linearSampler );
+    float3 direction = IblLookupDirection( normal, reflected, roughness, fit.x, recipe.Direction );
+    if ( recipe.Lookup == IBL_LOOKUP_ROUGHNESS )
+        return IblLookup( prefiltered, linearSampler, direction, roughness, recipe, residualShare, 1.f );
+    if ( recipe.Lookup == IBL_LOOKUP_FITTED )
+        return IblLookup( prefiltered, linearSampler, direction, fit.y, recipe, residualShare, 1.f );
+    // The pair: ± the spread about the mean direction, in the plane of N and V, where a grazing
+    // lobe is long.
+    float3 across = cross( normal, viewDirection );
+    float acrossLength = length( across );
+    float3 along = acrossLength > 1e-6f ? cross( across / acrossLength, direction ) : ( float3 )0.f;
+    float3 first = normalize( cos( fit.w ) * direction + sin( fit.w ) * along );
+    float3 second = normalize( cos( fit.w ) * direction - sin( fit.w ) * along );
+    return IblLookup( prefiltered, linearSampler, first, fit.z, recipe, residualShare, 0.5f )
+         + IblLookup( prefiltered, linearSampler, second, fit.z, recipe, residualShare, 0.5f );
+}
+
+// ---------------------------------------------------------------------------------------------
+// The lights a bake takes out of the environment: disks of constant radiance, two float4 each,
+// (direction towards the light, angular radius), (radiance, solid angle).
+
+// Nineteen points of equal area on the unit disk: the centre, then rings of 6 and 12 at the
+// middles (by area) of their annuli.
+static const uint IBL_DISK_POINTS = 19;
+
+float2 IblDiskPoint( uint i )
+{
+    if ( i == 0u )
+        return ( float2 )0.f;
+    bool inner = i <= 6u;
+    float radius = inner ? 0.45883147f : 0.82717019f; // sqrt(4 / 19), sqrt(13 / 19)
+    float angle = inner ? ( float( i - 1u ) / 6.f ) * 2.f * PI : ( ( float( i - 7u ) + 0.5f ) / 12.f ) * 2.f * PI;
+    return radius * float2( cos( angle ), sin( angle ) );
+}
+
+// The split sum's BRDF (Smith-Schlick k = r² / 2, Schlick's F), specular part, times N·L.
+float3 IblSpecularBrdfCosine( float3 normal, float3 viewDirection, float3 toLight, float roughness, float3 f0 )
+{
+    float ndotl = dot( normal, toLight );
+    float ndotv = saturate( dot( normal, viewDirection ) );
+    if ( ndotl <= 0.f || ndotv <= 0.f )
+        return ( float3 )0.f;
+    float3 halfway = normalize( toLight + viewDirection );
+    float vdoth = saturate( dot( viewDirection, halfway ) );
+    float3 fresnel = FresnelSchlick( vdoth, f0 );
+    float g = GeometrySmithForIBL( ndotl, ndotv, roughness );
+    return fresnel * ( g * DistributionGGX( saturate( dot( normal, halfway ) ), roughness ) / ( 4.f * ndotv ) );
+}
+
+// The specular of a disk narrow enough for small angles: the BRDF's directional albedo (the LUT's
+// F0 scale and bias, `albedo`) times the share of GGX's half vectors whose reflection of V falls
+// in the disk. A reflection doubles the half vector's angles, so in slope space the disk has
+// radius a = θ / 2 at b = ∠(R, centre) / 2 from the lobe's peak; GGX's slopes have the density
+// 1 / (π α² (1 + ρ² / α²)²) (Walter et al. 2007), whose mass over that disk is, with V = a² / α²
+// and β = b / α (the angle integral ∫ dφ / (A + B cos φ)² = 2π A / (A² - B²)^1.5, then ρ²):
+//   ½ + (V - 1 - β²) / (2 sqrt((V + 1 - β²)² + 4 β²)),
+// V / (1 + V) about the peak, and about V / β⁴, the lobe's tail, far from it.
+float IblGgxDiskShare( float radius, float offset, float alpha )
+{
+    float V = radius * radius / ( alpha * alpha );
+    float beta2 = offset * offset / ( alpha * alpha );
+    float w = V + 1.f - beta2;
+    return saturate( 0.5f + ( V - 1.f - beta2 ) / ( 2.f * sqrt( w * w + 4.f * beta2 ) ) );
+}
+
+float3 IblNarrowLobeDisk( float3 normal, float3 viewDirection, float roughness, float3 albedo, float4 head )
+{
+    float3 reflected = reflect( -viewDirection, normal );
+    float away = acos( clamp( dot( reflected, head.xyz ), -1.f, 1.f ) );
+    return albedo * IblGgxDiskShare( 0.5f * head.w, 0.5f * away, max( roughness * roughness, 1e-7f ) );
+}
+
+// A light's specular (weighted by `specularWeight`) and diffuse radiance towards V. The diffuse,
+// and the specular of a lobe twice as wide as the disk, 2α >= 2 radius, by the disk's points;
+// the specular of a lobe no wider than it by IblNarrowLobeDisk; between, a blend.
+// `diffuseColor` is albedo (1 - metalness), `albedo` the LUT's F0 scale and bias applied to f0.
+float3 IblDiskLight( float3 normal, float3 viewDirection, float roughness, float3 f0, float3 albedo, float3 diffuseColor,
+                     float specularWeight, float4 head, float4 body )
+{
+    float3 centre = head.xyz;
+    float3 helper = abs( centre.z ) < 0.999f ? float3( 0.f, 0.f, 1.f ) : float3( 1.f, 0.f, 0.f );
+    float3 tangent = normalize( cross( helper, centre ) );
+    float3 bitangent = cross( centre, tangent );
+    float spread = tan( head.w );
+    float3 specular = ( float3 )0.f, diffuse = ( float3 )0.f;
+    for ( uint i = 0u; i < IBL_DISK_POINTS; ++i )
+    {
+        float2 p = IblDiskPoint( i ) * spread;
+        float3 toLight = normalize( centre + p.x * tangent + p.y * bitangent );
+        float ndotl = dot( normal, toLight );
+        if ( ndotl <= 0.f )
+            continue;
+        specular += IblSpecularBrdfCosine( normal, viewDirection, toLight, roughness, f0 );
+        diffuse += diffuseColor * ( ndotl / PI );
+    }
+    float share = 1.f / float( IBL_DISK_POINTS );
+    float wide = saturate( 2.f * roughness * roughness / max( head.w, 1e-6f ) - 1.f );
+    float3 narrow = wide < 1.f ? IblNarrowLobeDisk( normal, viewDirection, roughness, albedo, head ) / body.w
+                               : ( float3 )0.f;
+    specular = lerp( narrow, specular * share, wide );
+    return ( specularWeight * specular + diffuse * share ) * body.rgb * body.w;
+}
+
+// The kit's opaque shading from the maps: the recipe's specular lookups times the LUT's F0 scale
+// and bias, and the irradiance cube's diffuse. The caller adds each light the bake took out of
+// the environment, IblDiskLight with specularWeight = residualShare and albedo = IblDirectionalAlbedo.
+float3 IblShadeOpaque( float3 normal, float3 viewDirection, float3 albedo, float roughness, float metalness,
+                       IblRecipe recipe, TextureCube prefiltered, TextureCube irradianceMap, Texture2D<float2> brdfLut,
+                       Texture2D<float4> lobeTable, SamplerState linearSampler, out float residualShare )
+{
+    float3 f0 = lerp( ( float3 )0.04f, albedo, metalness );
+    float ndotv = saturate( dot( normal, viewDirection ) );
+    float3 radiance = IblSpecularRadiance( normal, viewDirection, roughness, recipe, prefiltered, lobeTable, linearSampler,
+                                           residualShare );
+    float2 brdf = brdfLut.SampleLevel( linearSampler, float2( ndotv, roughness ), 0 ).rg;
+    return radiance * ( f0 * brdf.x + brdf.y ) + irradianceMap.SampleLevel( linearSampler, normal, 0 ).rgb * albedo * ( 1.f - metalness );
+}
+
+// The LUT's F0 scale and bias at (N, V, roughness), applied to f0: the BRDF's directional albedo.
+float3 IblDirectionalAlbedo( float3 normal, float3 viewDirection, float roughness, float3 f0, Texture2D<float2> brdfLut,
+                             SamplerState linearSampler )
+{
+    float2 brdf = brdfLut.SampleLevel( linearSampler, float2( saturate( dot( normal, viewDirection ) ), roughness ), 0 ).rg;
+    return f0 * brdf.x + brdf.y;
 }
 
 #endif // COMMON_IMAGE_BASED_LIGHTING_FXH

@@ -1,19 +1,16 @@
-// Common/SphereGrid.fxh — the spheres iblkit render draws, one per cell of a grid: roughness
-// across, metalness down, then a row of glass. Each sphere is alone in the environment (no sphere
-// sees another), seen by an orthographic camera looking down -Z, one ray through each pixel's
-// centre, so the Monte Carlo reference and the split sum shade exactly the same points.
+// Common/SphereGrid.fxh — the spheres iblkit render draws, one per cell of a grid, each of the
+// material the host gives for its cell (runtime/render/sphere_grid.hpp). Each sphere is alone in
+// the environment (no sphere sees another), seen by an orthographic camera looking down -Z, one
+// ray through each pixel's centre, so the Monte Carlo reference and the split sum shade exactly
+// the same points.
 #ifndef COMMON_SPHERE_GRID_FXH
 #define COMMON_SPHERE_GRID_FXH
 
-// Gold's reflectance at normal incidence, as in the preview: orange plastic at metalness 0.
-static const float3 SPHERE_BASE_COLOR = float3( 1.f, 0.766f, 0.336f );
-static const float3 GLASS_ALBEDO = float3( 1.f, 1.f, 1.f );
-static const float GLASS_ETA = 1.5f;
 // The sphere's radius in half cells.
 static const float SPHERE_RADIUS = 0.9f;
-// GGX of roughness 0 is a delta the ported BSDF cannot evaluate (D is 0/0 at N.H = 1): the first
-// column is this rough instead, a mirror to the eye, where float still resolves D's peak to 2 %.
-static const float MIN_ROUGHNESS = 0.05f;
+
+// Two float4 per cell, row after row: (albedo, roughness), (metalness, transmittance, eta, 0).
+StructuredBuffer<float4> Spheres;
 
 struct SphereMaterial
 {
@@ -21,6 +18,7 @@ struct SphereMaterial
     float Roughness;
     float Metalness;
     float Transmittance;
+    float Eta;
 };
 
 struct SphereHit
@@ -30,24 +28,21 @@ struct SphereHit
     SphereMaterial Material;
 };
 
-float GridFraction( uint index, uint count )
+SphereMaterial SphereMaterialOf( uint2 cell, uint columns )
 {
-    return count > 1 ? float( index ) / float( count - 1 ) : 0.f;
-}
-
-// Columns of roughness; metalRows rows of opaque metalness 0 to 1, then one row of glass.
-SphereMaterial SphereMaterialOf( uint2 cell, uint columns, uint metalRows )
-{
+    uint index = 2u * ( cell.y * columns + cell.x );
+    float4 first = Spheres[index];
+    float4 second = Spheres[index + 1u];
     SphereMaterial material;
-    material.Roughness = max( GridFraction( cell.x, columns ), MIN_ROUGHNESS );
-    bool glass = cell.y >= metalRows;
-    material.Albedo = glass ? GLASS_ALBEDO : SPHERE_BASE_COLOR;
-    material.Metalness = glass ? 0.f : GridFraction( cell.y, metalRows );
-    material.Transmittance = glass ? 1.f : 0.f;
+    material.Albedo = first.rgb;
+    material.Roughness = first.a;
+    material.Metalness = second.x;
+    material.Transmittance = second.y;
+    material.Eta = second.z;
     return material;
 }
 
-SphereHit SphereAt( uint2 pixel, uint columns, uint metalRows, uint cellSize )
+SphereHit SphereAt( uint2 pixel, uint columns, uint cellSize )
 {
     SphereHit hit;
     uint2 cell = pixel / cellSize;
@@ -56,7 +51,7 @@ SphereHit SphereAt( uint2 pixel, uint columns, uint metalRows, uint cellSize )
     float r2 = dot( p, p ) / ( SPHERE_RADIUS * SPHERE_RADIUS );
     hit.Covered = r2 < 1.f;
     hit.Normal = float3( p / SPHERE_RADIUS, sqrt( max( 1.f - r2, 0.f ) ) );
-    hit.Material = SphereMaterialOf( cell, columns, metalRows );
+    hit.Material = SphereMaterialOf( cell, columns );
     return hit;
 }
 

@@ -108,6 +108,26 @@ vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Im
     return specular;
 }
 
+vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Image& source, const SpecularLevels& levels,
+                              kernels::SpecularMethod& prefilter, BakeProgress& progress) {
+    progress.begin("prefilter");
+    const uint32_t size = source.desc().width, mips = uint32_t(levels.roughness.size());
+    auto specular = makeCube(context, "Specular", size, mips);
+    const auto sourceOf = [&](uint32_t mip) -> vulkan::Image& {
+        return levels.residual && mip >= levels.residualFrom ? *levels.residual : source;
+    };
+    specular.copyMipFrom(context, sourceOf(0), 0);
+    const vulkan::Sampler linear(context, {});
+    for (uint32_t mip = 1; mip < mips; ++mip) {
+        progress.advance(double(mip - 1) / double(mips - 1), fmt::format("mip {} of {}", mip, mips - 1));
+        auto& from = sourceOf(mip);
+        prefilter.run(from, linear, specular, mip, levels.roughness[mip]);
+        progress.addDeviceTime(prefilter.takeTotals().deviceMilliseconds);
+    }
+    progress.end();
+    return specular;
+}
+
 vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context) {
     vulkan::Image lut(context, {"BrdfLut", &vulkan::texelFormatNamed("R32G32_SFLOAT"), 1, 1, 1, 1, false, true});
     lut.upload(context, std::vector<float>(2, 0.f));
@@ -128,7 +148,7 @@ IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
     : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
 
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
-                             uint32_t size, BakeProgress& progress, bool withCube) {
+                             uint32_t size, BakeProgress& progress, bool withCube, uint32_t cubeSourceLimit) {
     progress.begin("irradiance");
     Irradiance result{makeCube(context, "Irradiance", size, 1), {}};
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
@@ -137,7 +157,7 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     result.sh.shRadiance = projection.radiance;
     result.sh.solidAngle = projection.solidAngle;
     result.sh.shSourceSize = source.mipWidth(shMip);
-    const uint32_t mip = firstMipAtMost(source.desc().width, kIrradianceSourceLimit);
+    const uint32_t mip = firstMipAtMost(source.desc().width, cubeSourceLimit);
     result.sh.cubeSourceSize = source.mipWidth(mip);
     if (!withCube) {
         result.cube.upload(context, std::vector<float>(result.cube.valueCount(), 0.f));

@@ -27,6 +27,17 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
                                 kernels::SpecularMethod* prefilter, BakeProgress& progress);
 
+// The levels of a shading recipe: mip m at roughness[m], prefiltered from `source` below
+// residualFrom and from `residual` (the environment with its lights taken out) from there on;
+// mip 0 is its source's own mip 0.
+struct SpecularLevels {
+    std::vector<float> roughness;
+    vulkan::Image* residual = nullptr;
+    uint32_t residualFrom = 0;
+};
+vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Image& source, const SpecularLevels& levels,
+                              kernels::SpecularMethod& prefilter, BakeProgress& progress);
+
 // A 1x1 LUT of zeros, for the preview of a bake that needs no LUT.
 vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context);
 
@@ -65,7 +76,8 @@ struct IrradianceKernels {
 // The SH projection always (the manifest's coefficients and the preview's exposure); the cube
 // only `withCube`, else it is zeros.
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
-                             uint32_t size, BakeProgress& progress, bool withCube = true);
+                             uint32_t size, BakeProgress& progress, bool withCube = true,
+                             uint32_t cubeSourceLimit = kIrradianceSourceLimit);
 
 struct Preview {
     uint32_t width, height;

@@ -55,13 +55,18 @@ BenchEnvironment resolveOne(const std::string& name, uint32_t size, const fs::pa
     if (name == "furnace") return {name, constantCube(size, 1.f)};
     if (name == "sun") return {name, sunCube(size)};
     if (isBlenderWorld(name)) return {name, bake::loadEnvironment(blenderWorlds(cacheDir) / (name + ".exr"), {})};
-    if (!fs::exists(name))
-        throw BenchError(fmt::format("no environment '{}': not a file, nor sky, furnace, sun, blender or one of "
-                                     "blender's worlds (city, courtyard, forest, ...)", name));
+    requireEnvironmentName(name);
     return {tableName(name), bake::loadEnvironment(fs::path(name), {})};
 }
 
 } // namespace
+
+void requireEnvironmentName(const std::string& name) {
+    if (name == "sky" || name == "furnace" || name == "sun" || name == "blender" || isBlenderWorld(name) || fs::exists(name))
+        return;
+    throw BenchError(fmt::format("no environment '{}': not a file, nor sky, furnace, sun, blender or one of "
+                                 "blender's worlds (city, courtyard, forest, ...)", name));
+}
 
 fs::path blenderWorlds(const fs::path& cacheDir) {
     const fs::path worlds = cacheDir / "blender-data" / "world";

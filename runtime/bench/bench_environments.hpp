@@ -27,6 +27,9 @@ inline constexpr const char* kBlenderWorlds[] = {"city", "courtyard", "forest", 
 std::vector<BenchEnvironment> resolveEnvironments(const std::vector<std::string>& names, uint32_t size,
                                                   const std::filesystem::path& cacheDir);
 
+// Throws BenchError naming `name` unless resolveEnvironments knows it (or it is a file).
+void requireEnvironmentName(const std::string& name);
+
 // The folder that holds blender-data's world HDRIs under `cacheDir`, fetched when missing.
 std::filesystem::path blenderWorlds(const std::filesystem::path& cacheDir);
 

@@ -3,6 +3,7 @@
 #include "atomic_output.hpp"
 #include "bench_error.hpp"
 #include "files.hpp"
+#include "embedded_tools.hpp"
 #include "shell_command.hpp"
 
 #include <fmt/core.h>
@@ -14,9 +15,6 @@
 #include <unistd.h>
 
 namespace iblkit::bench {
-
-const std::map<std::string, std::string>& embeddedBenchTools();
-
 namespace {
 
 namespace fs = std::filesystem;

@@ -43,18 +43,19 @@ void addClusterOutput(SuiteRun& run, const MippedCube& cube, const reference::Cl
               [&](const OpenGlForm& form) { return glClusterPyramid(run.gl, form, cube); });
 }
 
+// The lobe weighted by N·L (0), as the documents' prefilter, or by G1 (1), as the kit's recipe.
 void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>& inFloat,
-                          const reference::ClusterPyramid<double>& inDouble) {
+                          const reference::ClusterPyramid<double>& inDouble, uint32_t weighting) {
     const auto& options = run.options;
     const float roughness = options.convolutionRoughness;
     const auto plan = kernels::planConvolution(inFloat.size, roughness, options.convolutionBudget);
-    const reference::ConvolutionTree tree{plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel};
-    const kernels::PrefilterConvolutionParameters parameters{roughness, plan.topLevel, plan.fineLevel, plan.refine,
-                                                             plan.horizonLevel};
+    const reference::ConvolutionTree tree{plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, weighting};
+    const kernels::PrefilterConvolutionParameters parameters{roughness,  plan.topLevel,      plan.fineLevel,
+                                                             plan.refine, plan.horizonLevel, weighting};
     const uint32_t outSize = options.convolutionOutSize;
     const auto pyramid = pyramidTexels(inFloat);
-    const auto output = fmt::format("{}² at roughness {} from the {}² pyramid, {} terms per texel", outSize, roughness,
-                                    inFloat.size, options.convolutionBudget);
+    const auto output = fmt::format("{}² at roughness {} from the {}² pyramid, {} terms per texel{}", outSize, roughness,
+                                    inFloat.size, options.convolutionBudget, weighting ? ", lobe weighted by G1" : "");
     addOutput(run, {"PrefilterConvolutionCS", output, convolutionBounds()},
               {reference::convolvePrefilter(inFloat, roughness, outSize, tree),
                reference::convolvePrefilter(inDouble, double(roughness), outSize, tree)},
@@ -71,7 +72,8 @@ void addConvolutionOutputs(SuiteRun& run) {
     const auto inFloat = reference::clusterPyramid<float>(cube.texels, cube.size);
     const auto inDouble = reference::clusterPyramid<double>(cube.texels, cube.size);
     addClusterOutput(run, cube, inFloat, inDouble);
-    addConvolutionOutput(run, inFloat, inDouble);
+    addConvolutionOutput(run, inFloat, inDouble, 0);
+    addConvolutionOutput(run, inFloat, inDouble, 1);
 }
 
 } // namespace iblkit::consistency

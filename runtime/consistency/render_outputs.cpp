@@ -10,7 +10,9 @@
 #include "kernels/kernel_steps.hpp"
 #include "render/environment_distribution.hpp"
 #include "render/lights_file.hpp"
-#include "render/render_settings.hpp"
+#include "render/baked_maps.hpp"
+#include "render/sphere_grid.hpp"
+#include "shading/lobe_table.hpp"
 
 #include <fmt/core.h>
 
@@ -20,6 +22,17 @@ namespace {
 constexpr uint32_t kCellSize = 8, kSamples = 16, kSeed = 3;
 
 const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
+
+const render::SphereGrid& grid() { return render::defaultSphereGrid(); }
+
+uint32_t gridWidth() { return grid().columns() * kCellSize; }
+uint32_t gridHeight() { return grid().rowCount() * kCellSize; }
+
+// What both render kernels read of the grid: its spheres' materials.
+const std::vector<float>& sphereMaterials() {
+    static const auto materials = render::packSpheres(grid());
+    return materials;
+}
 
 // What RenderReferenceCS reads: the environment with its distribution at mip 0, and the lights.
 struct ReferenceInputs {
@@ -40,10 +53,10 @@ ReferenceInputs referenceInputs(const SuiteOptions& options) {
     inputs.lights = render::packLights({{RenderLight::Kind::Directional, {-0.3f, -0.5f, -0.81f}, {}, {}, {3, 2, 1}},
                                         {RenderLight::Kind::Point, {2, 3, 4}, {}, {}, {40, 40, 40}},
                                         {RenderLight::Kind::Area, {-1, 2, 2}, {2, 0, 0}, {0, 0, 1}, {5, 5, 5}}});
-    inputs.width = render::kColumns * kCellSize;
-    inputs.height = render::kRows * kCellSize;
+    inputs.width = gridWidth();
+    inputs.height = gridHeight();
     for (uint32_t pixel = 0; pixel < inputs.width * inputs.height; ++pixel) inputs.pixels.push_back(pixel);
-    inputs.parameters = {render::kColumns, render::kMetalRows, kCellSize, 0, kSamples, kSeed, 3, options.cubeSize, 0,
+    inputs.parameters = {grid().columns(), kCellSize, 0, kSamples, kSeed, 3, options.cubeSize, 0,
                          uint32_t(inputs.pixels.size())};
     return inputs;
 }
@@ -57,12 +70,13 @@ std::vector<float> gpuReference(const vulkan::VulkanContext& context, const Path
     const auto cdf = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.cdf)), "EnvironmentCdf");
     const auto lights = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.lights)), "Lights");
     const auto pixels = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.pixels)), "ActivePixels");
+    const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
     vulkan::Image sums(context, {"RadianceSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
     vulkan::Image squares(context, {"SquareSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
     const std::vector<float> zeros(sums.valueCount(), 0.f);
     sums.upload(context, zeros);
     squares.upload(context, zeros);
-    kernels::runRenderReference(kernel, {environment, cdf, lights, pixels, sums, squares}, inputs.parameters);
+    kernels::runRenderReference(kernel, {spheres, environment, cdf, lights, pixels, sums, squares}, inputs.parameters);
     auto values = sums.download(context);
     const auto more = squares.download(context);
     values.insert(values.end(), more.begin(), more.end());
@@ -80,6 +94,8 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
     const auto lights = glpath::bindStorageBuffer(context, form, "Lights", lightBytes.size(), lightBytes);
     const auto pixelBytes = std::as_bytes(std::span(inputs.pixels));
     const auto pixels = glpath::bindStorageBuffer(context, form, "ActivePixels", pixelBytes.size(), pixelBytes);
+    const auto sphereBytes = std::as_bytes(std::span(sphereMaterials()));
+    const auto spheres = glpath::bindStorageBuffer(context, form, "Spheres", sphereBytes.size(), sphereBytes);
     const std::vector<float> zeros(size_t(inputs.width) * inputs.height * 4, 0.f);
     const auto sums = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, inputs.width, inputs.height, zeros);
     const auto squares = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, inputs.width, inputs.height, zeros);
@@ -93,24 +109,51 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
     return values;
 }
 
+// What SplitSumSpheresCS reads besides the preview's maps: the lobe table and one light, a disk of
+// 3 degrees that its recipe adds from mip 2 on, with pairs of lookups about the fitted direction.
+struct RecipeInputs {
+    std::vector<float> lobeTable = shading::lobeTable(shading::kLobeTableSize, shading::LobeWeighting::G1);
+    std::vector<float> lights = render::packEnvironmentLights({{glm::normalize(glm::dvec3(0.3, 0.5, 0.8)),
+                                                                {40, 30, 20}, 0.0086, 0.0524, 0.2}});
+};
+
+kernels::RenderSplitSumParameters splitSumParameters(const PreviewInputs& maps) {
+    return {grid().columns(), kCellSize, maps.specular.mips, maps.specular.size, 0, 1.f,
+            uint32_t(shading::LookupDirection::Fitted), uint32_t(shading::LookupLobe::Pair), 1, 2};
+}
+
 std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathProgram& program, const PreviewInputs& inputs,
-                               const kernels::RenderSplitSumParameters& parameters) {
+                               const RecipeInputs& recipe) {
     kernels::Kernel kernel(context, program);
     auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image image(context, {"SplitSum", &rgba32(), render::kColumns * kCellSize, render::kRows * kCellSize, 1, 1, false, true});
-    kernels::runRenderSplitSum(kernel, maps.specular, maps.irradiance, maps.lut, linear, image, parameters);
+    vulkan::Image image(context, {"SplitSum", &rgba32(), gridWidth(), gridHeight(), 1, 1, false, true});
+    const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
+    const uint32_t tableSize = shading::kLobeTableSize;
+    vulkan::Image table(context, {"LobeTable", &rgba32(), tableSize, tableSize, 1, 1, false, false});
+    table.upload(context, recipe.lobeTable);
+    const auto lights = vulkan::storageBuffer(context, std::as_bytes(std::span(recipe.lights)), "Lights");
+    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, table, lights, linear, image},
+                               splitSumParameters(inputs));
     return image.download(context);
 }
 
 std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs,
-                              const kernels::RenderSplitSumParameters& parameters) {
+                              const RecipeInputs& recipe) {
     const auto program = glpath::program(context, form);
     const auto maps = bindShadingMaps(context, form, inputs);
-    const uint32_t width = render::kColumns * kCellSize, height = render::kRows * kCellSize;
+    const uint32_t tableSize = shading::kLobeTableSize;
+    const auto table = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, tableSize, tableSize, recipe.lobeTable);
+    glpath::bindTexture(context, form, "LobeTable+LinearClamp", table);
+    context.gl().BindSampler(glpath::slotOf(form, "LobeTable+LinearClamp"), maps.sampler.name());
+    const auto lightBytes = std::as_bytes(std::span(recipe.lights));
+    const auto lights = glpath::bindStorageBuffer(context, form, "Lights", lightBytes.size(), lightBytes);
+    const uint32_t width = gridWidth(), height = gridHeight();
+    const auto sphereBytes = std::as_bytes(std::span(sphereMaterials()));
+    const auto spheres = glpath::bindStorageBuffer(context, form, "Spheres", sphereBytes.size(), sphereBytes);
     const auto image = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, width, height);
     context.gl().BindImageTexture(glpath::slotOf(form, "SplitSum"), image.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    const auto bound = glpath::bindParameters(context, form, parameters.members());
+    const auto bound = glpath::bindParameters(context, form, splitSumParameters(inputs).members());
     glpath::dispatch(context, program, form, {width, height, 1});
     return glpath::readTexture(context, image, 0, GL_RGBA, size_t(width) * height * 4);
 }
@@ -127,11 +170,11 @@ void addRenderOutputs(SuiteRun& run) {
                               [&](const PathProgram& program) { return gpuReference(run.vulkan, program, reference); },
                               [&](const OpenGlForm& form) { return glReference(run.gl, form, reference); });
     const auto maps = previewInputs(options.environment, 1, 1, 1, options.cubeSize, options.chunkLutSize, options.sampleCount);
-    const kernels::RenderSplitSumParameters parameters{render::kColumns, render::kMetalRows, kCellSize, maps.specular.mips};
-    addOutputAgainstPathA(run, {"SplitSumSpheresCS", fmt::format("{}×{} spheres", reference.width, reference.height),
+    const RecipeInputs recipe;
+    addOutputAgainstPathA(run, {"SplitSumSpheresCS", fmt::format("{}×{} spheres, fitted pairs of lookups and a light", reference.width, reference.height),
                                 splitSumSpheresBounds()},
-                          [&](const PathProgram& program) { return gpuSplitSum(run.vulkan, program, maps, parameters); },
-                          [&](const OpenGlForm& form) { return glSplitSum(run.gl, form, maps, parameters); });
+                          [&](const PathProgram& program) { return gpuSplitSum(run.vulkan, program, maps, recipe); },
+                          [&](const OpenGlForm& form) { return glSplitSum(run.gl, form, maps, recipe); });
 }
 
 } // namespace iblkit::consistency

@@ -71,7 +71,7 @@ void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uin
     const auto plan = planConvolution(source.desc().width, roughness, budget_);
     if (pyramidSource_ != &source) buildPyramid(source);
     runPrefilterConvolution(convolve_, {*energy_, *centroid_, *geometry_}, target, mip,
-                            {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel});
+                            {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, uint32_t(weighting_)});
 }
 
 DispatchTotals ConvolutionPrefilter::takeTotals() {

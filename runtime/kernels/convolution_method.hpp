@@ -3,6 +3,7 @@
 #include "kernels/kernel.hpp"
 
 #include "image.hpp"
+#include "shading/lobe_table.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -43,6 +44,7 @@ public:
     // Writes mip `mip` of `target` (RGBA32F, storage) from mip 0 of `source` at `roughness`.
     // `source` must keep its texels while this object runs on it.
     void run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness);
+    void setWeighting(shading::LobeWeighting weighting) { weighting_ = weighting; }
     DispatchTotals takeTotals();
 
 private:
@@ -50,6 +52,7 @@ private:
 
     const vulkan::VulkanContext& context_;
     uint32_t budget_;
+    shading::LobeWeighting weighting_ = shading::LobeWeighting::NdotL;
     Kernel cluster_, convolve_;
     const vulkan::Image* pyramidSource_ = nullptr;
     std::optional<vulkan::Image> energy_, centroid_, geometry_;

@@ -39,7 +39,8 @@ NamedValues PrefilterConvolutionParameters::members() const {
             {"TopLevel", {double(topLevel)}},
             {"FineLevel", {double(fineLevel)}},
             {"Refine", {refine}},
-            {"HorizonLevel", {double(horizonLevel)}}};
+            {"HorizonLevel", {double(horizonLevel)}},
+            {"Weighting", {double(weighting)}}};
 }
 
 NamedValues BrdfChunkParameters::members() const {
@@ -59,16 +60,19 @@ NamedValues PreviewParameters::members() const {
 }
 
 NamedValues RenderReferenceParameters::members() const {
-    return {{"Columns", {double(columns)}},         {"MetalRows", {double(metalRows)}},
-            {"CellSize", {double(cellSize)}},       {"FirstSample", {double(firstSample)}},
+    return {{"Columns", {double(columns)}},         {"CellSize", {double(cellSize)}},
+            {"FirstSample", {double(firstSample)}},
             {"SampleCount", {double(sampleCount)}}, {"Seed", {double(seed)}},
             {"LightCount", {double(lightCount)}},   {"DistributionSize", {double(distributionSize)}},
             {"EnvironmentMip", {double(environmentMip)}}, {"ActiveCount", {double(activeCount)}}};
 }
 
 NamedValues RenderSplitSumParameters::members() const {
-    return {{"Columns", {double(columns)}}, {"MetalRows", {double(metalRows)}},
-            {"CellSize", {double(cellSize)}}, {"SpecularMips", {double(specularMips)}}};
+    return {{"Columns", {double(columns)}},       {"CellSize", {double(cellSize)}},
+            {"SpecularMips", {double(specularMips)}}, {"SpecularSize", {double(specularSize)}},
+            {"LodMapping", {double(lodMapping)}},  {"LodParameter", {lodParameter}},
+            {"Direction", {double(direction)}},    {"Lookup", {double(lookup)}},
+            {"LightCount", {double(lightCount)}},  {"LightLevel", {double(lightLevel)}}};
 }
 
 NamedValues ProbeParameters::members() const { return {{"ArgumentCount", {double(argumentCount)}}}; }

@@ -58,6 +58,7 @@ struct PrefilterConvolutionParameters {
     uint32_t topLevel = 0, fineLevel = 0;
     float refine = 0;
     uint32_t horizonLevel = 0;
+    uint32_t weighting = 0; // shading::LobeWeighting: 0 N·L, 1 G1
     NamedValues members() const;
 };
 
@@ -90,16 +91,20 @@ struct PreviewParameters {
 // how many active pixels),
 // the run's seed, the lights, and the face size and mip of the environment's sampling distribution.
 struct RenderReferenceParameters {
-    uint32_t columns = 0, metalRows = 0, cellSize = 0;
+    uint32_t columns = 0, cellSize = 0;
     uint32_t firstSample = 0, sampleCount = 0, seed = 0;
     uint32_t lightCount = 0, distributionSize = 0, environmentMip = 0;
     uint32_t activeCount = 0;
     NamedValues members() const;
 };
 
-// SplitSumSpheresCS: the sphere grid and the specular cube's mip count.
+// SplitSumSpheresCS: the sphere grid, the specular cube's mips and face size, and the shading
+// recipe (Common/ImageBasedLighting.fxh's IblRecipe).
 struct RenderSplitSumParameters {
-    uint32_t columns = 0, metalRows = 0, cellSize = 0, specularMips = 0;
+    uint32_t columns = 0, cellSize = 0, specularMips = 0, specularSize = 0;
+    uint32_t lodMapping = 0;
+    float lodParameter = 1;
+    uint32_t direction = 0, lookup = 0, lightCount = 0, lightLevel = 0;
     NamedValues members() const;
 };
 

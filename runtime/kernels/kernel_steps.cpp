@@ -188,6 +188,7 @@ void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradian
 
 void runRenderReference(Kernel& kernel, const RenderReferenceResources& resources, const RenderReferenceParameters& parameters) {
     auto& program = kernel.program();
+    program.bind("Spheres", resources.spheres);
     program.bind("Environment", resources.environment);
     program.bind("EnvironmentCdf", resources.environmentCdf);
     program.bind("Lights", resources.lights);
@@ -198,15 +199,18 @@ void runRenderReference(Kernel& kernel, const RenderReferenceResources& resource
     kernel.run({parameters.activeCount, 1, 1});
 }
 
-void runRenderSplitSum(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
-                       const vulkan::Sampler& sampler, vulkan::Image& image, const RenderSplitSumParameters& parameters) {
-    kernel.program().bind("Specular", specular);
-    kernel.program().bind("IrradianceMap", irradiance);
-    kernel.program().bind("BrdfLut", brdfLut);
-    kernel.program().bind("LinearClamp", sampler);
-    kernel.program().bind("SplitSum", image);
+void runRenderSplitSum(Kernel& kernel, const RenderSplitSumResources& resources, const RenderSplitSumParameters& parameters) {
+    auto& program = kernel.program();
+    program.bind("Spheres", resources.spheres);
+    program.bind("Specular", resources.specular);
+    program.bind("IrradianceMap", resources.irradiance);
+    program.bind("BrdfLut", resources.brdfLut);
+    program.bind("LobeTable", resources.lobeTable);
+    program.bind("Lights", resources.lights);
+    program.bind("LinearClamp", resources.sampler);
+    program.bind("SplitSum", resources.image);
     kernel.setParameters(parameters.members());
-    kernel.run({image.desc().width, image.desc().height, 1});
+    kernel.run({resources.image.desc().width, resources.image.desc().height, 1});
 }
 
 void runProbe(Kernel& kernel, const ProbeBuffers& buffers, uint32_t argumentCount) {

@@ -116,6 +116,7 @@ void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradian
 
 // RenderReference: one batch of Monte Carlo samples for each active pixel; the sums accumulate.
 struct RenderReferenceResources {
+    const vulkan::Buffer& spheres; // Common/SphereGrid.fxh's materials
     vulkan::Image& environment;
     const vulkan::Buffer& environmentCdf;
     const vulkan::Buffer& lights;
@@ -126,8 +127,17 @@ struct RenderReferenceResources {
 void runRenderReference(Kernel& kernel, const RenderReferenceResources& resources, const RenderReferenceParameters& parameters);
 
 // RenderSplitSum: the spheres shaded with the baked maps into `image`.
-void runRenderSplitSum(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
-                       const vulkan::Sampler& sampler, vulkan::Image& image, const RenderSplitSumParameters& parameters);
+struct RenderSplitSumResources {
+    const vulkan::Buffer& spheres;
+    vulkan::Image& specular;
+    vulkan::Image& irradiance;
+    vulkan::Image& brdfLut;
+    vulkan::Image& lobeTable;
+    const vulkan::Buffer& lights;
+    const vulkan::Sampler& sampler;
+    vulkan::Image& image;
+};
+void runRenderSplitSum(Kernel& kernel, const RenderSplitSumResources& resources, const RenderSplitSumParameters& parameters);
 
 // Probe: the buffers of PbrProbeCS or LutProbeCS (which has no SampleIndices).
 struct ProbeBuffers {

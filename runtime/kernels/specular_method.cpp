@@ -71,6 +71,12 @@ void SpecularMethod::run(vulkan::Image& source, const vulkan::Sampler& sampler, 
     sampled_->run(source, sampler, target, mip, roughness);
 }
 
+void SpecularMethod::setWeighting(shading::LobeWeighting weighting) {
+    if (convolution_) return convolution_->setWeighting(weighting);
+    if (weighting != shading::LobeWeighting::NdotL)
+        throw std::invalid_argument("only the convolution prefilters a lobe weighted by G1");
+}
+
 DispatchTotals SpecularMethod::takeTotals() {
     if (convolution_) return convolution_->takeTotals();
     if (pyramid_) return pyramid_->takeTotals();

@@ -6,6 +6,8 @@
 #include "kernels/sampled_methods.hpp"
 #include "kernels/table_method.hpp"
 
+#include "shading/lobe_table.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +43,9 @@ public:
     // Writes mip `mip` of `target` (RGBA32F, storage) from `source` at `roughness`; a sampled
     // method reads `source` through `sampler`.
     void run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip, float roughness);
+    // The lobe the next runs weigh: N·L (every method, the default) or G1 (the convolution alone;
+    // std::invalid_argument for another method).
+    void setWeighting(shading::LobeWeighting weighting);
     DispatchTotals takeTotals();
     uint32_t chunkSamples() const; // 0 for one dispatch per mip
 

@@ -36,29 +36,35 @@ T ClippedMean(T mean, T spread) {
     return spread * density + mean * NormalCdf(z);
 }
 
-// The shader's ExpectedLobeWeight: E[D(u) max(u, 0)] for N.L = u of mean `ndotl` and variance
-// `variance`, by a second-order expansion away from the horizon and a clipped normal across it.
+// The shader's ExpectedLobeWeight: E[D(u) w(u)] for N.L = u of mean `ndotl` and variance
+// `variance`, w(u) = max(u, 0) or G1(u), by a second-order expansion away from the horizon and a
+// clipped normal across it.
 template <typename T>
-T ExpectedLobeWeight(T ndotl, T variance, T roughness) {
+T ExpectedLobeWeight(T ndotl, T variance, T roughness, uint32_t weighting) {
     const T spread = std::sqrt(std::max(variance, T(0)));
     const T D = DistributionGGX(std::sqrt(T(0.5) + T(0.5) * std::max(ndotl, T(0))), roughness);
+    const T k = T(0.5) * roughness * roughness;
     if (ndotl > T(3) * spread) {
         const T a2 = roughness * roughness * roughness * roughness;
         const T A = T(0.5) + T(0.5) * a2, B = T(0.5) * a2 - T(0.5);
         const T s = A + B * ndotl;
-        return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) / (s * s));
+        if (weighting == 0) return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) / (s * s));
+        const T q = (T(1) - k) * ndotl + k;
+        const T w = ndotl / q, w1 = k / (q * q), w2 = T(-2) * (T(1) - k) * k / (q * q * q);
+        return D * (w + T(0.5) * variance * (w * T(6) * B * B / (s * s) - T(4) * B * w1 / s + w2));
     }
-    return D * std::max(ClippedMean(ndotl, spread), T(0));
+    const T clipped = std::max(ClippedMean(ndotl, spread), T(0));
+    return D * (weighting == 0 ? clipped : clipped / ((T(1) - k) * clipped + k));
 }
 
 // The shader's BlockLobeWeight: ExpectedLobeWeight over directions of first moment `mean`.
 template <typename T>
-T BlockLobeWeight(vec3<T> normal, vec3<T> mean, T roughness) {
+T BlockLobeWeight(vec3<T> normal, vec3<T> mean, T roughness, uint32_t weighting) {
     const T length2 = glm::dot(mean, mean);
     const T meanCosine = glm::dot(normal, mean);
     const T variance =
         T(0.5) * std::max(T(1) - length2, T(0)) * std::max(T(1) - meanCosine * meanCosine / length2, T(0));
-    return ExpectedLobeWeight(meanCosine, variance, roughness);
+    return ExpectedLobeWeight(meanCosine, variance, roughness, weighting);
 }
 
 template <typename T>
@@ -172,8 +178,8 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
         const vec4<T> geometry = pyramid.geometry[block.level][i];
         const vec3<T> extent = vec3<T>(geometry) / geometry.w;
         const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) / weighted.w : extent;
-        radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness);
-        weight += energy.w * BlockLobeWeight(normal, extent, roughness);
+        radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness, tree.weighting);
+        weight += energy.w * BlockLobeWeight(normal, extent, roughness, tree.weighting);
         ++terms;
         nextBlock(block, topSize, tree.topLevel);
     }

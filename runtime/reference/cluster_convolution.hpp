@@ -33,6 +33,7 @@ struct ConvolutionTree {
     uint32_t topLevel = 0, fineLevel = 0;
     double refine = 0;
     uint32_t horizonLevel = 0;
+    uint32_t weighting = 0; // the lobe: 0 D N·L, 1 D G1(N·L) (the shader's Weighting)
 };
 
 // PrefilterConvolutionCS for one roughness over outSize x outSize faces, visiting the blocks in

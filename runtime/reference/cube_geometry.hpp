@@ -23,6 +23,21 @@ vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
     }
 }
 
+// The inverse, as Vulkan selects a face (RenderReferenceCS's CubeFaceOf): the face of d's largest
+// component (+X before +Y before +Z on ties) and where on it, uv in [0, 1]².
+template <typename T>
+uint32_t CubeFaceOf(vec3<T> d, vec2<T>& uv) {
+    const vec3<T> a = glm::abs(d);
+    uint32_t face;
+    T major;
+    vec2<T> st;
+    if (a.x >= a.y && a.x >= a.z) major = a.x, face = d.x >= 0 ? 0 : 1, st = {d.x >= 0 ? -d.z : d.z, -d.y};
+    else if (a.y >= a.z) major = a.y, face = d.y >= 0 ? 2 : 3, st = {d.x, d.y >= 0 ? d.z : -d.z};
+    else major = a.z, face = d.z >= 0 ? 4 : 5, st = {d.z >= 0 ? d.x : -d.x, -d.y};
+    uv = glm::clamp((st / major + T(1)) * T(0.5), T(0), T(1));
+    return face;
+}
+
 template <typename T>
 T CubeAreaElement(T x, T y) {
     return std::atan2(x * y, std::sqrt(x * x + y * y + T(1)));

@@ -107,14 +107,16 @@ uint32_t batchSamples(size_t covered, size_t active) {
 
 } // namespace
 
-ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& environment,
-                               const std::vector<RenderLight>& lights, const SphereImage& coverage,
+ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,
+                               vulkan::Image& environment, const std::vector<RenderLight>& lights, const SphereImage& coverage,
                                const ReferenceOptions& options, bake::BakeProgress& progress) {
     progress.begin("reference");
     const auto distribution = distributionOf(context, environment);
     const auto cdf = vulkan::storageBuffer(context, std::as_bytes(std::span(distribution.cdf)), "EnvironmentCdf");
     const auto lightValues = packLights(lights);
     const auto lightBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(lightValues)), "Lights");
+    const auto materials = packSpheres(grid);
+    const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(materials)), "Spheres");
     Accumulators sums(context, coverage.width, coverage.height);
     const size_t pixels = size_t(coverage.width) * coverage.height;
     ReferenceImage image;
@@ -128,14 +130,14 @@ ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Ke
             image.mean.rgba[4 * pixel + 3] = 1.f;
         }
     const size_t covered = active.size();
-    kernels::RenderReferenceParameters parameters{kColumns, kMetalRows, options.cellSize, 0, 0, options.seed,
+    kernels::RenderReferenceParameters parameters{grid.columns(), options.cellSize, 0, 0, options.seed,
                                                   uint32_t(lights.size()), distribution.faceSize, distribution.mip, 0};
     for (uint32_t done = 0; !active.empty(); done += parameters.sampleCount) {
         const auto activeBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(active)), "ActivePixels");
         parameters.firstSample = done;
         parameters.sampleCount = std::min(batchSamples(covered, active.size()), options.maxSamples - done);
         parameters.activeCount = uint32_t(active.size());
-        kernels::runRenderReference(kernel, {environment, cdf, lightBuffer, activeBuffer, sums.radiance, sums.squares},
+        kernels::runRenderReference(kernel, {spheres, environment, cdf, lightBuffer, activeBuffer, sums.radiance, sums.squares},
                                     parameters);
         for (const uint32_t pixel : active) image.samples[pixel] += parameters.sampleCount;
         estimate(image, active, sums.radiance.download(context), sums.squares.download(context));

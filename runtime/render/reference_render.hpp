@@ -1,6 +1,7 @@
 #pragma once
 
 #include "render/lights_file.hpp"
+#include "render/sphere_grid.hpp"
 #include "render/sphere_images.hpp"
 
 #include "bake_progress.hpp"
@@ -37,8 +38,8 @@ struct ReferenceImage {
 // Converged when every pixel left by the bound. Stopping each pixel by its own estimate biases it
 // by far less than its standard error. `environment` is the source cube; its sampling
 // distribution comes from its first mip of at most 256² texels.
-ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& environment,
-                               const std::vector<RenderLight>& lights, const SphereImage& coverage,
+ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,
+                               vulkan::Image& environment, const std::vector<RenderLight>& lights, const SphereImage& coverage,
                                const ReferenceOptions& options, bake::BakeProgress& progress);
 
 } // namespace iblkit::render

@@ -50,20 +50,22 @@ RenderSummary renderSpheres(const RenderSettings& settings, const std::string& t
     bake::BakeDirectory directory(settings.outputDir, settings.environment);
     const auto input = bake::loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
     const vulkan::VulkanContext context(settings.context);
-    auto maps = bakeMaps(context, input, progress);
+    auto maps = bakeMaps(context, input, settings.recipe, progress);
     auto splitSumKernel = bake::makeKernel(context, kernels::KernelRole::RenderSplitSum);
     kernels::Kernel referenceKernel(
         context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(settings.bsdf))));
-    const auto splitSum = renderSplitSum(context, splitSumKernel, maps, settings.cellSize, progress);
-    const double floor = kRelativeFloor * std::max(bake::meanLuminance(maps.irradiance.sh), 1e-30);
-    const auto reference = renderReference(context, referenceKernel, maps.source, lights, splitSum,
+    const auto& grid = defaultSphereGrid();
+    const auto splitSum = renderSplitSum(context, splitSumKernel, grid, maps, settings.cellSize, progress);
+    const double floor = kRelativeFloor * std::max(meanLuminance(maps), 1e-30);
+    const auto reference = renderReference(context, referenceKernel, grid, maps.source, lights, splitSum,
                                            {settings.cellSize, settings.maxSamples, settings.seed, floor, settings.standardErrorBound},
                                            progress);
     requireConverged(reference, settings);
     RenderSummary summary;
-    summary.spheres = sphereErrors(reference, splitSum, settings.cellSize, floor);
-    const RenderReport report{environmentName(settings), settings.bsdf, settings.cellSize, floor, settings.standardErrorBound,
-                              bake::previewExposure(maps.irradiance.sh), &reference, &summary.spheres};
+    summary.spheres = sphereErrors(grid, reference, splitSum, settings.cellSize, floor);
+    const RenderReport report{environmentName(settings), settings.bsdf, settings.recipe.name, &grid, settings.cellSize, floor,
+                              settings.standardErrorBound,
+                              exposureOf(maps), &reference, &summary.spheres};
     summary.files = writeRenderFiles(directory.staging(), report, splitSum);
     writeManifest(directory.staging(), toolVersion, summary.files);
     directory.commit();

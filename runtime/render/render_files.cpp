@@ -23,7 +23,7 @@ image_io::FloatImage floatImage(const SphereImage& image) { return {image.width,
 nlohmann::json sphereJson(const SphereError& sphere) {
     return {{"row", sphere.row},
             {"column", sphere.column},
-            {"material", sphere.transmittance > 0 ? "glass" : "opaque"},
+            {"material", sphere.material},
             {"roughness", sphere.roughness},
             {"metalness", sphere.metalness},
             {"transmittance", sphere.transmittance},
@@ -31,7 +31,8 @@ nlohmann::json sphereJson(const SphereError& sphere) {
             {"mean_relative_error", sphere.meanRelativeError},
             {"max_relative_error", sphere.maxRelativeError},
             {"total_relative_error", sphere.totalRelativeError},
-            {"max_relative_standard_error", sphere.maxRelativeStandardError}};
+            {"max_relative_standard_error", sphere.maxRelativeStandardError},
+            {"mean_relative_standard_error", sphere.meanRelativeStandardError}};
 }
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
@@ -39,6 +40,14 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
     stream << text;
     stream.close();
     if (!stream) throw std::runtime_error("cannot write " + path.string());
+}
+
+nlohmann::json gridJson(const SphereGrid& grid, uint32_t cellSize) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& row : grid.rows)
+        rows.push_back({{"name", row.name}, {"albedo", {row.albedo.r, row.albedo.g, row.albedo.b}}, {"metalness", row.metalness},
+                        {"transmittance", row.transmittance}, {"eta", row.eta}});
+    return {{"roughness", grid.roughness}, {"rows", rows}, {"cell_size", cellSize}};
 }
 
 } // namespace
@@ -60,8 +69,8 @@ nlohmann::json errorsJson(const RenderReport& report) {
     return {{"generator", "iblkit"},
             {"environment", report.environment},
             {"reference_bsdf", nameOf(report.bsdf)},
-            {"grid", {{"columns", kColumns}, {"metal_rows", kMetalRows}, {"glass_rows", 1}, {"cell_size", report.cellSize},
-                      {"min_roughness", kMinRoughness}, {"glass_eta", kGlassEta}}},
+            {"recipe", report.recipe},
+            {"grid", gridJson(*report.grid, report.cellSize)},
             {"relative_to", {{"floor", report.floor}, {"floor_share_of_mean_radiance", kRelativeFloor}}},
             {"exposure", report.exposure},
             {"reference", {{"samples_per_pixel", {{"min", reference.minSamples}, {"mean", reference.meanSamples},

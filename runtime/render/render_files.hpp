@@ -4,6 +4,7 @@
 #include "render/reference_render.hpp"
 #include "render/render_settings.hpp"
 #include "render/sphere_errors.hpp"
+#include "render/sphere_grid.hpp"
 
 #include "bake_outputs.hpp"
 
@@ -23,6 +24,8 @@ Rgba8Image toneMapped(const SphereImage& image, float exposure);
 struct RenderReport {
     std::string environment;
     ReferenceBsdf bsdf = ReferenceBsdf::Document;
+    std::string recipe; // the split sum's shading recipe
+    const SphereGrid* grid = nullptr;
     uint32_t cellSize = 0;
     double floor = 0;
     double standardErrorBound = 0;

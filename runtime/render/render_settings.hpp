@@ -1,5 +1,6 @@
 #pragma once
 
+#include "shading/shading_recipe.hpp"
 #include "vulkan_context.hpp"
 
 #include <cstdint>
@@ -9,14 +10,11 @@
 
 namespace iblkit::render {
 
-// The sphere grid of hlsl/Common/SphereGrid.fxh: roughness across, metalness down, then glass.
-inline constexpr uint32_t kColumns = 7;   // roughness kMinRoughness, 1/6, ..., 1
-inline constexpr uint32_t kMetalRows = 3; // metalness 0, 0.5, 1
-inline constexpr uint32_t kRows = kMetalRows + 1;
-inline constexpr float kMinRoughness = 0.05f; // MIN_ROUGHNESS
-inline constexpr float kGlassEta = 1.5f;      // GLASS_ETA
-inline constexpr uint32_t kDefaultCellSize = 64;
-inline constexpr uint32_t kMaxCellSize = 256; // 1792 x 1024 pixels: a 1D dispatch of 64-thread groups
+// Pixels per cell of the sphere grid (sphere_grid.hpp).
+inline constexpr uint32_t kDefaultCellSize = 48;
+// The reference's dispatch is one thread per active pixel in groups of 64, at most 65535 groups:
+// 4,194,240 pixels, and the default grid at 192-pixel cells is 2496 x 960.
+inline constexpr uint32_t kMaxCellSize = 192;
 
 // The reference renders in batches, each over the pixels still short of the bound
 // (kDefaultStandardErrorBound of their value): a pixel stops once within it, never before
@@ -55,6 +53,7 @@ struct RenderSettings {
     uint32_t maxSamples = kDefaultMaxSamples;
     double standardErrorBound = kDefaultStandardErrorBound;
     ReferenceBsdf bsdf = ReferenceBsdf::Document;
+    shading::ShadingRecipe recipe = shading::defaultRecipe(); // how the split sum's maps are made and read
     uint32_t cellSize = kDefaultCellSize;
     uint32_t seed = 1;
     bool sanitize = false; // as the bake's --sanitize and --strict

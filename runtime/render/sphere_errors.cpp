@@ -1,23 +1,19 @@
 #include "render/sphere_errors.hpp"
 
-#include "render/render_settings.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 namespace iblkit::render {
 namespace {
 
-float fraction(uint32_t index, uint32_t count) { return count > 1 ? float(index) / float(count - 1) : 0.f; }
-
-SphereError sphereOfCell(uint32_t row, uint32_t column) {
+SphereError sphereOfCell(const SphereGrid& grid, uint32_t row, uint32_t column) {
     SphereError sphere;
     sphere.row = row;
     sphere.column = column;
-    sphere.roughness = std::max(fraction(column, kColumns), kMinRoughness);
-    const bool glass = row >= kMetalRows;
-    sphere.metalness = glass ? 0.f : fraction(row, kMetalRows);
-    sphere.transmittance = glass ? 1.f : 0.f;
+    sphere.material = grid.rows[row].name;
+    sphere.roughness = grid.roughness[column];
+    sphere.metalness = grid.rows[row].metalness;
+    sphere.transmittance = grid.rows[row].transmittance;
     return sphere;
 }
 
@@ -35,15 +31,15 @@ std::vector<double> relativeErrors(const SphereImage& reference, const SphereIma
     return errors;
 }
 
-std::vector<SphereError> sphereErrors(const ReferenceImage& reference, const SphereImage& splitSum, uint32_t cellSize,
-                                      double floor) {
+std::vector<SphereError> sphereErrors(const SphereGrid& grid, const ReferenceImage& reference, const SphereImage& splitSum,
+                                      uint32_t cellSize, double floor) {
     const auto& image = reference.mean;
     const auto errors = relativeErrors(image, splitSum, floor);
     std::vector<SphereError> spheres;
-    for (uint32_t row = 0; row < kRows; ++row)
-        for (uint32_t column = 0; column < kColumns; ++column) {
-            auto sphere = sphereOfCell(row, column);
-            double sumSplit = 0, sumReference = 0, sumError = 0;
+    for (uint32_t row = 0; row < grid.rowCount(); ++row)
+        for (uint32_t column = 0; column < grid.columns(); ++column) {
+            auto sphere = sphereOfCell(grid, row, column);
+            double sumSplit = 0, sumReference = 0, sumError = 0, sumNoise = 0;
             for (uint32_t y = row * cellSize; y < (row + 1) * cellSize; ++y)
                 for (uint32_t x = column * cellSize; x < (column + 1) * cellSize; ++x) {
                     const size_t pixel = size_t(y) * image.width + x;
@@ -54,12 +50,13 @@ std::vector<SphereError> sphereErrors(const ReferenceImage& reference, const Sph
                     sphere.maxRelativeError = std::max(sphere.maxRelativeError, std::abs(errors[pixel]));
                     sumSplit += luminance(rgbAt(splitSum.rgba, pixel));
                     sumReference += value;
-                    sphere.maxRelativeStandardError =
-                        std::max(sphere.maxRelativeStandardError,
-                                 luminance(rgbAt(reference.standardError, pixel)) / relativeTo(value, floor));
+                    const double noise = luminance(rgbAt(reference.standardError, pixel)) / relativeTo(value, floor);
+                    sphere.maxRelativeStandardError = std::max(sphere.maxRelativeStandardError, noise);
+                    sumNoise += noise;
                 }
             if (sphere.pixels) {
                 sphere.meanRelativeError = sumError / double(sphere.pixels);
+                sphere.meanRelativeStandardError = sumNoise / double(sphere.pixels);
                 sphere.totalRelativeError = (sumSplit - sumReference) / relativeTo(sumReference, floor * double(sphere.pixels));
             }
             spheres.push_back(sphere);

@@ -1,19 +1,35 @@
 #include "render/split_sum_render.hpp"
 
-#include "render/render_settings.hpp"
-
+#include "buffer.hpp"
 #include "kernels/kernel_steps.hpp"
 
 namespace iblkit::render {
 
-SphereImage renderSplitSum(const vulkan::VulkanContext& context, kernels::Kernel& kernel, BakedMaps& maps,
-                           uint32_t cellSize, bake::BakeProgress& progress) {
+kernels::RenderSplitSumParameters splitSumParameters(const SphereGrid& grid, const BakedMaps& maps, uint32_t cellSize) {
+    const auto& recipe = *maps.recipe;
+    return {grid.columns(),
+            cellSize,
+            maps.schedule.mips,
+            maps.schedule.size,
+            uint32_t(maps.schedule.mapping),
+            float(maps.schedule.parameter),
+            uint32_t(recipe.direction),
+            uint32_t(recipe.lookup),
+            uint32_t(maps.lights.size()),
+            maps.lightLevel};
+}
+
+SphereImage renderSplitSum(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,
+                           BakedMaps& maps, uint32_t cellSize, bake::BakeProgress& progress) {
     progress.begin("split sum");
-    const uint32_t width = kColumns * cellSize, height = kRows * cellSize;
+    const uint32_t width = grid.columns() * cellSize, height = grid.rowCount() * cellSize;
     vulkan::Image image(context, {"SplitSum", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), width, height, 1, 1, false, true});
     const vulkan::Sampler linear(context, {});
-    kernels::runRenderSplitSum(kernel, maps.specular, maps.irradiance.cube, maps.lut, linear, image,
-                               {kColumns, kMetalRows, cellSize, maps.specular.desc().mips});
+    const auto materials = packSpheres(grid);
+    const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(materials)), "Spheres");
+    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance.cube, maps.lut, maps.lobeTable, *maps.lightBuffer,
+                                        linear, image},
+                               splitSumParameters(grid, maps, cellSize));
     progress.addDeviceTime(kernel.takeTotals().deviceMilliseconds);
     SphereImage result{width, height, image.download(context)};
     progress.end();

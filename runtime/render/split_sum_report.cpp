@@ -50,22 +50,17 @@ RenderSummary renderInto(const fs::path& pictures, const std::string& environmen
     return summary;
 }
 
-std::string rowName(const SphereError& sphere) {
-    return sphere.transmittance > 0 ? "glass" : fmt::format("metalness {:g}", sphere.metalness);
-}
+const std::string& rowName(const SphereError& sphere) { return sphere.material; }
 
 // One row per sphere row, one column per roughness: the mean |error|, with the sphere's summed
 // (signed) error after it.
 void writeTable(std::ostream& out, const RenderSummary& render) {
-    out << "| |";
-    for (uint32_t column = 0; column < kColumns; ++column) out << fmt::format(" r {:.2g} |", render.spheres[column].roughness);
-    out << "\n|---|";
-    for (uint32_t column = 0; column < kColumns; ++column) out << "---:|";
-    out << "\n";
-    for (uint32_t row = 0; row < kRows; ++row) {
-        out << "| " << rowName(render.spheres[row * kColumns]) << " |";
-        for (uint32_t column = 0; column < kColumns; ++column) {
-            const auto& sphere = render.spheres[row * kColumns + column];
+    const auto& grid = defaultSphereGrid();
+    out << roughnessTableHead(grid, "");
+    for (uint32_t row = 0; row < grid.rowCount(); ++row) {
+        out << "| " << grid.rows[row].name << " |";
+        for (uint32_t column = 0; column < grid.columns(); ++column) {
+            const auto& sphere = render.spheres[row * grid.columns() + column];
             out << fmt::format(" {:.1f} ({:+.1f}) |", 100 * sphere.meanRelativeError, 100 * sphere.totalRelativeError);
         }
         out << "\n";
@@ -122,13 +117,15 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
          << fmt::format("Each cell is one sphere of `iblkit render`'s grid: the mean over its pixels of |split sum - "
                         "reference| / reference, in percent, and in brackets the error of the sphere's summed luminance, "
                         "signed (negative: the split sum is darker). Errors are taken in luminance against max(reference, "
-                        "{:g} % of the environment's mean radiance). Opaque spheres have base colour (1, 0.766, 0.336); "
-                        "glass has eta {:g}; the first column is roughness {:g}, not 0 (hlsl/Common/SphereGrid.fxh). Each "
+                        "{:g} % of the environment's mean radiance). Plastic, half-metal and gold have gold's colour (1, "
+                        "0.766, 0.336) at metalness 0, 0.5 and 1; silver is (0.972, 0.960, 0.915); glass is white with eta "
+                        "1.5; the first column is roughness 0.02, not 0 (runtime/render/sphere_grid.hpp). Each "
                         "environment is measured twice: against the path tracer document's BSDF as ported, and against "
                         "the same BSDF with the split sum's two choices (k = roughness² / 2 in G, the diffuse weighted by "
                         "1 - metalness alone: hlsl/Common/SplitSumMaterial.fxh), which leaves the approximation alone. "
+                        "The split sum reads maps baked and shaded as the kit's recipe says ([shading-method.md](shading-method.md)). "
                         "A pixel's noise moves a sphere's mean error by at most about its standard error.\n\n",
-                        100 * kRelativeFloor, kGlassEta, kMinRoughness);
+                        100 * kRelativeFloor);
     for (const auto& environment : environments) writeEnvironment(page, environment);
     std::ofstream stream(options.markdown, std::ios::binary);
     stream << page.str();

@@ -41,10 +41,12 @@ TEST(RenderCli, WritesBothImagesTheErrorMapAndTheTable) {
                              "error.png", "errors.json", "manifest.json"})
         EXPECT_TRUE(fs::exists(output / name)) << name;
     const auto errors = nlohmann::json::parse(readFile(output / "errors.json"));
-    EXPECT_EQ(errors.at("spheres").size(), 28u) << "7 roughnesses by 3 metalnesses and glass";
+    EXPECT_EQ(errors.at("spheres").size(), 65u) << "13 roughnesses by plastic, half-metal, gold, silver and glass";
     EXPECT_EQ(errors.at("reference").at("converged"), true);
     EXPECT_LE(errors.at("reference").at("max_relative_standard_error").get<double>(), 0.05);
-    EXPECT_EQ(errors.at("spheres").at(27).at("material"), "glass");
+    EXPECT_EQ(errors.at("spheres").at(64).at("material"), "glass");
+    EXPECT_EQ(errors.at("grid").at("roughness").size(), 13u);
+    EXPECT_EQ(errors.at("recipe"), "kit");
     EXPECT_GT(errors.at("spheres").at(0).at("pixels").get<int>(), 40);
 }
 
@@ -65,6 +67,7 @@ TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
     refused({{"--lights", (folder.path() / "none.json").string()}}, "does not exist");
     refused({{"--lights", folder.write("bad.json", R"({"lights": [{"type": "spot"}]})").string()}}, "unknown type \"spot\"");
     refused({{"--bsdf", "phong"}}, "--bsdf");
+    refused({{"--recipe", "phong"}}, "--recipe no shading recipe 'phong'");
     refused({{"--samples", "256"}, {"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
 }
 

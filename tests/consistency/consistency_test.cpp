@@ -51,13 +51,13 @@ bool isOnPath(const ConsistencyRow& row, std::string_view path) { return row.pat
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 36u * 6u + 4u * 5u)
+    ASSERT_EQ(rows.size(), 37u * 6u + 4u * 5u)
         << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, the polynomial LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
-           "harmonics, the irradiance cube, the energy pyramid and its convolution, the filtered, table and pyramid "
+           "harmonics, the irradiance cube, the energy pyramid and its convolution by N·L and by G1, the filtered, table and pyramid "
            "prefilters at four roughnesses, the pyramid's ring at the two of them wide enough for it, the three probes: the float "
            "reference and five paths each; the preview, both Monte Carlo references and the split-sum spheres: path a "
            "as the reference and four paths";
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 40)
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 41)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
         for (const auto& path : allPathNames())

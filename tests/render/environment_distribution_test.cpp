@@ -44,6 +44,26 @@ TEST(EnvironmentDistribution, FollowsLuminanceTimesSolidAngleWithAUniformShare) 
     EXPECT_NEAR(probabilityOf(cdf, 0), other, kStep);
 }
 
+TEST(EnvironmentDistribution, TwoLitTexelsOfOtherColoursAndSolidAnglesShareByLuminanceTimesSolidAngle) {
+    auto faces = constantFaces(0.f);
+    const size_t corner = 0, centre = 2 * kSize * kSize + kSize / 2 * kSize + kSize / 2; // face +Y's corner and centre
+    const float red[3] = {900.f, 0.f, 0.f}, blue[3] = {0.f, 0.f, 2500.f};
+    for (int c = 0; c < 3; ++c) faces[4 * corner + c] = red[c], faces[4 * centre + c] = blue[c];
+    const auto cdf = environmentCdf(faces, kSize);
+    const double cornerLight = 0.2126 * 900 * reference::CubeTexelSolidAngle<double>(0, 0, kSize);
+    const double centreLight = 0.0722 * 2500 * reference::CubeTexelSolidAngle<double>(kSize / 2, kSize / 2, kSize);
+    const double lit = 1 - kUniformShare, total = cornerLight + centreLight;
+    const auto uniform = [&](size_t texel) {
+        return kUniformShare * reference::CubeTexelSolidAngle<double>(texel % kSize, texel / kSize % kSize, kSize) /
+               (4 * std::numbers::pi);
+    };
+    // Each within the grid's rounding: 0.20 and 0.70 of the draws (of the lit 0.9), the corner's
+    // texel a quarter of the centre's solid angle, its luminance (red's weight against blue's)
+    // 1.06 times as much.
+    EXPECT_NEAR(probabilityOf(cdf, corner), lit * cornerLight / total + uniform(corner), kStep);
+    EXPECT_NEAR(probabilityOf(cdf, centre), lit * centreLight / total + uniform(centre), kStep);
+}
+
 TEST(EnvironmentDistribution, ABlackEnvironmentIsSpreadBySolidAngle) {
     const auto cdf = environmentCdf(constantFaces(0.f), kSize);
     const double corner = reference::CubeTexelSolidAngle<double>(0, 0, kSize) / (4 * std::numbers::pi);

@@ -10,6 +10,7 @@
 #include "plan_command.hpp"
 #include "porting_command.hpp"
 #include "render_command.hpp"
+#include "shading_command.hpp"
 #include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
     iblkit::cli::addPortingCommand(app);
     iblkit::cli::addRenderCommand(app);
     iblkit::cli::addRenderReportCommand(app);
+    iblkit::cli::addShadingCommand(app);
     // CLI11 calls a word it does not know "A subcommand is required"; name it and the commands.
     const auto commands = app.get_subcommands({});
     const auto known = [&](const std::string& word) {

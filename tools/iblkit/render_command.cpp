@@ -2,6 +2,7 @@
 
 #include "bake_manifest.hpp"
 #include "render/render.hpp"
+#include "render/render_error.hpp"
 #include "render/split_sum_report.hpp"
 #include "run_command.hpp"
 #include "signal_cleanup.hpp"
@@ -42,12 +43,20 @@ void printSummary(const render::RenderSummary& summary) {
                100 * summary.maxRelativeStandardError, 100 * worstMean);
 }
 
+shading::ShadingRecipe recipeOption(const std::string& name) {
+    try {
+        return shading::recipeNamed(name);
+    } catch (const std::invalid_argument& error) {
+        throw render::RenderError(fmt::format("--recipe {}", error.what()));
+    }
+}
+
 } // namespace
 
 void addRenderCommand(CLI::App& app) {
     struct Arguments {
         render::RenderSettings settings;
-        std::string environment, lights, bsdf = "document";
+        std::string environment, lights, bsdf = "document", recipe = shading::defaultRecipe().name;
         bool quiet = false, json = false;
     };
     auto arguments = std::make_shared<Arguments>();
@@ -71,6 +80,9 @@ void addRenderCommand(CLI::App& app) {
                         "The reference's BSDF: document (the path tracer's, as ported) or split-sum (the same with the "
                         "split sum's k and diffuse weight, leaving only the approximation in the error)")
         ->check(CLI::IsMember({"document", "split-sum"}));
+    command->add_option("--recipe", arguments->recipe,
+                        fmt::format("How the split sum's maps are made and read (docs/shading.md; default {})",
+                                    shading::defaultRecipe().name));
     command->add_option("--cell-size", s.cellSize, fmt::format("Pixels across each sphere's cell (default {})", render::kDefaultCellSize));
     command->add_option("--seed", s.seed, "The reference's random seed (default 1)");
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
@@ -85,6 +97,7 @@ void addRenderCommand(CLI::App& app) {
         if (!arguments->environment.empty()) settings.environment = arguments->environment;
         if (!arguments->lights.empty()) settings.lights = arguments->lights;
         settings.bsdf = render::referenceBsdfNamed(arguments->bsdf);
+        settings.recipe = recipeOption(arguments->recipe);
         auto log = std::make_shared<vulkan::ValidationLog>();
         settings.context.validationLog = log;
         bake::BakeProgress progress(arguments->quiet);
