@@ -85,31 +85,14 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
 
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
                                 kernels::SpecularMethod* prefilter, BakeProgress& progress) {
-    progress.begin("prefilter");
-    const uint32_t size = source.desc().width, mips = uint32_t(prefiltered.size());
-    auto specular = makeCube(context, "Specular", size, mips);
-    specular.copyMipFrom(context, source, 0);
-    const vulkan::Sampler linear(context, {});
-    const auto convolved = [&](uint32_t mip) { return prefilter && prefiltered[mip]; };
-    double work = 0, done = 0; // texels still to convolve, for the percentage
-    for (uint32_t mip = 1; mip < mips; ++mip)
-        if (convolved(mip)) work += std::pow(double(specular.mipWidth(mip)), 2);
-    for (uint32_t mip = 1; mip < mips; ++mip) {
-        if (!convolved(mip)) {
-            specular.copyMipFrom(context, source, mip);
-            continue;
-        }
-        progress.advance(done / work, fmt::format("mip {} of {}", mip, mips - 1));
-        prefilter->run(source, linear, specular, mip, roughnessOfMip(mip, mips));
-        progress.addDeviceTime(prefilter->takeTotals().deviceMilliseconds);
-        done += std::pow(double(specular.mipWidth(mip)), 2);
-    }
-    progress.end();
-    return specular;
+    SpecularLevels levels;
+    levels.prefiltered = prefiltered;
+    for (uint32_t mip = 0; mip < prefiltered.size(); ++mip) levels.roughness.push_back(roughnessOfMip(mip, uint32_t(prefiltered.size())));
+    return prefilterLevels(context, source, levels, prefilter, progress);
 }
 
 vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Image& source, const SpecularLevels& levels,
-                              kernels::SpecularMethod& prefilter, BakeProgress& progress) {
+                              kernels::SpecularMethod* prefilter, BakeProgress& progress) {
     progress.begin("prefilter");
     const uint32_t size = source.desc().width, mips = uint32_t(levels.roughness.size());
     auto specular = makeCube(context, "Specular", size, mips);
@@ -118,11 +101,19 @@ vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Imag
     };
     specular.copyMipFrom(context, sourceOf(0), 0);
     const vulkan::Sampler linear(context, {});
+    const auto convolved = [&](uint32_t mip) { return prefilter && (levels.prefiltered.empty() || levels.prefiltered[mip]); };
+    double work = 0, done = 0; // texels still to convolve, for the percentage
+    for (uint32_t mip = 1; mip < mips; ++mip)
+        if (convolved(mip)) work += std::pow(double(specular.mipWidth(mip)), 2);
     for (uint32_t mip = 1; mip < mips; ++mip) {
-        progress.advance(double(mip - 1) / double(mips - 1), fmt::format("mip {} of {}", mip, mips - 1));
-        auto& from = sourceOf(mip);
-        prefilter.run(from, linear, specular, mip, levels.roughness[mip]);
-        progress.addDeviceTime(prefilter.takeTotals().deviceMilliseconds);
+        if (!convolved(mip)) {
+            specular.copyMipFrom(context, sourceOf(mip), mip);
+            continue;
+        }
+        progress.advance(done / work, fmt::format("mip {} of {}", mip, mips - 1));
+        prefilter->run(sourceOf(mip), linear, specular, mip, levels.roughness[mip]);
+        progress.addDeviceTime(prefilter->takeTotals().deviceMilliseconds);
+        done += std::pow(double(specular.mipWidth(mip)), 2);
     }
     progress.end();
     return specular;

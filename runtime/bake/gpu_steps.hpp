@@ -27,16 +27,17 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
 vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
                                 kernels::SpecularMethod* prefilter, BakeProgress& progress);
 
-// The levels of a shading recipe: mip m at roughness[m], prefiltered from `source` below
-// residualFrom and from `residual` (the environment with its lights taken out) from there on;
-// mip 0 is its source's own mip 0.
+// The levels of a shading recipe: mip m at roughness[m] where prefiltered[m] (every mip when it
+// is empty), from `source` below residualFrom and from `residual` (the environment with its
+// lights taken out) from there on; mip 0, and every mip not prefiltered, is its source's own.
 struct SpecularLevels {
     std::vector<float> roughness;
+    std::vector<bool> prefiltered;
     vulkan::Image* residual = nullptr;
     uint32_t residualFrom = 0;
 };
 vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Image& source, const SpecularLevels& levels,
-                              kernels::SpecularMethod& prefilter, BakeProgress& progress);
+                              kernels::SpecularMethod* prefilter, BakeProgress& progress);
 
 // A 1x1 LUT of zeros, for the preview of a bake that needs no LUT.
 vulkan::Image blankBrdfLut(const vulkan::VulkanContext& context);

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 namespace iblkit::render {
@@ -18,10 +20,20 @@ std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::I
     return {first, first + std::ptrdiff_t(count)};
 }
 
+// The table depends on the weighting alone: computed once per process (48 ms), not once per bake.
+const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting) {
+    static std::mutex mutex;
+    static std::map<shading::LobeWeighting, std::vector<float>> tables;
+    const std::lock_guard lock(mutex);
+    auto found = tables.find(weighting);
+    if (found == tables.end()) found = tables.emplace(weighting, shading::lobeTable(shading::kLobeTableSize, weighting)).first;
+    return found->second;
+}
+
 vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting) {
     const uint32_t size = shading::kLobeTableSize;
     vulkan::Image table(context, {"LobeTable", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 1, 1, false, false});
-    table.upload(context, shading::lobeTable(size, weighting));
+    table.upload(context, lobeTableOf(weighting));
     return table;
 }
 
@@ -75,11 +87,11 @@ BakedMaps bakeMaps(const vulkan::VulkanContext& context, const bake::Environment
         }
     }
     const uint32_t lightLevel = shading::lightLevelOf(recipe, schedule, lights);
-    bake::SpecularLevels levels{{}, residual ? &*residual : nullptr, lightLevel};
+    bake::SpecularLevels levels{{}, {}, residual ? &*residual : nullptr, lightLevel};
     for (uint32_t mip = 0; mip < mips; ++mip) levels.roughness.push_back(float(schedule.roughnessOf(mip)));
     auto& prefilter = *kernels.specular();
     prefilter.setWeighting(recipe.weighting);
-    auto specular = bake::prefilterLevels(context, source, levels, prefilter, progress);
+    auto specular = bake::prefilterLevels(context, source, levels, &prefilter, progress);
     auto lut = bake::integrateBrdfLut(context, defaults.lutSize, *kernels.lut(), progress);
     auto irradiance = bake::computeIrradiance(context, kernels.irradiance(), residual ? *residual : source,
                                               defaults.irradianceSize, progress, true, recipe.irradianceSource);

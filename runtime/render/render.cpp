@@ -14,7 +14,6 @@
 #include <fmt/core.h>
 
 #include <chrono>
-#include <fstream>
 
 namespace iblkit::render {
 namespace {
@@ -23,10 +22,7 @@ void writeManifest(const std::filesystem::path& folder, const std::string& toolV
                    std::vector<bake::WrittenFile> files) {
     const nlohmann::json manifest = {{"generator", "iblkit"}, {"version", toolVersion}, {"kind", "render"},
                                      {"files", bake::filesJson(files)}};
-    std::ofstream stream(folder / "manifest.json", std::ios::binary);
-    stream << manifest.dump(2) << "\n";
-    stream.close();
-    if (!stream) throw RenderError("cannot write " + (folder / "manifest.json").string());
+    writeText(folder / "manifest.json", manifest.dump(2) + "\n");
 }
 
 std::string environmentName(const RenderSettings& settings) {

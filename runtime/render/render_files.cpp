@@ -1,5 +1,6 @@
 #include "render/render_files.hpp"
 
+#include "render/render_error.hpp"
 #include "render/render_settings.hpp"
 
 #include "float_image.hpp"
@@ -35,13 +36,6 @@ nlohmann::json sphereJson(const SphereError& sphere) {
             {"mean_relative_standard_error", sphere.meanRelativeStandardError}};
 }
 
-void writeText(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream stream(path, std::ios::binary);
-    stream << text;
-    stream.close();
-    if (!stream) throw std::runtime_error("cannot write " + path.string());
-}
-
 nlohmann::json gridJson(const SphereGrid& grid, uint32_t cellSize) {
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : grid.rows)
@@ -51,6 +45,13 @@ nlohmann::json gridJson(const SphereGrid& grid, uint32_t cellSize) {
 }
 
 } // namespace
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream stream(path, std::ios::binary);
+    stream << text;
+    stream.close();
+    if (!stream) throw RenderError("cannot write " + path.string());
+}
 
 Rgba8Image toneMapped(const SphereImage& image, float exposure) {
     Rgba8Image result{image.width, image.height, std::vector<uint8_t>(image.rgba.size(), 255)};

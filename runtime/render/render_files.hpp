@@ -16,6 +16,9 @@
 
 namespace iblkit::render {
 
+// `text` into `path`, whole; RenderError naming the path when it cannot be written.
+void writeText(const std::filesystem::path& path, const std::string& text);
+
 // The preview's display transform (hlsl/PreviewCS.hlsl's ToneMap): exposure, Narkowicz's ACES
 // fit, the sRGB curve; uncovered pixels black.
 Rgba8Image toneMapped(const SphereImage& image, float exposure);

@@ -1,6 +1,7 @@
 #include "render/shading_report.hpp"
 
 #include "render/render_error.hpp"
+#include "render/render_files.hpp"
 #include "render/render_settings.hpp"
 #include "render/sphere_grid.hpp"
 
@@ -12,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -23,13 +23,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* kPython = "/usr/bin/python3";
 constexpr double kNoiseShare = 0.8; // E|n| / σ for a normal n
-
-void writeText(const fs::path& path, const std::string& text) {
-    std::ofstream stream(path, std::ios::binary);
-    stream << text;
-    stream.close();
-    if (!stream) throw RenderError("cannot write " + path.string());
-}
 
 // A value to six decimal places, as results.json keeps it.
 double rounded(double value) { return std::round(value * 1e6) / 1e6; }

@@ -1,12 +1,12 @@
 #include "render/split_sum_report.hpp"
 
 #include "render/render_error.hpp"
+#include "render/render_files.hpp"
 
 #include "bench_environments.hpp"
 
 #include <fmt/core.h>
 
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -127,10 +127,7 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
                         "A pixel's noise moves a sphere's mean error by at most about its standard error.\n\n",
                         100 * kRelativeFloor);
     for (const auto& environment : environments) writeEnvironment(page, environment);
-    std::ofstream stream(options.markdown, std::ios::binary);
-    stream << page.str();
-    stream.close();
-    if (!stream) throw RenderError("cannot write " + options.markdown.string());
+    writeText(options.markdown, page.str());
 }
 
 } // namespace iblkit::render
