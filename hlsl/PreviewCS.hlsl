@@ -1,6 +1,8 @@
 // The bake's preview: a grid of spheres, roughness 0 to 1 across and metalness 0 to 1 down,
-// shaded with the baked maps by the split-sum combine plus the diffuse term, above a strip of
-// the prefiltered mips as panoramas; tone mapped and sRGB encoded for an 8-bit image.
+// shaded with the baked maps and lights as the bake's shading recipe reads them
+// (Common/ImageBasedLighting.fxh's IblShadeOpaque and IblDiskLight; the documents' recipe is
+// their split-sum combine plus the diffuse term), above a strip of the prefiltered mips as
+// panoramas; tone mapped and sRGB encoded for an 8-bit image.
 #include "Common/Cube.fxh"
 #include "Common/ImageBasedLighting.fxh"
 
@@ -12,17 +14,32 @@ cbuffer PreviewParameter : register( b0 )
     uint SpecularMips;
     uint StripPanelWidth;
     float Exposure;
+    uint SpecularSize;
+    uint LodMapping;
+    float LodParameter;
+    uint Direction;
+    uint Lookup;
+    uint LightCount;
+    uint LightLevel;
 };
 
 TextureCube Specular;
 TextureCube IrradianceMap;
 Texture2D<float2> BrdfLut;
+Texture2D<float4> LobeTable;
+// Two float4 per light: (direction towards it, angular radius), (radiance, solid angle).
+StructuredBuffer<float4> Lights;
 SamplerState LinearClamp;
 RWTexture2D<float4> Preview;
 
 // Gold's reflectance at normal incidence: orange plastic at metalness 0, gold at 1.
 static const float3 BASE_COLOR = float3( 1.f, 0.766f, 0.336f );
 static const float3 BACKGROUND = float3( 0.02f, 0.02f, 0.02f );
+
+IblRecipe Recipe()
+{
+    return IblRecipeOf( LodMapping, LodParameter, SpecularMips, SpecularSize, Direction, Lookup, LightCount, LightLevel );
+}
 
 float Fraction( uint index, uint count )
 {
@@ -53,9 +70,15 @@ float3 ShadeSphere( uint2 pixel )
     float metalness = Fraction( cell.y, Rows );
     float3 normal = float3( p / radius, sqrt( 1.f - r2 ) );
     float3 viewDirection = float3( 0.f, 0.f, 1.f );
+    float residualShare;
+    float3 color = IblShadeOpaque( normal, viewDirection, BASE_COLOR, roughness, metalness, Recipe(), Specular,
+                                   IrradianceMap, BrdfLut, LobeTable, LinearClamp, residualShare );
     float3 f0 = lerp( (float3)0.04f, BASE_COLOR, metalness );
-    return SplitSumSpecular( normal, viewDirection, roughness, f0, Specular, SpecularMips, BrdfLut, LinearClamp )
-         + IrradianceDiffuse( normal, BASE_COLOR, metalness, IrradianceMap, LinearClamp );
+    float3 albedo = IblDirectionalAlbedo( normal, viewDirection, roughness, f0, BrdfLut, LinearClamp );
+    for ( uint i = 0u; i < LightCount; ++i )
+        color += IblDiskLight( normal, viewDirection, roughness, f0, albedo, BASE_COLOR * ( 1.f - metalness ), residualShare,
+                               Lights[2u * i], Lights[2u * i + 1u] );
+    return color;
 }
 
 float3 ShadeStrip( uint2 pixel )

@@ -34,16 +34,7 @@ RWTexture2D<float4> SplitSum;
 
 IblRecipe Recipe()
 {
-    IblRecipe recipe;
-    recipe.LodMapping = LodMapping;
-    recipe.LodParameter = LodParameter;
-    recipe.SpecularMips = SpecularMips;
-    recipe.SpecularSize = SpecularSize;
-    recipe.Direction = Direction;
-    recipe.Lookup = Lookup;
-    recipe.LightCount = LightCount;
-    recipe.LightLevel = LightLevel;
-    return recipe;
+    return IblRecipeOf( LodMapping, LodParameter, SpecularMips, SpecularSize, Direction, Lookup, LightCount, LightLevel );
 }
 
 float SchlickTransmission( float cosine, float f0 )

@@ -62,6 +62,22 @@ struct IblRecipe
     uint LightLevel;   // the first mip prefiltered without the lights (mips below it hold them)
 };
 
+// A recipe from the fields a kernel's cbuffer holds.
+IblRecipe IblRecipeOf( uint lodMapping, float lodParameter, uint specularMips, uint specularSize, uint direction, uint lookup,
+                       uint lightCount, uint lightLevel )
+{
+    IblRecipe recipe;
+    recipe.LodMapping = lodMapping;
+    recipe.LodParameter = lodParameter;
+    recipe.SpecularMips = specularMips;
+    recipe.SpecularSize = specularSize;
+    recipe.Direction = direction;
+    recipe.Lookup = lookup;
+    recipe.LightCount = lightCount;
+    recipe.LightLevel = lightLevel;
+    return recipe;
+}
+
 float IblLodOfRoughness( float roughness, IblRecipe recipe )
 {
     float last = float( recipe.SpecularMips - 1u );

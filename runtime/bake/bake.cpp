@@ -6,6 +6,8 @@
 #include "bake_manifest.hpp"
 #include "bake_plan.hpp"
 #include "environment_input.hpp"
+#include "lights_gltf.hpp"
+#include "shading_maps.hpp"
 #include "content_store.hpp"
 
 #include <fmt/core.h>
@@ -38,9 +40,16 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     auto outputs = bakeOutputs(settings, input, size, plan, toolVersion, progress, store ? &*store : nullptr);
 
     progress.begin("write");
+    const bool lobeTableFile = plan.specular && readsLobeTable(*plan.recipe);
+    const ManifestFacts facts{toolVersion, outputs.device, &input, &settings, size, mips, &outputs.sh, nullptr,
+                              outputs.previewExposure, &plan, &outputs.lights, outputs.lightLevel, lobeTableFile};
+    if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = shadingJson(facts).dump();
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance})
         if (*texture) textures.push_back(std::move(**texture));
+    if (lobeTableFile)
+        textures.push_back({"lobe_table", image_io::PixelFormat::Rgba32Float, shading::kLobeTableSize, 1, 1,
+                            lobeTableOf(plan.recipe->weighting)});
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));
@@ -49,9 +58,14 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     for (const auto& texture : textures)
         for (auto& file : writeTexture(directory.staging(), texture, settings, writer)) files.push_back(std::move(file));
     files.push_back(writeBytes(directory.staging(), "preview.png", std::as_bytes(std::span(outputs.previewPng))));
+    if (!outputs.lights.empty()) {
+        const auto gltf = lightsGltf(outputs.lights, writer);
+        files.push_back(writeBytes(directory.staging(), "lights.gltf", std::as_bytes(std::span(gltf))));
+    }
 
-    auto manifest = bakeManifest({toolVersion, outputs.device, &input, &settings, size, mips, &outputs.sh, &clamps,
-                                  outputs.previewExposure, &plan});
+    auto manifestFacts = facts;
+    manifestFacts.halfRangeClamps = &clamps;
+    auto manifest = bakeManifest(manifestFacts);
     manifest["files"] = filesJson(files);
     const std::string manifestText = manifest.dump(2) + "\n";
     files.push_back(writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText))));

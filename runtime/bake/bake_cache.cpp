@@ -4,6 +4,7 @@
 #include "sha256.hpp"
 #include "kernels/specular_method.hpp"
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -61,6 +62,20 @@ cache::CacheKey& addSource(cache::CacheKey& key, const EnvironmentInput& input, 
     return key.add("source kernels", kernelSourcesDigest(sourceKernels(input), files));
 }
 
+// Which sources the recipe takes out as lights: what the residual every map is made from depends on.
+cache::CacheKey& addLights(cache::CacheKey& key, const shading::ShadingRecipe& recipe) {
+    if (!recipe.lights) return key.add("lights", "none");
+    const auto& lights = *recipe.lights;
+    return key.add("lights", fmt::format("above {:.17g} times the mean, at least {:.17g} of the light, within {:.17g} rad, at most {}",
+                                         lights.threshold, lights.minShare, lights.maxRadius, lights.maxLights));
+}
+
+std::string roughnessList(const BakePlan& plan) {
+    std::string list;
+    for (const auto& mip : plan.mips) list += fmt::format("{:a} ", mip.roughness);
+    return list;
+}
+
 } // namespace
 
 std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, const kernels::ShaderFiles& files) {
@@ -83,8 +98,12 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
         .add("method", settings.specularMethod)
         .add("samples", resolvedSamples(settings))
         .add("prefiltered mips", plan.prefilteredMips())
+        .add("roughness of mips", roughnessList(plan))
+        .add("lobe", std::string(shading::nameOf(plan.recipe->weighting)))
+        .add("light level rule", fmt::format("{:.17g}", plan.recipe->lobeOverLight))
         .add("kernels", kernelSourcesDigest(methodKernels(settings.specularMethod), files))
         .add("cluster kernel", kernelSourcesDigest({"ClusterCubeCS"}, files)); // the convolution's pyramids
+    addLights(specular, *plan.recipe);
     auto lut = commonKey("brdf lut", device, toolVersion);
     lut.add("method", settings.lutMethod).add("samples", resolvedLutSamples(settings)).add("size", settings.lutSize);
     lut.add("kernels", kernelSourcesDigest(methodKernels(settings.lutMethod), files));
@@ -92,11 +111,18 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
     addSource(irradiance, input, size, files)
         .add("size", settings.irradianceSize)
         .add("cube", plan.irradiance)
-        .add("kernels", kernelSourcesDigest({"ShProjectCS", "IrradianceCubeCS"}, files));
-    BakeKeys keys{specular.hex(), lut.hex(), irradiance.hex(), ""};
+        .add("kernels", kernelSourcesDigest({"ShProjectCS", "IrradianceCubeCS"}, files))
+        .add("irradiance source", plan.recipe->irradianceSource);
+    addLights(irradiance, *plan.recipe);
+    auto lights = commonKey("lights", device, toolVersion);
+    addLights(addSource(lights, input, size, files), *plan.recipe);
+    BakeKeys keys{specular.hex(), lut.hex(), irradiance.hex(), lights.hex(), ""};
     auto preview = commonKey("preview", device, toolVersion);
     preview.add("specular", keys.specular).add("brdf lut", plan.lut ? keys.lut : "none").add("irradiance", keys.irradiance);
-    preview.add("kernels", kernelSourcesDigest({"PreviewCS"}, files));
+    preview.add("kernels", kernelSourcesDigest({"PreviewCS"}, files)).add("lights", keys.lights);
+    const auto& recipe = *plan.recipe;
+    preview.add("recipe", fmt::format("{} {} {:.17g} {} {}", shading::nameOf(recipe.weighting), shading::nameOf(recipe.mapping),
+                                      recipe.mappingParameter, shading::nameOf(recipe.direction), shading::nameOf(recipe.lookup)));
     keys.preview = preview.hex();
     return keys;
 }
@@ -151,6 +177,34 @@ std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::
     } catch (const json::exception&) {
         return std::nullopt;
     }
+}
+
+std::string lightsPayload(const std::vector<shading::EnvironmentLight>& lights) {
+    json list = json::array();
+    for (const auto& light : lights)
+        list.push_back({{"direction", {light.direction.x, light.direction.y, light.direction.z}},
+                        {"radiance", {light.radiance.r, light.radiance.g, light.radiance.b}},
+                        {"solid_angle", light.solidAngle},
+                        {"angular_radius", light.angularRadius},
+                        {"share", light.share}});
+    return list.dump();
+}
+
+std::optional<std::vector<shading::EnvironmentLight>> lightsFromPayload(std::string_view payload) {
+    const auto list = json::parse(payload, nullptr, false);
+    if (list.is_discarded() || !list.is_array()) return std::nullopt;
+    const auto vector = [](const json& value) {
+        return glm::dvec3(value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>());
+    };
+    std::vector<shading::EnvironmentLight> lights;
+    try {
+        for (const auto& light : list)
+            lights.push_back({vector(light.at("direction")), vector(light.at("radiance")), light.at("solid_angle").get<double>(),
+                              light.at("angular_radius").get<double>(), light.at("share").get<double>()});
+    } catch (const json::exception&) {
+        return std::nullopt;
+    }
+    return lights;
 }
 
 } // namespace iblkit::bake

@@ -21,7 +21,7 @@ namespace iblkit::bake {
 // bytes. The LUT's key holds no environment, so one LUT serves every environment baked with its
 // settings.
 struct BakeKeys {
-    std::string specular, lut, irradiance, preview;
+    std::string specular, lut, irradiance, lights, preview;
 };
 BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                   const vulkan::DeviceInfo& device, const std::string& toolVersion,
@@ -36,5 +36,7 @@ std::string texturePayload(const BakedTexture& texture);
 std::optional<BakedTexture> textureFromPayload(std::string_view payload);
 std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube);
 std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::string_view payload);
+std::string lightsPayload(const std::vector<shading::EnvironmentLight>& lights);
+std::optional<std::vector<shading::EnvironmentLight>> lightsFromPayload(std::string_view payload);
 
 } // namespace iblkit::bake

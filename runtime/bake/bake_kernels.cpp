@@ -1,6 +1,7 @@
 #include "bake_kernels.hpp"
 
 #include "kernels/compiled_kernel_cache.hpp"
+#include "shading_maps.hpp"
 
 namespace iblkit::bake {
 
@@ -11,15 +12,20 @@ BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSetting
     specularFuture_ = std::async(std::launch::async, [&context, cache, method = settings.specularMethod,
                                                       samples = resolvedSamples(settings), needed = outputs.specular] {
         const kernels::UseCompiledKernelCache use(cache);
+        // The residual of a recipe's lights gets its mips first, then the prefilter reads them.
+        auto downsample = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::DownsampleCube));
         auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples) : nullptr;
         auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
-        return Specular{std::move(specular), std::move(preview)};
+        return Specular{std::move(specular), std::move(preview), std::move(downsample)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, cache, method = settings.lutMethod,
-                                                 count = resolvedLutSamples(settings), needed = outputs.lut] {
+                                                 count = resolvedLutSamples(settings), needed = outputs.lut,
+                                                 weighting = resolvedRecipe(settings).weighting] {
         const kernels::UseCompiledKernelCache use(cache);
         auto lut = needed ? std::make_unique<kernels::LutMethod>(context, method, count) : nullptr;
-        return Lut{std::move(lut), std::make_unique<IrradianceKernels>(context)};
+        auto irradiance = std::make_unique<IrradianceKernels>(context);
+        lobeTableOf(weighting); // the preview's, off the bake's path (48 ms)
+        return Lut{std::move(lut), std::move(irradiance)};
     });
 }
 
@@ -35,6 +41,7 @@ BakeKernels::Lut& BakeKernels::lutReady() {
 
 kernels::SpecularMethod* BakeKernels::specular() { return specularReady().method.get(); }
 kernels::Kernel& BakeKernels::preview() { return *specularReady().preview; }
+kernels::Kernel& BakeKernels::downsample() { return *specularReady().downsample; }
 kernels::LutMethod* BakeKernels::lut() { return lutReady().method.get(); }
 IrradianceKernels& BakeKernels::irradiance() { return *lutReady().irradiance; }
 

@@ -24,6 +24,7 @@ public:
 
     kernels::SpecularMethod* specular();
     kernels::Kernel& preview();
+    kernels::Kernel& downsample(); // DownsampleCubeCS, for a cube made on the host
     kernels::LutMethod* lut();
     IrradianceKernels& irradiance();
 
@@ -31,6 +32,7 @@ private:
     struct Specular {
         std::unique_ptr<kernels::SpecularMethod> method;
         std::unique_ptr<kernels::Kernel> preview;
+        std::unique_ptr<kernels::Kernel> downsample;
     };
     struct Lut {
         std::unique_ptr<kernels::LutMethod> method;

@@ -44,6 +44,7 @@ json settingsJson(const ManifestFacts& facts) {
     return {{"size", facts.size},
             {"mips", facts.mips},
             {"method", s.specularMethod},
+            {"recipe", facts.plan->recipe->name},
             {"samples", resolvedSamples(s)},
             {"lut_size", s.lutSize},
             {"lut_method", s.lutMethod},
@@ -69,10 +70,10 @@ uint32_t samplesPerDispatch(uint32_t samples) {
 }
 
 // The mip chain's mips: those copied from the source's own mips, and those the ring computed.
-json mipChainJson(const std::string& method, uint32_t size, uint32_t mips) {
+json mipChainJson(const std::string& method, uint32_t size, const BakePlan& plan) {
     json copied = json::array(), ring = json::array();
-    for (uint32_t mip = 1; mip < mips; ++mip)
-        (kernels::mipChainCopies(roughnessOfMip(mip, mips), size) ? copied : ring).push_back(mip);
+    for (const auto& mip : plan.mips)
+        if (mip.mip > 0) (kernels::mipChainCopies(mip.roughness, size) ? copied : ring).push_back(mip.mip);
     return {{"method", method},
             {"mips_copied_from_the_source", copied},
             {"mips_from_the_ring", ring},
@@ -82,7 +83,7 @@ json mipChainJson(const std::string& method, uint32_t size, uint32_t mips) {
 // How the prefilter method computed the mips: a sampled estimator's count and shader, a sample
 // table's count at each mip, the pyramid's reads per texel, the mip chain's copied and ring mips,
 // or the convolution's budget of terms per texel and its two shaders.
-json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips) {
+json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips, const BakePlan& plan) {
     const uint32_t samples = resolvedSamples(settings);
     const auto& method = settings.specularMethod;
     const auto kind = kernels::specularKindOf(method);
@@ -98,7 +99,7 @@ json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips) {
         return {{"method", method},
                 {"reads_per_texel", samples},
                 {"shader", kernels::kernelFor(kernels::KernelRole::PrefilterPyramid, method).options.source.generic_string()}};
-    if (kind == kernels::SpecularKind::MipChain) return mipChainJson(method, size, mips);
+    if (kind == kernels::SpecularKind::MipChain) return mipChainJson(method, size, plan);
     if (kind == kernels::SpecularKind::Convolution)
         return {{"method", method},
                 {"terms_per_texel", samples},
@@ -144,16 +145,45 @@ json lutJson(const BakeSettings& s) {
     return lut;
 }
 
+// How each mip's roughness follows from the lod mapping (runtime/shading/mip_schedule.hpp).
+std::string scheduleText(const shading::MipSchedule& schedule) {
+    const char* copied = "; mip 0 is the source cube, copied";
+    switch (schedule.mapping) {
+    case shading::LodMapping::Linear: return std::string("mip / (mips - 1)") + copied;
+    case shading::LodMapping::Quadratic: return std::string("r with r (2 - r) = mip / (mips - 1)") + copied;
+    case shading::LodMapping::Power:
+        return fmt::format("r with r^{:g} = mip / (mips - 1){}", schedule.parameter, copied);
+    case shading::LodMapping::Babylon: return std::string("r with 0.8 log2(r² size) = mip") + copied;
+    case shading::LodMapping::Logarithmic:
+        return fmt::format("r with lod = k log2(r² size) + b = mip: mip 1 at r² = {:.6g} / size, the last at r = 1{}",
+                           schedule.parameter, copied);
+    }
+    return copied;
+}
+
+json lightsJson(const std::vector<shading::EnvironmentLight>& lights) {
+    json list = json::array();
+    for (const auto& light : lights)
+        list.push_back({{"direction", {light.direction.x, light.direction.y, light.direction.z}},
+                        {"radiance", {light.radiance.r, light.radiance.g, light.radiance.b}},
+                        {"angular_radius", light.angularRadius},
+                        {"solid_angle", light.solidAngle},
+                        {"share_of_the_light", light.share}});
+    return list;
+}
+
 json specularJson(const ManifestFacts& facts) {
     json roughness = json::array();
-    for (uint32_t mip = 0; mip < facts.mips; ++mip) roughness.push_back(roughnessOfMip(mip, facts.mips));
+    for (const auto& mip : facts.plan->mips) roughness.push_back(mip.roughness);
+    const auto schedule = shading::scheduleOf(*facts.plan->recipe, facts.mips, facts.size);
     json specular = {{"file", "specular.ktx2"},
                      {"format", "R16G16B16A16_SFLOAT"},
                      {"size", facts.size},
                      {"mips", facts.mips},
-                     {"roughness_of_mip", "mip / (mips - 1); mip 0 is the source cube, copied"},
-                     {"roughness", roughness}};
-    specular.update(prefilterJson(*facts.settings, facts.size, facts.mips));
+                     {"roughness_of_mip", scheduleText(schedule)},
+                     {"roughness", roughness},
+                     {"lobe_weighting", shading::nameOf(facts.plan->recipe->weighting)}};
+    specular.update(prefilterJson(*facts.settings, facts.size, facts.mips, *facts.plan));
     return specular;
 }
 
@@ -163,6 +193,7 @@ json irradianceJson(const ManifestFacts& facts) {
             {"format", "R16G16B16A16_SFLOAT"},
             {"size", facts.settings->irradianceSize},
             {"texel", "E(n) / pi: multiply by albedo for Lambertian diffuse"},
+            {"of", facts.lights->empty() ? "the environment" : "the environment without its lights (shading.lights): add their diffuse"},
             {"source_mip_size", irradiance.cubeSourceSize},
             {"shader", "hlsl/IrradianceCubeCS.hlsl"},
             {"sh",
@@ -228,6 +259,52 @@ json skippedJson(const std::string& why) { return {{"file", nullptr}, {"skipped"
 
 } // namespace
 
+bool readsLobeTable(const shading::ShadingRecipe& recipe) {
+    return recipe.direction == shading::LookupDirection::Fitted || recipe.lookup != shading::LookupLobe::Roughness;
+}
+
+json shadingJson(const ManifestFacts& facts) {
+    const auto& recipe = *facts.plan->recipe;
+    const auto schedule = shading::scheduleOf(recipe, facts.mips, facts.size);
+    json roughness = json::array();
+    for (const auto& mip : facts.plan->mips) roughness.push_back(mip.roughness);
+    const auto& lights = *facts.lights;
+    json taken = nullptr;
+    if (recipe.lights)
+        taken = {{"threshold_over_mean_luminance", recipe.lights->threshold},
+                 {"min_share_of_the_light", recipe.lights->minShare},
+                 {"max_angular_radius", recipe.lights->maxRadius},
+                 {"max_lights", recipe.lights->maxLights}};
+    json lobeTable = nullptr;
+    if (facts.lobeTableFile)
+        lobeTable = {{"file", "lobe_table.ktx2"},
+                     {"format", "R32G32B32A32_SFLOAT"},
+                     {"size", shading::kLobeTableSize},
+                     {"axes", "u = N.V, v = roughness, at texel centres; texel = (blend towards R, roughness, pair "
+                              "roughness, pair spread in radians)"}};
+    return {{"recipe", recipe.name},
+            {"function", "hlsl/Common/ImageBasedLighting.fxh: IblShadeOpaque, plus IblDiskLight for each light"},
+            {"lobe_weighting", shading::nameOf(recipe.weighting)},
+            {"lod_mapping", shading::nameOf(schedule.mapping)},
+            {"lod_parameter", schedule.parameter},
+            {"roughness_of_mip", scheduleText(schedule)},
+            {"roughness", roughness},
+            {"direction", shading::nameOf(recipe.direction)},
+            {"lookup", shading::nameOf(recipe.lookup)},
+            {"lobe_table", lobeTable},
+            {"lights_taken_out", taken},
+            {"light_level", facts.lightLevel},
+            {"lights", {{"file", lights.empty() ? json(nullptr) : json("lights.gltf")}, {"list", lightsJson(lights)}}},
+            {"ibl_recipe", {{"LodMapping", uint32_t(schedule.mapping)},
+                            {"LodParameter", schedule.parameter},
+                            {"SpecularMips", facts.mips},
+                            {"SpecularSize", facts.size},
+                            {"Direction", uint32_t(recipe.direction)},
+                            {"Lookup", uint32_t(recipe.lookup)},
+                            {"LightCount", lights.size()},
+                            {"LightLevel", facts.lightLevel}}}};
+}
+
 json bakeManifest(const ManifestFacts& facts) {
     const auto& s = *facts.settings;
     const auto& plan = *facts.plan;
@@ -246,6 +323,7 @@ json bakeManifest(const ManifestFacts& facts) {
                      {"specular", plan.specular ? plannedSpecularJson(facts) : skippedJson("no material of the scene is lit")},
                      {"brdf_lut", plan.lut ? lutJson(s) : skippedJson("no material of the scene is lit")},
                      {"irradiance", irradiance},
+                     {"shading", shadingJson(facts)},
                      {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
                      {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
     if (plan.scene) manifest["plan"] = planJson(plan);

@@ -21,11 +21,19 @@ struct ManifestFacts {
     const std::vector<HalfRangeClamp>* halfRangeClamps;
     float previewExposure;
     const BakePlan* plan; // what was computed: every output and mip, without a scene
+    const std::vector<shading::EnvironmentLight>* lights; // those the recipe took out
+    uint32_t lightLevel;
+    bool lobeTableFile; // lobe_table.ktx2 is written
 };
 
 // manifest.json without its "files" list (added once every file is written).
 nlohmann::json bakeManifest(const ManifestFacts& facts);
 nlohmann::json filesJson(const std::vector<WrittenFile>& files);
+// How the maps are made and read: the recipe, each mip's roughness, the lod mapping, the lobe,
+// the lookups, the lights; the manifest's "shading" and the specular KTX2's "iblkit.shading".
+nlohmann::json shadingJson(const ManifestFacts& facts);
+// Whether the recipe's shading reads the lobe table (its fitted direction or lookups).
+bool readsLobeTable(const shading::ShadingRecipe& recipe);
 size_t clampedValueCount(const std::vector<HalfRangeClamp>& clamps);
 // Per clamped texture: its name, the values clamped and the worst mip's share of energy lost.
 nlohmann::json halfRangeClampsJson(const std::vector<HalfRangeClamp>& clamps);

@@ -4,6 +4,7 @@
 #include "texture.hpp"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ struct BakedTexture {
     uint32_t faces;
     uint32_t mips;
     std::vector<float> values; // channelCount(format) per texel
+    std::map<std::string, std::string> keyValues = {}; // the KTX2 file's key/value data beside KTXwriter
 };
 
 // What clamping a texture to the half range cost.

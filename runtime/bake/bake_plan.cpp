@@ -40,12 +40,13 @@ SceneUse useOf(const std::optional<scene::SceneMaterials>& scene) {
     return use;
 }
 
-// Whether a renderer reading roughness `used` touches mip m of `mips` (one step either side).
-bool bracketMeets(const scene::ValueRange& used, uint32_t mip, uint32_t mips) {
+// Whether a renderer reading roughness `used` touches mip m of the chain (up to its neighbours).
+bool bracketMeets(const scene::ValueRange& used, uint32_t mip, const std::vector<float>& roughness) {
     if (used.empty()) return false;
-    if (mips == 1) return true;
-    const double step = 1.0 / (mips - 1);
-    return used.min < (mip + 1) * step && used.max > (double(mip) - 1) * step;
+    // In float, as the mips' roughness is: a roughness on a mip (0.8 on the documents' mip 4) is that mip's alone.
+    const float below = mip == 0 ? -1.f : roughness[mip - 1];
+    const float above = mip + 1 == roughness.size() ? 2.f : roughness[mip + 1];
+    return float(used.min) < above && float(used.max) > below;
 }
 
 double texelsOfChain(uint32_t size, uint32_t mips, uint32_t firstMip) {
@@ -57,6 +58,8 @@ double texelsOfChain(uint32_t size, uint32_t mips, uint32_t firstMip) {
 void planSpecularMips(const BakeSettings& settings, uint32_t size, const SceneUse& use, const BenchCurves& curves,
                       BakePlan& plan) {
     const uint32_t mips = resolvedMips(settings, size);
+    const auto roughness = roughnessOfMips(*plan.recipe, mips, size);
+    const bool benchLobe = plan.recipe->weighting == shading::LobeWeighting::NdotL;
     const auto curve = curves.curve("specular", settings.specularMethod, resolvedSamples(settings));
     const uint32_t benchMips = resolvedMips(BakeSettings{}, curves.cubeSize());
     const double benchTexels = texelsOfChain(curves.cubeSize(), benchMips, 1);
@@ -64,15 +67,15 @@ void planSpecularMips(const BakeSettings& settings, uint32_t size, const SceneUs
     for (uint32_t mip = 0; mip < mips; ++mip) {
         SpecularMipPlan mipPlan;
         mipPlan.mip = mip;
-        mipPlan.roughness = roughnessOfMip(mip, mips);
+        mipPlan.roughness = roughness[mip];
         mipPlan.faceSize = std::max(1u, size >> mip);
         mipPlan.needed = plan.specular && (use.anyTransmission || std::any_of(use.roughnesses.begin(), use.roughnesses.end(),
-                                                                               [&](const auto& used) { return bracketMeets(used, mip, mips); }));
+                                                                               [&](const auto& used) { return bracketMeets(used, mip, roughness); }));
         if (curve) {
             // Mip 0 is the source copied; the others cost in proportion to their texels.
             mipPlan.estimate.deviceMs = mip == 0 ? 0.0 : curve->medianDeviceMs * std::pow(double(mipPlan.faceSize), 2) / benchTexels;
             for (const auto& [benchMip, error] : curve->worstMipError)
-                if (std::fabs(roughnessOfMip(benchMip, benchMips) - mipPlan.roughness) < 1e-6) {
+                if (benchLobe && std::fabs(roughnessOfMip(benchMip, benchMips) - mipPlan.roughness) < 1e-6) {
                     mipPlan.estimate.errorRms = error.first;
                     mipPlan.estimate.errorMax = error.second;
                 }
@@ -172,6 +175,7 @@ BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::option
         }
     }
     plan.roughness = use.roughness;
+    plan.recipe = &resolvedRecipe(settings);
     const auto outputs = outputsFor(use);
     plan.specular = outputs.specular;
     plan.lut = outputs.lut;

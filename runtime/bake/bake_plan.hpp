@@ -35,6 +35,7 @@ struct BakePlan {
     std::optional<std::filesystem::path> scene;
     scene::ValueRange roughness;          // every lit material's, clearcoats included
     bool specular = true, irradiance = true, lut = true;
+    const shading::ShadingRecipe* recipe = nullptr; // how the maps are made and read; its lights, when it takes them out
     std::vector<SpecularMipPlan> mips;
     uint32_t lutFirstRow = 0, lutLastRow = 0; // the rows bilinear reads of `roughness` touch
     std::vector<std::string> kernels;     // shader names, with the defines that make their permutation
@@ -54,9 +55,10 @@ struct NeededOutputs {
 NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene);
 
 // The plan for `settings` (at cube face size `size`), for `scene` when one is given. A specular
-// mip m of M sits at roughness m / (M - 1), and a renderer reads it for every roughness within
-// one step of it (trilinear filtering between mips): it is needed when that bracket meets the
-// used range. Irradiance is needed for any lit material that is not all metal; the specular
+// mip sits at the roughness the recipe's schedule gives it (m / (M - 1) for the documents'), and
+// a renderer reads it for every roughness between its neighbours' (trilinear filtering between
+// mips): it is needed when that bracket meets the used range. The bench measured the documents'
+// N·L lobe: a recipe of another lobe has no error estimate. Irradiance is needed for any lit material that is not all metal; the specular
 // chain and the LUT for any lit material; transmission (KHR_materials_transmission, _volume)
 // needs the whole chain, since refraction blurs by thickness as well as roughness.
 BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::optional<scene::SceneMaterials>& scene,

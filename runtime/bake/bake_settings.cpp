@@ -37,7 +37,37 @@ void requireLutMethod(const std::string& method) {
         throw BakeError(fmt::format("--lut-method {} is not a LUT method (there are: {})", method, fmt::join(all, ", ")));
 }
 
+void requireRecipe(const BakeSettings& settings) {
+    if (!settings.recipe) return;
+    try {
+        const auto& recipe = shading::recipeNamed(*settings.recipe);
+        if (recipe.weighting != shading::LobeWeighting::NdotL &&
+            kernels::specularKindOf(settings.specularMethod) != kernels::SpecularKind::Convolution)
+            throw BakeError(fmt::format("--recipe {} prefilters a lobe weighted by {}, which only --method convolution "
+                                        "computes (--method {} prefilters the documents' N·L lobe)",
+                                        recipe.name, shading::nameOf(recipe.weighting), settings.specularMethod));
+    } catch (const std::invalid_argument& error) {
+        throw BakeError(fmt::format("--recipe: {}", error.what()));
+    }
+}
+
 } // namespace
+
+const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings) {
+    if (settings.recipe) return shading::recipeNamed(*settings.recipe);
+    return kernels::specularKindOf(settings.specularMethod) == kernels::SpecularKind::Convolution ? shading::defaultRecipe()
+                                                                                                : shading::documentRecipe();
+}
+
+std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_t mips, uint32_t size) {
+    const auto schedule = shading::scheduleOf(recipe, mips, size);
+    std::vector<float> roughness;
+    // The documents' recipe keeps their float expression, so that its maps stay bit for bit.
+    for (uint32_t mip = 0; mip < mips; ++mip)
+        roughness.push_back(recipe.mapping == shading::LodMapping::Linear ? roughnessOfMip(mip, mips)
+                                                                          : float(schedule.roughnessOf(mip)));
+    return roughness;
+}
 
 uint32_t resolvedLutSamples(const BakeSettings& settings) {
     if (settings.lutSamples) return *settings.lutSamples;
@@ -82,6 +112,7 @@ void validateSettings(const BakeSettings& settings) {
     }
     requireSpecularMethod(settings.specularMethod);
     if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
+    requireRecipe(settings);
     requireLutMethod(settings.lutMethod);
     if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, kernels::minLutSamplesOf(settings.lutMethod),
                      kernels::maxLutSamplesOf(settings.lutMethod));

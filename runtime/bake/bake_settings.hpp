@@ -1,6 +1,7 @@
 #pragma once
 
 #include "kernels/lut_methods.hpp"
+#include "shading/shading_recipe.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "vulkan_context.hpp"
 
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace iblkit::bake {
 
@@ -37,6 +39,10 @@ struct BakeSettings {
     std::optional<uint32_t> mips;   // specular mips; default: down to kSpecularFloor
     std::string specularMethod = kDefaultSpecularMethod; // a prefilter method of the kernel table
     std::optional<uint32_t> samples; // samples (budget of terms, for the convolution); default by method
+    // The shading recipe the maps are made for (runtime/shading/shading_recipe.hpp): the lights
+    // taken out, the prefilter's lobe, each mip's roughness. Default: the kit's for the
+    // convolution, the documents' for every other method (they prefilter the documents' N·L lobe).
+    std::optional<std::string> recipe;
     uint32_t lutSize = 512;
     std::string lutMethod = kDefaultLutMethod; // a LUT method of the kernel table
     std::optional<uint32_t> lutSamples; // samples (nodes per panel, for the quadrature; per side, for its grid); default by method
@@ -70,8 +76,12 @@ uint32_t resolvedMips(const BakeSettings& settings, uint32_t size);
 uint32_t resolvedSamples(const BakeSettings& settings);
 // The LUT method's count: the setting, or the method's default.
 uint32_t resolvedLutSamples(const BakeSettings& settings);
+// The recipe: the setting's, or the method's default.
+const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings);
 // Throws BakeError naming the first setting out of range.
 void validateSettings(const BakeSettings& settings);
+// The roughness of every mip of a `mips` chain from a `size` face, by the recipe's schedule.
+std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_t mips, uint32_t size);
 // roughness = mip / (mips - 1), as in the documents; mip 0 is the mirror (roughness 0).
 float roughnessOfMip(uint32_t mip, uint32_t mips);
 

@@ -8,12 +8,15 @@
 #include "device_caches.hpp"
 #include "float_image.hpp"
 #include "kernels/specular_method.hpp"
+#include "shading_maps.hpp"
 #include "vulkan_context.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <numbers>
 #include <unistd.h>
 
 namespace iblkit::bake {
@@ -79,10 +82,12 @@ std::vector<uint8_t> toRgba8(const std::vector<float>& rgba) {
 struct Cached {
     std::optional<BakedTexture> specular, lut, irradiance;
     std::optional<IrradianceSh> sh;
+    std::optional<std::vector<shading::EnvironmentLight>> lights;
     std::optional<std::string> previewPng;
 
     bool complete(const BakePlan& plan) const {
-        return (!plan.specular || specular) && (!plan.lut || lut) && irradiance && previewPng;
+        return (!plan.specular || specular) && (!plan.lut || lut) && irradiance && (!plan.recipe->lights || lights) &&
+               previewPng;
     }
 };
 
@@ -100,6 +105,8 @@ Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& 
             cached.sh = entry->first;
             cached.irradiance = std::move(entry->second);
         }
+    if (plan.recipe->lights)
+        if (const auto payload = store->get(keys.lights)) cached.lights = lightsFromPayload(*payload);
     cached.previewPng = store->get(keys.preview);
     return cached;
 }
@@ -119,26 +126,54 @@ void store(cache::ContentStore* store, const std::string& key, const std::string
 struct DeviceResults {
     vulkan::Image specular, lut;
     Irradiance irradiance;
+    std::vector<shading::EnvironmentLight> lights;
+    uint32_t lightLevel = 0;
 };
+
+// The recipe's lights, taken out of the source wherever a map is made from the rest or the cache
+// lacks them (the extraction is deterministic: a cached list is the same list).
+TakenOutLights lightsOf(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakePlan& plan, const Cached& cached,
+                        const std::function<vulkan::Image&()>& sourceCube, BakeProgress& progress) {
+    const auto& recipe = *plan.recipe;
+    if (!recipe.lights) return {};
+    const bool mapsToMake = (plan.specular && !cached.specular) || !cached.irradiance;
+    if (mapsToMake || !cached.lights)
+        return takeOutLights(context, sourceCube(), *recipe.lights, kernels.downsample(), progress);
+    return {*cached.lights, std::nullopt};
+}
+
+vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakePlan& plan,
+                                  vulkan::Image& source, TakenOutLights& taken, uint32_t lightLevel, BakeProgress& progress) {
+    SpecularLevels levels{{}, plan.prefilteredMips(), taken.residual ? &*taken.residual : nullptr, lightLevel};
+    for (const auto& mip : plan.mips) levels.roughness.push_back(mip.roughness);
+    auto* prefilter = kernels.specular();
+    if (prefilter) prefilter->setWeighting(plan.recipe->weighting);
+    return prefilterLevels(context, source, levels, prefilter, progress);
+}
 
 DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
                        const EnvironmentInput& input, uint32_t size, const BakePlan& plan, const Cached& cached,
                        BakeProgress& progress) {
     std::optional<vulkan::Image> source;
-    const auto sourceCube = [&]() -> vulkan::Image& {
+    const std::function<vulkan::Image&()> sourceCube = [&]() -> vulkan::Image& {
         if (!source) source.emplace(buildSourceCube(context, input, size, progress));
         return *source;
     };
+    const auto& recipe = *plan.recipe;
+    auto taken = lightsOf(context, kernels, plan, cached, sourceCube, progress);
+    const auto schedule = shading::scheduleOf(recipe, uint32_t(plan.mips.size()), size);
+    const uint32_t lightLevel = shading::lightLevelOf(recipe, schedule, taken.lights);
+    const auto residualCube = [&]() -> vulkan::Image& { return taken.residual ? *taken.residual : sourceCube(); };
     auto specular = cached.specular ? uploaded(context, *cached.specular, "R32G32B32A32_SFLOAT")
-                                    : prefilterSpecular(context, sourceCube(), plan.prefilteredMips(), kernels.specular(), progress);
+                                    : prefilteredSpecular(context, kernels, plan, sourceCube(), taken, lightLevel, progress);
     auto lut = !plan.lut      ? blankBrdfLut(context)
                : cached.lut ? uploaded(context, *cached.lut, "R32G32_SFLOAT")
                             : integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress);
     auto irradiance = cached.irradiance
                           ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
-                          : computeIrradiance(context, kernels.irradiance(), sourceCube(), settings.irradianceSize, progress,
-                                              plan.irradiance);
-    return {std::move(specular), std::move(lut), std::move(irradiance)};
+                          : computeIrradiance(context, kernels.irradiance(), residualCube(), settings.irradianceSize, progress,
+                                              plan.irradiance, recipe.irradianceSource);
+    return {std::move(specular), std::move(lut), std::move(irradiance), std::move(taken.lights), lightLevel};
 }
 
 // Every output's values on the host, from the cache or the device.
@@ -147,11 +182,19 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
     BakedOutputs outputs;
     outputs.device = context.deviceInfo().name;
     outputs.sh = results.irradiance.sh;
-    outputs.previewExposure = previewExposure(results.irradiance.sh);
+    outputs.lights = results.lights;
+    outputs.lightLevel = results.lightLevel;
+    outputs.previewExposure = previewExposure(results.irradiance.sh, results.lights);
     if (cached.previewPng) {
         outputs.previewPng = *cached.previewPng;
     } else {
-        const auto preview = renderPreview(context, kernels.preview(), results.specular, results.irradiance.cube, results.lut,
+        const auto& recipe = *plan.recipe;
+        const auto schedule = shading::scheduleOf(recipe, results.specular.desc().mips, results.specular.desc().width);
+        auto lobeTable = lobeTableImage(context, recipe.weighting);
+        const auto lights = environmentLightBuffer(context, results.lights);
+        const auto preview = renderPreview(context, kernels.preview(),
+                                           {results.specular, results.irradiance.cube, results.lut, lobeTable, lights,
+                                            recipeParameters(recipe, schedule, results.lights.size(), results.lightLevel)},
                                            outputs.previewExposure, progress);
         outputs.previewPng = image_io::encodePng(preview.width, preview.height, toRgba8(preview.rgba));
     }
@@ -163,11 +206,13 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
 }
 
 // What the cache did not hold, stored; the irradiance cube goes with its SH even where the plan skips it.
-void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const Cached& cached, BakedOutputs& outputs) {
+void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakePlan& plan, const Cached& cached,
+                   BakedOutputs& outputs) {
     auto& warnings = outputs.cacheWarnings;
     if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular), warnings);
     if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
     if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(outputs.sh, *outputs.irradiance), warnings);
+    if (!cached.lights && plan.recipe->lights) store(cache, keys.lights, lightsPayload(outputs.lights), warnings);
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
 }
 
@@ -182,7 +227,7 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
     progress.end();
     auto results = runSteps(context, kernels, settings, input, size, plan, cached, progress);
     auto outputs = downloaded(context, kernels, settings, plan, cached, results, progress);
-    storeComputed(cache, keys, cached, outputs);
+    storeComputed(cache, keys, plan, cached, outputs);
     if (!plan.irradiance) outputs.irradiance.reset();
     caches.keepPipelineCache(outputs.cacheWarnings);
     outputs.compiledKernels = caches.compiledKernels();
@@ -197,13 +242,15 @@ vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options) {
 
 } // namespace
 
-double meanLuminance(const IrradianceSh& sh) {
-    const glm::dvec3 mean = sh.shRadiance[0] * 0.282094791773878;
-    return 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+double meanLuminance(const IrradianceSh& sh, const std::vector<shading::EnvironmentLight>& lights) {
+    const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    double mean = luminance(sh.shRadiance[0] * 0.282094791773878);
+    for (const auto& light : lights) mean += luminance(light.radiance) * light.solidAngle / (4 * std::numbers::pi);
+    return mean;
 }
 
-float previewExposure(const IrradianceSh& sh) {
-    const double luminance = meanLuminance(sh);
+float previewExposure(const IrradianceSh& sh, const std::vector<shading::EnvironmentLight>& lights) {
+    const double luminance = meanLuminance(sh, lights);
     if (!(luminance > 0) || !std::isfinite(luminance)) return 1.f;
     return float(std::clamp(0.4 / luminance, kMinPreviewExposure, kMaxPreviewExposure));
 }
@@ -220,8 +267,12 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& i
     auto cached = lookUp(store, keys, plan, settings);
     progress.end();
     if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
+    auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
+    const auto schedule = shading::scheduleOf(*plan.recipe, uint32_t(plan.mips.size()), size);
+    const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, schedule, lights);
+    const float exposure = previewExposure(*cached.sh, lights);
     BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, *cached.sh,
-                         std::move(*cached.previewPng), previewExposure(*cached.sh), device.name, {}, {}, 0};
+                         std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, device.name, {}, {}, 0};
     return outputs;
 }
 

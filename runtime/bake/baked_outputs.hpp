@@ -23,7 +23,9 @@ namespace iblkit::bake {
 // is neither read nor written.
 struct BakedOutputs {
     std::optional<BakedTexture> specular, lut, irradiance; // those the plan needs
-    IrradianceSh sh;
+    IrradianceSh sh; // of the environment without the lights the recipe took out
+    std::vector<shading::EnvironmentLight> lights; // those the recipe took out
+    uint32_t lightLevel = 0;                         // the first mip prefiltered without them (shading::lightLevelOf)
     std::string previewPng; // the PNG file's bytes: cached encoded, as encoding is most of a cached bake's time
     float previewExposure = 1;
     std::string device;
@@ -35,11 +37,12 @@ struct BakedOutputs {
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store);
 
-// The environment's mean radiance, in luminance, from L00 of its SH projection.
-double meanLuminance(const IrradianceSh& sh);
+// The environment's mean radiance, in luminance: its maps' (from L00 of their SH projection) and
+// its lights', whatever the recipe took out.
+double meanLuminance(const IrradianceSh& sh, const std::vector<shading::EnvironmentLight>& lights = {});
 
-// Exposure that maps the environment's mean luminance (from L00) to 0.4 before the filmic curve,
-// within [kMinPreviewExposure, kMaxPreviewExposure].
-float previewExposure(const IrradianceSh& sh);
+// Exposure that maps the environment's mean luminance to 0.4 before the filmic curve, within
+// [kMinPreviewExposure, kMaxPreviewExposure].
+float previewExposure(const IrradianceSh& sh, const std::vector<shading::EnvironmentLight>& lights = {});
 
 } // namespace iblkit::bake

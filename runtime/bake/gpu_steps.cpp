@@ -83,14 +83,6 @@ vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const Enviro
     return cube;
 }
 
-vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
-                                kernels::SpecularMethod* prefilter, BakeProgress& progress) {
-    SpecularLevels levels;
-    levels.prefiltered = prefiltered;
-    for (uint32_t mip = 0; mip < prefiltered.size(); ++mip) levels.roughness.push_back(roughnessOfMip(mip, uint32_t(prefiltered.size())));
-    return prefilterLevels(context, source, levels, prefilter, progress);
-}
-
 vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Image& source, const SpecularLevels& levels,
                               kernels::SpecularMethod* prefilter, BakeProgress& progress) {
     progress.begin("prefilter");
@@ -162,15 +154,15 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     return result;
 }
 
-Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& specular,
-                      vulkan::Image& irradiance, vulkan::Image& brdfLut, float exposure, BakeProgress& progress) {
+Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const PreviewMaps& maps, float exposure,
+                      BakeProgress& progress) {
     progress.begin("preview");
-    const uint32_t width = kPreviewColumns * kPreviewCellSize, mips = specular.desc().mips;
+    const uint32_t width = kPreviewColumns * kPreviewCellSize, mips = maps.specular.desc().mips;
     const uint32_t panelWidth = width / mips, height = kPreviewRows * kPreviewCellSize + panelWidth / 2;
     vulkan::Image image(context, {"Preview", &rgba32(), width, height, 1, 1, false, true});
     const vulkan::Sampler linear(context, {});
-    kernels::runPreview(kernel, specular, irradiance, brdfLut, linear, image,
-                        {kPreviewColumns, kPreviewRows, kPreviewCellSize, mips, panelWidth, exposure});
+    kernels::runPreview(kernel, {maps.specular, maps.irradiance, maps.brdfLut, maps.lobeTable, maps.lights, linear, image},
+                        {kPreviewColumns, kPreviewRows, kPreviewCellSize, mips, panelWidth, exposure, maps.recipe});
     report(kernel, progress);
     Preview preview{width, height, image.download(context)};
     progress.end();

@@ -2,7 +2,9 @@
 
 #include "bake_progress.hpp"
 #include "environment_input.hpp"
+#include "buffer.hpp"
 #include "image.hpp"
+#include "kernels/kernel_parameters.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_table.hpp"
 #include "kernels/lut_methods.hpp"
@@ -20,12 +22,6 @@ namespace iblkit::bake {
 // The environment as an RGBA32F cube of `size` with its full mip chain (2x2 means).
 vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
                               BakeProgress& progress);
-
-// The prefiltered specular cube: mip 0 copied from the source, mip m > 0 by `prefilter` at
-// roughnessOfMip(m, mips) where prefiltered[m], and otherwise filled with the source's own mip
-// m (its 2x2 means: cheap, loadable, not prefiltered), as it is everywhere without a prefilter.
-vulkan::Image prefilterSpecular(const vulkan::VulkanContext& context, vulkan::Image& source, const std::vector<bool>& prefiltered,
-                                kernels::SpecularMethod* prefilter, BakeProgress& progress);
 
 // The levels of a shading recipe: mip m at roughness[m] where prefiltered[m] (every mip when it
 // is empty), from `source` below residualFrom and from `residual` (the environment with its
@@ -89,8 +85,18 @@ inline constexpr uint32_t kPreviewColumns = 7;   // roughness 0, 1/6, ..., 1
 inline constexpr uint32_t kPreviewRows = 3;      // metalness 0, 0.5, 1
 inline constexpr uint32_t kPreviewCellSize = 128;
 
+// What the preview shades with: the maps, the lights and the recipe that reads them.
+struct PreviewMaps {
+    vulkan::Image& specular;
+    vulkan::Image& irradiance;
+    vulkan::Image& brdfLut;
+    vulkan::Image& lobeTable;
+    const vulkan::Buffer& lights;
+    kernels::IblRecipeParameters recipe;
+};
+
 // `kernel`: PreviewCS (kernels::KernelRole::Preview).
-Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, vulkan::Image& specular,
-                      vulkan::Image& irradiance, vulkan::Image& brdfLut, float exposure, BakeProgress& progress);
+Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const PreviewMaps& maps, float exposure,
+                      BakeProgress& progress);
 
 } // namespace iblkit::bake

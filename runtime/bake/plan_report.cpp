@@ -36,6 +36,7 @@ nlohmann::json planJson(const BakePlan& plan) {
         {"scene", plan.scene ? nlohmann::json(plan.scene->string()) : nlohmann::json()},
         {"roughness", plan.roughness.empty() ? nlohmann::json() : nlohmann::json({plan.roughness.min, plan.roughness.max})},
         {"outputs", {{"specular", plan.specular}, {"irradiance", plan.irradiance}, {"brdf_lut", plan.lut}}},
+        {"recipe", plan.recipe ? nlohmann::json(plan.recipe->name) : nlohmann::json()},
         {"specular_mips", mips},
         {"brdf_lut_rows", plan.lut ? nlohmann::json({plan.lutFirstRow, plan.lutLastRow}) : nlohmann::json()},
         {"kernels", plan.kernels},
@@ -54,6 +55,10 @@ std::string planText(const BakePlan& plan) {
     for (const auto& reason : plan.reasons) text += fmt::format("            {}\n", reason);
     text += plan.roughness.empty() ? "roughness   none lit\n"
                                    : fmt::format("roughness   {:.3f} to {:.3f}\n", plan.roughness.min, plan.roughness.max);
+    if (plan.recipe)
+        text += fmt::format("recipe      {} ({} lobe, {} lods{})\n", plan.recipe->name, shading::nameOf(plan.recipe->weighting),
+                            shading::nameOf(plan.recipe->mapping),
+                            plan.recipe->lights ? ", bright sources taken out as lights" : "");
     text += fmt::format("specular    {}\n", stepText(plan.specular, plan.specularEstimate));
     text += "            mip  size  roughness  needed   device ms  error rms  error max\n";
     for (const auto& mip : plan.mips)

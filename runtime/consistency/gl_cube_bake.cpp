@@ -1,5 +1,7 @@
 #include "gl_cube_bake.hpp"
 
+#include "shading/lobe_table.hpp"
+
 #include "gl_support.hpp"
 
 namespace iblkit::consistency {
@@ -119,12 +121,17 @@ GlShadingMaps bindShadingMaps(const opengl::EglContext& context, const OpenGlFor
     const auto cubeMap = [&](const MippedCube& cube) {
         return glpath::cubeTexture(context, GL_TEXTURE_CUBE_MAP, cube.size, cube.mips, cube.texels);
     };
+    const uint32_t tableSize = shading::kLobeTableSize;
+    const auto lightBytes = std::as_bytes(std::span(inputs.lights));
     GlShadingMaps maps{cubeMap(inputs.specular), cubeMap(inputs.irradiance),
                        glpath::texture2D(context, GL_RG32F, GL_RG, inputs.lutSize, inputs.lutSize, inputs.lut),
-                       glpath::linearClampSampler(context)};
+                       glpath::texture2D(context, GL_RGBA32F, GL_RGBA, tableSize, tableSize, inputs.lobeTable),
+                       glpath::linearClampSampler(context),
+                       glpath::bindStorageBuffer(context, form, "Lights", lightBytes.size(), lightBytes)};
     for (const auto& [resource, texture] : {std::pair{"Specular+LinearClamp", &maps.specular},
                                             std::pair{"IrradianceMap+LinearClamp", &maps.irradiance},
-                                            std::pair{"BrdfLut+LinearClamp", &maps.lut}}) {
+                                            std::pair{"BrdfLut+LinearClamp", &maps.lut},
+                                            std::pair{"LobeTable+LinearClamp", &maps.lobeTable}}) {
         glpath::bindTexture(context, form, resource, *texture);
         context.gl().BindSampler(glpath::slotOf(form, resource), maps.sampler.name());
     }

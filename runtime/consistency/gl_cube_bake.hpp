@@ -32,7 +32,7 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
 // The maps PreviewCS and SplitSumSpheresCS shade with, bound to Specular, IrradianceMap and BrdfLut
 // with the linear clamp sampler; kept alive while the shader runs.
 struct GlShadingMaps {
-    opengl::GlObject specular, irradiance, lut, sampler;
+    opengl::GlObject specular, irradiance, lut, lobeTable, sampler, lights;
 };
 GlShadingMaps bindShadingMaps(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs);
 

@@ -1,5 +1,7 @@
 #include "gpu_cube_bake.hpp"
 
+#include "shading/lobe_table.hpp"
+
 namespace iblkit::consistency {
 namespace {
 
@@ -85,9 +87,13 @@ std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const
 
 GpuShadingMaps uploadShadingMaps(const vulkan::VulkanContext& context, const PreviewInputs& inputs) {
     const auto& rg32 = vulkan::texelFormatNamed("R32G32_SFLOAT");
+    const uint32_t tableSize = shading::kLobeTableSize;
     GpuShadingMaps maps{uploadCube(context, "Specular", inputs.specular), uploadCube(context, "IrradianceMap", inputs.irradiance),
-                        vulkan::Image(context, {"BrdfLut", &rg32, inputs.lutSize, inputs.lutSize, 1, 1, false, false})};
+                        vulkan::Image(context, {"BrdfLut", &rg32, inputs.lutSize, inputs.lutSize, 1, 1, false, false}),
+                        vulkan::Image(context, {"LobeTable", &rgba32(), tableSize, tableSize, 1, 1, false, false}),
+                        vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.lights)), "Lights")};
     maps.lut.upload(context, inputs.lut);
+    maps.lobeTable.upload(context, inputs.lobeTable);
     return maps;
 }
 
@@ -97,7 +103,8 @@ std::vector<float> gpuPreview(const vulkan::VulkanContext& context, const PathPr
     auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
     vulkan::Image preview(context, {"Preview", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
-    kernels::runPreview(kernel, maps.specular, maps.irradiance, maps.lut, linear, preview, inputs.parameters);
+    kernels::runPreview(kernel, {maps.specular, maps.irradiance, maps.lut, maps.lobeTable, maps.lights, linear, preview},
+                        inputs.parameters);
     return preview.download(context);
 }
 

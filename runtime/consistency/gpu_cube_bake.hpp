@@ -1,5 +1,6 @@
 #pragma once
 
+#include "buffer.hpp"
 #include "kernels/kernel_steps.hpp"
 #include "shader_paths.hpp"
 #include "suite_inputs.hpp"
@@ -47,7 +48,8 @@ std::vector<float> gpuTablePrefilter(const vulkan::VulkanContext& context, const
                                      const MippedCube& cube, std::span<const glm::vec4> table, uint32_t size);
 // The maps PreviewCS and SplitSumSpheresCS shade with, uploaded: Specular, IrradianceMap, BrdfLut.
 struct GpuShadingMaps {
-    vulkan::Image specular, irradiance, lut;
+    vulkan::Image specular, irradiance, lut, lobeTable;
+    vulkan::Buffer lights;
 };
 GpuShadingMaps uploadShadingMaps(const vulkan::VulkanContext& context, const PreviewInputs& inputs);
 

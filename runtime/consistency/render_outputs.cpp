@@ -10,9 +10,7 @@
 #include "kernels/kernel_steps.hpp"
 #include "render/environment_distribution.hpp"
 #include "render/lights_file.hpp"
-#include "render/baked_maps.hpp"
 #include "render/sphere_grid.hpp"
-#include "shading/lobe_table.hpp"
 
 #include <fmt/core.h>
 
@@ -109,45 +107,24 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
     return values;
 }
 
-// What SplitSumSpheresCS reads besides the preview's maps: the lobe table and one light, a disk of
-// 3 degrees that its recipe adds from mip 2 on, with pairs of lookups about the fitted direction.
-struct RecipeInputs {
-    std::vector<float> lobeTable = shading::lobeTable(shading::kLobeTableSize, shading::LobeWeighting::G1);
-    std::vector<float> lights = render::packEnvironmentLights({{glm::normalize(glm::dvec3(0.3, 0.5, 0.8)),
-                                                                {40, 30, 20}, 0.0086, 0.0524, 0.2}});
-};
-
 kernels::RenderSplitSumParameters splitSumParameters(const PreviewInputs& maps) {
-    return {grid().columns(), kCellSize, maps.specular.mips, maps.specular.size, 0, 1.f,
-            uint32_t(shading::LookupDirection::Fitted), uint32_t(shading::LookupLobe::Pair), 1, 2};
+    return {grid().columns(), kCellSize, maps.specular.mips, maps.parameters.recipe};
 }
 
-std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathProgram& program, const PreviewInputs& inputs,
-                               const RecipeInputs& recipe) {
+std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathProgram& program, const PreviewInputs& inputs) {
     kernels::Kernel kernel(context, program);
     auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
     vulkan::Image image(context, {"SplitSum", &rgba32(), gridWidth(), gridHeight(), 1, 1, false, true});
     const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
-    const uint32_t tableSize = shading::kLobeTableSize;
-    vulkan::Image table(context, {"LobeTable", &rgba32(), tableSize, tableSize, 1, 1, false, false});
-    table.upload(context, recipe.lobeTable);
-    const auto lights = vulkan::storageBuffer(context, std::as_bytes(std::span(recipe.lights)), "Lights");
-    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, table, lights, linear, image},
+    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, maps.lobeTable, maps.lights, linear, image},
                                splitSumParameters(inputs));
     return image.download(context);
 }
 
-std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs,
-                              const RecipeInputs& recipe) {
+std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
     const auto program = glpath::program(context, form);
     const auto maps = bindShadingMaps(context, form, inputs);
-    const uint32_t tableSize = shading::kLobeTableSize;
-    const auto table = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, tableSize, tableSize, recipe.lobeTable);
-    glpath::bindTexture(context, form, "LobeTable+LinearClamp", table);
-    context.gl().BindSampler(glpath::slotOf(form, "LobeTable+LinearClamp"), maps.sampler.name());
-    const auto lightBytes = std::as_bytes(std::span(recipe.lights));
-    const auto lights = glpath::bindStorageBuffer(context, form, "Lights", lightBytes.size(), lightBytes);
     const uint32_t width = gridWidth(), height = gridHeight();
     const auto sphereBytes = std::as_bytes(std::span(sphereMaterials()));
     const auto spheres = glpath::bindStorageBuffer(context, form, "Spheres", sphereBytes.size(), sphereBytes);
@@ -170,11 +147,10 @@ void addRenderOutputs(SuiteRun& run) {
                               [&](const PathProgram& program) { return gpuReference(run.vulkan, program, reference); },
                               [&](const OpenGlForm& form) { return glReference(run.gl, form, reference); });
     const auto maps = previewInputs(options.environment, 1, 1, 1, options.cubeSize, options.chunkLutSize, options.sampleCount);
-    const RecipeInputs recipe;
     addOutputAgainstPathA(run, {"SplitSumSpheresCS", fmt::format("{}×{} spheres, fitted pairs of lookups and a light", reference.width, reference.height),
                                 splitSumSpheresBounds()},
-                          [&](const PathProgram& program) { return gpuSplitSum(run.vulkan, program, maps, recipe); },
-                          [&](const OpenGlForm& form) { return glSplitSum(run.gl, form, maps, recipe); });
+                          [&](const PathProgram& program) { return gpuSplitSum(run.vulkan, program, maps); },
+                          [&](const OpenGlForm& form) { return glSplitSum(run.gl, form, maps); });
 }
 
 } // namespace iblkit::consistency

@@ -2,11 +2,14 @@
 
 #include "cube_environment.hpp"
 #include "reference_bake.hpp"
+#include "shading_maps.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <numbers>
+
+#include <glm/geometric.hpp>
 
 namespace iblkit::consistency {
 MippedCube environmentCube(const SuiteEnvironment& environment, uint32_t size, uint32_t mips) {
@@ -53,7 +56,11 @@ PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t column
     inputs.width = columns * cellSize;
     const uint32_t panelWidth = inputs.width / inputs.specular.mips;
     inputs.height = rows * cellSize + panelWidth / 2;
-    inputs.parameters = {columns, rows, cellSize, inputs.specular.mips, panelWidth, 1.f};
+    inputs.lobeTable = bake::lobeTableOf(shading::LobeWeighting::G1);
+    inputs.lights = bake::packEnvironmentLights({{glm::normalize(glm::dvec3(0.3, 0.5, 0.8)), {40, 30, 20}, 0.0086, 0.0524, 0.2}});
+    const kernels::IblRecipeParameters recipe{specularSize, 0, 1.f, uint32_t(shading::LookupDirection::Fitted),
+                                              uint32_t(shading::LookupLobe::Pair), 1, 2};
+    inputs.parameters = {columns, rows, cellSize, inputs.specular.mips, panelWidth, 1.f, recipe};
     return inputs;
 }
 

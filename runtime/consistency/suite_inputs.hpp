@@ -26,6 +26,10 @@ struct PreviewInputs {
     MippedCube irradiance;
     uint32_t lutSize = 0;
     std::vector<float> lut; // (scale, bias) per texel
+    // The recipe's lobe table and lights: G1's table and one light, a disk of 3 degrees that the
+    // recipe adds from mip 2 on, with pairs of lookups about the fitted direction.
+    std::vector<float> lobeTable;
+    std::vector<float> lights;
     kernels::PreviewParameters parameters;
     uint32_t width = 0;
     uint32_t height = 0;

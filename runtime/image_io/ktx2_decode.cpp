@@ -4,6 +4,7 @@
 #include "texture_shape.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 #include <numeric>
@@ -149,6 +150,27 @@ Texture decodeKtx2(std::span<const std::byte> bytes, const std::string& name) {
         texture.levels.push_back(readLevel(in, texture, mip, levelIndexEnd));
     requireLevelsApartAndAligned(in, texture);
     return texture;
+}
+
+std::map<std::string, std::string> decodeKtx2KeyValues(std::span<const std::byte> bytes, const std::string& name) {
+    const ByteReader in(bytes, name);
+    requireIdentifier(in);
+    const uint32_t offset = in.get<uint32_t>(kKvdByteOffset, "the index"), length = in.get<uint32_t>(kKvdByteLength, "the index");
+    const auto data = in.slice(offset, length, "the key/value data");
+    std::map<std::string, std::string> entries;
+    for (size_t at = 0; at + 4 <= data.size();) {
+        uint32_t entryLength = 0;
+        std::memcpy(&entryLength, data.data() + at, 4);
+        if (entryLength > data.size() - at - 4) in.fail("has a corrupt key/value entry at byte " + std::to_string(offset + at));
+        const std::string entry(reinterpret_cast<const char*>(data.data() + at + 4), entryLength);
+        const size_t nul = entry.find('\0');
+        if (nul == std::string::npos) in.fail("has a key/value entry without a NUL after its key");
+        std::string value = entry.substr(nul + 1);
+        if (!value.empty() && value.back() == '\0') value.pop_back();
+        entries[entry.substr(0, nul)] = std::move(value);
+        at += 4 + (entryLength + 3) / 4 * 4;
+    }
+    return entries;
 }
 
 } // namespace iblkit::image_io

@@ -46,10 +46,13 @@ void putLevels(ByteWriter& out, const Texture& texture) {
 
 } // namespace
 
-std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& writer) {
+std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& writer,
+                                  const std::map<std::string, std::string>& keyValues) {
     requireConsistent(texture, "encodeKtx2");
     const auto dfd = dataFormatDescriptor(texture.format);
-    const auto kvd = keyValueData({{"KTXwriter", writer}});
+    auto entries = keyValues;
+    entries["KTXwriter"] = writer;
+    const auto kvd = keyValueData(entries);
     ByteWriter out;
     putHeader(out, texture);
     putIndex(out, kLevelIndex + kLevelIndexEntry * texture.mips, dfd.size(), kvd.size());

@@ -53,10 +53,19 @@ NamedValues SupersampleParameters::members() const { return {{"Supersample", {do
 
 NamedValues SourceMipParameters::members() const { return {{"SourceMip", {double(sourceMip)}}}; }
 
+void IblRecipeParameters::addTo(NamedValues& values) const {
+    values.insert({{"SpecularSize", {double(specularSize)}}, {"LodMapping", {double(lodMapping)}},
+                   {"LodParameter", {lodParameter}},         {"Direction", {double(direction)}},
+                   {"Lookup", {double(lookup)}},             {"LightCount", {double(lightCount)}},
+                   {"LightLevel", {double(lightLevel)}}});
+}
+
 NamedValues PreviewParameters::members() const {
-    return {{"Columns", {double(columns)}},           {"Rows", {double(rows)}},
-            {"CellSize", {double(cellSize)}},         {"SpecularMips", {double(specularMips)}},
-            {"StripPanelWidth", {double(stripPanelWidth)}}, {"Exposure", {exposure}}};
+    NamedValues values{{"Columns", {double(columns)}},           {"Rows", {double(rows)}},
+                       {"CellSize", {double(cellSize)}},         {"SpecularMips", {double(specularMips)}},
+                       {"StripPanelWidth", {double(stripPanelWidth)}}, {"Exposure", {exposure}}};
+    recipe.addTo(values);
+    return values;
 }
 
 NamedValues RenderReferenceParameters::members() const {
@@ -68,11 +77,9 @@ NamedValues RenderReferenceParameters::members() const {
 }
 
 NamedValues RenderSplitSumParameters::members() const {
-    return {{"Columns", {double(columns)}},       {"CellSize", {double(cellSize)}},
-            {"SpecularMips", {double(specularMips)}}, {"SpecularSize", {double(specularSize)}},
-            {"LodMapping", {double(lodMapping)}},  {"LodParameter", {lodParameter}},
-            {"Direction", {double(direction)}},    {"Lookup", {double(lookup)}},
-            {"LightCount", {double(lightCount)}},  {"LightLevel", {double(lightLevel)}}};
+    NamedValues values{{"Columns", {double(columns)}}, {"CellSize", {double(cellSize)}}, {"SpecularMips", {double(specularMips)}}};
+    recipe.addTo(values);
+    return values;
 }
 
 NamedValues ProbeParameters::members() const { return {{"ArgumentCount", {double(argumentCount)}}}; }

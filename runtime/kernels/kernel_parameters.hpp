@@ -81,9 +81,19 @@ struct SourceMipParameters {
     NamedValues members() const;
 };
 
+// How a shading recipe reads the maps (Common/ImageBasedLighting.fxh's IblRecipe, but for the
+// mip count, which each kernel names beside its own fields).
+struct IblRecipeParameters {
+    uint32_t specularSize = 0, lodMapping = 0;
+    float lodParameter = 1;
+    uint32_t direction = 0, lookup = 0, lightCount = 0, lightLevel = 0;
+    void addTo(NamedValues& values) const;
+};
+
 struct PreviewParameters {
     uint32_t columns = 0, rows = 0, cellSize = 0, specularMips = 0, stripPanelWidth = 0;
     float exposure = 1;
+    IblRecipeParameters recipe;
     NamedValues members() const;
 };
 
@@ -101,10 +111,8 @@ struct RenderReferenceParameters {
 // SplitSumSpheresCS: the sphere grid, the specular cube's mips and face size, and the shading
 // recipe (Common/ImageBasedLighting.fxh's IblRecipe).
 struct RenderSplitSumParameters {
-    uint32_t columns = 0, cellSize = 0, specularMips = 0, specularSize = 0;
-    uint32_t lodMapping = 0;
-    float lodParameter = 1;
-    uint32_t direction = 0, lookup = 0, lightCount = 0, lightLevel = 0;
+    uint32_t columns = 0, cellSize = 0, specularMips = 0;
+    IblRecipeParameters recipe;
     NamedValues members() const;
 };
 

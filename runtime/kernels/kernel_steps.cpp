@@ -175,15 +175,17 @@ void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& tar
     kernel.run({target.desc().width, target.desc().width, 6});
 }
 
-void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
-                const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters) {
-    kernel.program().bind("Specular", specular);
-    kernel.program().bind("IrradianceMap", irradiance);
-    kernel.program().bind("BrdfLut", brdfLut);
-    kernel.program().bind("LinearClamp", sampler);
-    kernel.program().bind("Preview", image);
+void runPreview(Kernel& kernel, const PreviewResources& resources, const PreviewParameters& parameters) {
+    auto& program = kernel.program();
+    program.bind("Specular", resources.specular);
+    program.bind("IrradianceMap", resources.irradiance);
+    program.bind("BrdfLut", resources.brdfLut);
+    program.bind("LobeTable", resources.lobeTable);
+    program.bind("Lights", resources.lights);
+    program.bind("LinearClamp", resources.sampler);
+    program.bind("Preview", resources.image);
     kernel.setParameters(parameters.members());
-    kernel.run({image.desc().width, image.desc().height, 1});
+    kernel.run({resources.image.desc().width, resources.image.desc().height, 1});
 }
 
 void runRenderReference(Kernel& kernel, const RenderReferenceResources& resources, const RenderReferenceParameters& parameters) {

@@ -111,8 +111,16 @@ ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, 
 void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& target, uint32_t sourceMip);
 
 // Preview: shaded spheres and the mip strip into `image`.
-void runPreview(Kernel& kernel, vulkan::Image& specular, vulkan::Image& irradiance, vulkan::Image& brdfLut,
-                const vulkan::Sampler& sampler, vulkan::Image& image, const PreviewParameters& parameters);
+struct PreviewResources {
+    vulkan::Image& specular;
+    vulkan::Image& irradiance;
+    vulkan::Image& brdfLut;
+    vulkan::Image& lobeTable;
+    const vulkan::Buffer& lights;
+    const vulkan::Sampler& sampler;
+    vulkan::Image& image;
+};
+void runPreview(Kernel& kernel, const PreviewResources& resources, const PreviewParameters& parameters);
 
 // RenderReference: one batch of Monte Carlo samples for each active pixel; the sums accumulate.
 struct RenderReferenceResources {

@@ -37,7 +37,4 @@ double meanLuminance(const BakedMaps& maps);
 // The preview's exposure for it: 0.4 / meanLuminance, within the preview's range.
 float exposureOf(const BakedMaps& maps);
 
-// Two float4 per light, as Common/ImageBasedLighting.fxh's IblDiskLight reads them.
-std::vector<float> packEnvironmentLights(const std::vector<shading::EnvironmentLight>& lights);
-
 } // namespace iblkit::render

@@ -2,21 +2,13 @@
 
 #include "buffer.hpp"
 #include "kernels/kernel_steps.hpp"
+#include "shading_maps.hpp"
 
 namespace iblkit::render {
 
 kernels::RenderSplitSumParameters splitSumParameters(const SphereGrid& grid, const BakedMaps& maps, uint32_t cellSize) {
-    const auto& recipe = *maps.recipe;
-    return {grid.columns(),
-            cellSize,
-            maps.schedule.mips,
-            maps.schedule.size,
-            uint32_t(maps.schedule.mapping),
-            float(maps.schedule.parameter),
-            uint32_t(recipe.direction),
-            uint32_t(recipe.lookup),
-            uint32_t(maps.lights.size()),
-            maps.lightLevel};
+    return {grid.columns(), cellSize, maps.schedule.mips,
+            bake::recipeParameters(*maps.recipe, maps.schedule, maps.lights.size(), maps.lightLevel)};
 }
 
 SphereImage renderSplitSum(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,

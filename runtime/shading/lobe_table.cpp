@@ -10,6 +10,9 @@
 #include <numbers>
 
 namespace iblkit::shading {
+
+std::string_view nameOf(LobeWeighting weighting) { return weighting == LobeWeighting::G1 ? "G1" : "N·L"; }
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;

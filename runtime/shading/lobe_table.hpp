@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace iblkit::shading {
@@ -11,6 +12,8 @@ namespace iblkit::shading {
 // reflected lobe f (N·L) is proportional to G1(N·L) whatever V is: N·L weighs it 23 % too much
 // head on and 36 % too little at N·L = 0.05.
 enum class LobeWeighting { NdotL, G1 };
+// "N·L" or "G1", as the manifest and the reports name it.
+std::string_view nameOf(LobeWeighting weighting);
 
 // The prefilter's kernel about its direction d at roughness r, per unit solid angle of L:
 // D(sqrt((1 + d·L) / 2)) times the weighting of d·L, 0 below d's horizon.

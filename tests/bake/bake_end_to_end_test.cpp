@@ -239,10 +239,14 @@ TEST(WhiteFurnaceBake, ConstantEnvironmentGivesConstantOutputs) {
 }
 
 // The default prefilter, the convolution, against the converged integral of the file's own
-// mip 0 (half-rounded, as the GPU's float source is not: 2^-11 at most, far below the bounds).
+// mip 0 (half-rounded, as the GPU's float source is not: 2^-11 at most, far below the bounds),
+// for the documents' N·L lobe at their roughness m / (mips - 1), the integral the reference
+// computes. (The kit's G1 lobe is checked against the convolution's C++ twin in the consistency
+// suite; the converged reference has no G1 lobe yet.)
 TEST(ConvolutionBake, MipsAreCloseToTheConvergedIntegral) {
     iblkit::testing::TempFolder scratch;
     BakeSettings settings;
+    settings.recipe = "document";
     settings.outputDir = scratch.path() / "out";
     settings.size = 64;
     settings.lutSize = 8;

@@ -1,5 +1,5 @@
-// What a bake computes for a scene's materials: the outputs, the specular mips within one step of
-// a used roughness, the LUT rows, and the estimates from the bench's curves.
+// What a bake computes for a scene's materials: the outputs, the specular mips between the
+// neighbours of a used roughness, the LUT rows, and the estimates from the bench's curves.
 #include "bake_plan.hpp"
 
 #include <nlohmann/json.hpp>
@@ -19,8 +19,13 @@ scene::MaterialNeeds material(double roughLow, double roughHigh, double metalLow
     return needs;
 }
 
-BakePlan planFor(std::vector<scene::MaterialNeeds> materials) {
-    BakeSettings settings; // 256², 6 mips at roughness 0, 0.2, ..., 1
+BakeSettings documentRecipe() {
+    BakeSettings settings; // 256², 6 mips at the documents' roughness 0, 0.2, ..., 1
+    settings.recipe = "document";
+    return settings;
+}
+
+BakePlan planFor(std::vector<scene::MaterialNeeds> materials, const BakeSettings& settings = documentRecipe()) {
     return planBake(settings, 256, scene::SceneMaterials{"scene.gltf", std::move(materials), {}});
 }
 
@@ -88,8 +93,26 @@ TEST(BakePlan, TheLutRowsAreThoseBilinearReadsOfTheUsedRoughnessTouch) {
     EXPECT_EQ(plan.lutLastRow, 256u);
 }
 
-TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
+// The kit's recipe places its mips by its logarithmic schedule (256²: 0, 0.096, 0.173, 0.310,
+// 0.557, 1), and a material reads the mips between its range's neighbours.
+TEST(BakePlan, TheKitsMipsFollowItsScheduleAndSoDoTheirBrackets) {
+    const auto schedule = shading::scheduleOf(shading::defaultRecipe(), 6, 256);
+    const auto plan = planFor({material(0.2, 0.3, 0, 0)}, BakeSettings{});
+    EXPECT_EQ(plan.recipe->name, "kit");
+    for (const auto& mip : plan.mips) EXPECT_FLOAT_EQ(mip.roughness, float(schedule.roughnessOf(mip.mip))) << mip.mip;
+    EXPECT_EQ(neededMips(plan), (std::vector<bool>{false, false, true, true, false, false}))
+        << "0.2 to 0.3 lies between mips 2 (0.173) and 3 (0.310)";
+}
+
+// The bench measured the documents' N·L lobe: the kit's G1 lobe has its time estimated, not its error.
+TEST(BakePlan, TheKitsLobeHasNoErrorEstimateFromTheBench) {
     const auto plan = planBake(BakeSettings{}, 256, std::nullopt);
+    EXPECT_TRUE(plan.specularEstimate.deviceMs.has_value());
+    EXPECT_FALSE(plan.specularEstimate.errorRms.has_value());
+}
+
+TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
+    const auto plan = planBake(documentRecipe(), 256, std::nullopt);
     ASSERT_TRUE(plan.specularEstimate.deviceMs && plan.lutEstimate.deviceMs && plan.irradianceEstimate.deviceMs);
     EXPECT_GT(*plan.specularEstimate.deviceMs, 0);
     // The defaults' documented bounds (docs/bench.md): specular within 1 % RMS, the LUT within 1e-4.
@@ -97,13 +120,13 @@ TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
     EXPECT_LT(*plan.lutEstimate.errorMax, 1e-4);
     for (const auto& mip : plan.mips) // mip 0 is the source copied: the bench measures no error of it
         EXPECT_TRUE(mip.mip == 0 || mip.estimate.errorRms.has_value()) << "mip " << mip.mip;
-    BakeSettings unmeasured;
+    BakeSettings unmeasured = documentRecipe();
     unmeasured.samples = 77;
     EXPECT_FALSE(planBake(unmeasured, 256, std::nullopt).specularEstimate.deviceMs) << "no curve: no estimate";
 }
 
 TEST(BakePlan, AMipCountTheBenchDidNotMeasureHasNoSpecularErrorEstimate) {
-    const auto plan = planBake(BakeSettings{}, 128, std::nullopt); // 5 mips at 0, .25, .5, .75, 1; the bench's are in fifths
+    const auto plan = planBake(documentRecipe(), 128, std::nullopt); // 5 mips at 0, .25, .5, .75, 1; the bench's are in fifths
     EXPECT_TRUE(plan.specularEstimate.deviceMs.has_value());
     EXPECT_FALSE(plan.specularEstimate.errorRms.has_value()) << "roughness 1's error alone would understate it";
 }

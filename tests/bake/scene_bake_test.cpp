@@ -25,7 +25,7 @@ nlohmann::json manifestOf(const fs::path& folder) {
     return nlohmann::json::parse(stream);
 }
 
-// The built-in sky at 64² (4 mips at roughness 0, 1/3, 2/3, 1), with or without a scene.
+// The built-in sky at 64² (4 mips at the kit's roughness 0, 0.19, 0.44, 1), with or without a scene.
 class SceneBake : public ::testing::Test {
 protected:
     fs::path bake(const std::string& name, const std::optional<std::string>& sceneMaterials) const {
@@ -54,7 +54,7 @@ TEST_F(SceneBake, ARoughSceneFillsTheSharpMipAndBakesTheRestAsAFullBakeDoes) {
     const auto rough = bake("rough", R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.9}})");
     const auto fullSpecular = ktx2Values(full / "specular.ktx2"), roughSpecular = ktx2Values(rough / "specular.ktx2");
     ASSERT_EQ(fullSpecular.size(), roughSpecular.size()) << "every mip is there: the file stays loadable";
-    // Mips 2 and 3 (roughness 2/3 and 1) are what a renderer reads for 0.9: bit for bit the full bake's.
+    // Mips 2 and 3 (roughness 0.44 and 1) are what a renderer reads for 0.9: bit for bit the full bake's.
     EXPECT_TRUE(std::equal(fullSpecular.begin() + mipOffset(2), fullSpecular.end(), roughSpecular.begin() + mipOffset(2)));
     // Mip 1 is read for no roughness of the scene: the source's own mip, sharper than the prefiltered one.
     EXPECT_FALSE(std::equal(fullSpecular.begin() + mipOffset(1), fullSpecular.begin() + mipOffset(2),

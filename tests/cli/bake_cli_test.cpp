@@ -46,10 +46,11 @@ TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
         EXPECT_GE(step["wall_ms"].get<double>(), 0);
         EXPECT_GE(step["device_ms"].get<double>(), 0);
     }
-    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "device", "source cube", "prefilter", "brdf lut", "irradiance",
-                                               "preview", "write"}));
-    EXPECT_GT(summary["steps"][4]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
-    EXPECT_EQ(summary["cache"]["misses"], 4);
+    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "device", "source cube", "lights", "prefilter", "brdf lut",
+                                               "irradiance", "preview", "write"}))
+        << "the built-in sky's sun is taken out as a light";
+    EXPECT_GT(summary["steps"][5]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+    EXPECT_EQ(summary["cache"]["misses"], 5) << "specular, LUT, irradiance, lights, preview";
 }
 
 TEST_F(BakeCli, ARepeatedBakeComesFromTheCacheAndNoCacheComputesEverything) {
@@ -60,8 +61,12 @@ TEST_F(BakeCli, ARepeatedBakeComesFromTheCacheAndNoCacheComputesEverything) {
     std::vector<std::string> steps;
     for (const auto& step : summary["steps"]) steps.push_back(step["name"]);
     EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "write"})) << "no device opened";
-    EXPECT_EQ(summary["cache"]["hits"], 4);
-    EXPECT_EQ(readFile(scratch.path() / "first" / "specular.ktx2"), readFile(scratch.path() / "again" / "specular.ktx2"));
+    EXPECT_EQ(summary["cache"]["hits"], 5);
+    for (const char* file : {"specular.ktx2", "lights.gltf", "lobe_table.ktx2", "preview.png"})
+        EXPECT_EQ(readFile(scratch.path() / "first" / file), readFile(scratch.path() / "again" / file)) << file;
+    EXPECT_EQ(nlohmann::json::parse(readFile(scratch.path() / "first" / "manifest.json"))["shading"],
+              nlohmann::json::parse(readFile(scratch.path() / "again" / "manifest.json"))["shading"])
+        << "the lights and the recipe, from the cache";
     const auto uncached = iblkit(small({"bake", "-o", at("uncached"), "--no-cache", "--json"}));
     ASSERT_EQ(uncached.exitCode, 0) << uncached.err;
     EXPECT_EQ(nlohmann::json::parse(uncached.out)["cache"]["hits"], 0);

@@ -1,6 +1,7 @@
 #include "bake_options.hpp"
 
 #include "kernels/lut_methods.hpp"
+#include "shading/shading_recipe.hpp"
 
 #include <fmt/core.h>
 
@@ -15,6 +16,12 @@ void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string
                         "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
                         "the lobe), mipchain (the source's own mips where the lobe is narrow, the pyramid's ring "
                         "where it is wide: the cheapest) or document (the documents' importance sampling)");
+    std::string recipes;
+    for (const auto& recipe : shading::benchRecipes()) recipes += (recipes.empty() ? "" : ", ") + recipe.name;
+    command.add_option("--recipe", s.recipe,
+                       fmt::format("Shading recipe the maps are made for (docs/shading.md): which bright sources become "
+                                   "lights, the prefilter's lobe, each mip's roughness; one of {} (default: kit for the "
+                                   "convolution, document for every other method)", recipes));
     command.add_option("--samples", s.samples,
                         "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
                         "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "

@@ -1,0 +1,80 @@
+#include "shading_maps.hpp"
+
+#include "kernels/kernel_steps.hpp"
+
+#include <cstring>
+#include <map>
+#include <mutex>
+
+namespace iblkit::bake {
+namespace {
+
+// The source's mip 0 alone, as floats (the cube is RGBA32F).
+std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube) {
+    const auto bytes = cube.downloadBytes(context);
+    std::vector<float> values(size_t(6) * cube.desc().width * cube.desc().width * 4);
+    std::memcpy(values.data(), bytes.data() + cube.valueOffset(0, 0) * sizeof(float), values.size() * sizeof(float));
+    return values;
+}
+
+} // namespace
+
+TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
+                             const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress) {
+    progress.begin("lights");
+    const uint32_t size = source.desc().width;
+    auto extraction = shading::extractLights(mipZero(context, source), size, settings);
+    TakenOutLights result{std::move(extraction.lights), std::nullopt};
+    if (!result.lights.empty()) {
+        progress.advance(0.8, "residual");
+        auto& residual = result.residual.emplace(
+            context, vulkan::ImageDesc{"Residual", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 6,
+                                       vulkan::fullMipCount(size, size), true, true});
+        extraction.residual.resize(residual.valueCount(), 0.f); // mip 0; the chain below is the kernel's
+        residual.upload(context, extraction.residual);
+        kernels::runDownsampleChain(downsample, residual);
+        progress.addDeviceTime(downsample.takeTotals().deviceMilliseconds);
+    }
+    progress.end();
+    return result;
+}
+
+// The table depends on the weighting alone: computed once per process (48 ms), not once per bake.
+const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting) {
+    static std::mutex mutex;
+    static std::map<shading::LobeWeighting, std::vector<float>> tables;
+    const std::lock_guard lock(mutex);
+    auto found = tables.find(weighting);
+    if (found == tables.end()) found = tables.emplace(weighting, shading::lobeTable(shading::kLobeTableSize, weighting)).first;
+    return found->second;
+}
+
+vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting) {
+    const uint32_t size = shading::kLobeTableSize;
+    vulkan::Image table(context, {"LobeTable", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 1, 1, false, false});
+    table.upload(context, lobeTableOf(weighting));
+    return table;
+}
+
+std::vector<float> packEnvironmentLights(const std::vector<shading::EnvironmentLight>& lights) {
+    std::vector<float> values;
+    for (const auto& light : lights)
+        values.insert(values.end(), {float(light.direction.x), float(light.direction.y), float(light.direction.z),
+                                     float(light.angularRadius), float(light.radiance.r), float(light.radiance.g),
+                                     float(light.radiance.b), float(light.solidAngle)});
+    if (values.empty()) values.assign(8, 0.f);
+    return values;
+}
+
+vulkan::Buffer environmentLightBuffer(const vulkan::VulkanContext& context, const std::vector<shading::EnvironmentLight>& lights) {
+    const auto packed = packEnvironmentLights(lights);
+    return vulkan::storageBuffer(context, std::as_bytes(std::span(packed)), "Lights");
+}
+
+kernels::IblRecipeParameters recipeParameters(const shading::ShadingRecipe& recipe, const shading::MipSchedule& schedule,
+                                              size_t lightCount, uint32_t lightLevel) {
+    return {schedule.size,           uint32_t(schedule.mapping), float(schedule.parameter), uint32_t(recipe.direction),
+            uint32_t(recipe.lookup), uint32_t(lightCount),       lightLevel};
+}
+
+} // namespace iblkit::bake

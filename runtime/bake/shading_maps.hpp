@@ -1,0 +1,38 @@
+#pragma once
+
+#include "bake_progress.hpp"
+#include "buffer.hpp"
+#include "image.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_parameters.hpp"
+#include "shading/shading_recipe.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace iblkit::bake {
+
+// What a recipe with lights makes of the source cube: the lights, and the environment without
+// them (RGBA32F with its mips), which the maps are prefiltered from.
+struct TakenOutLights {
+    std::vector<shading::EnvironmentLight> lights;
+    std::optional<vulkan::Image> residual; // none where no source qualified
+};
+TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
+                             const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress);
+
+// The lobe table of a weighting (shading::lobeTable), computed once per process, as an RGBA32F
+// image for the shading to read.
+const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting);
+vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting);
+
+// Two float4 per light, as Common/ImageBasedLighting.fxh's IblDiskLight reads them (one of zeros
+// when there is none: a storage buffer cannot be empty).
+std::vector<float> packEnvironmentLights(const std::vector<shading::EnvironmentLight>& lights);
+vulkan::Buffer environmentLightBuffer(const vulkan::VulkanContext& context, const std::vector<shading::EnvironmentLight>& lights);
+
+// The IblRecipe fields of a kernel that shades with the maps.
+kernels::IblRecipeParameters recipeParameters(const shading::ShadingRecipe& recipe, const shading::MipSchedule& schedule,
+                                              size_t lightCount, uint32_t lightLevel);
+
+} // namespace iblkit::bake
