@@ -18,7 +18,7 @@ layout(binding = 0, std140) uniform SplitSumParameter
     uint Lookup;
     uint LightCount;
     uint LightLevel;
-} _1243;
+} _1315;
 
 layout(binding = 1, std430) readonly buffer Lights
 {
@@ -35,343 +35,356 @@ void main()
 {
     do
     {
-        uvec2 _1592 = uvec2(0u);
-        uvec2 _1593 = uvec2(imageSize(SplitSum));
-        _1592.x = _1593.x;
-        _1592.y = _1593.y;
-        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _1592)))
+        uvec2 _1669 = uvec2(0u);
+        uvec2 _1670 = uvec2(imageSize(SplitSum));
+        _1669.x = _1670.x;
+        _1669.y = _1670.y;
+        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _1669)))
         {
             break;
         }
-        vec2 _1767 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1243.CellSize)) + vec2(0.5)) / vec2(float(_1243.CellSize))) * 2.0) - vec2(1.0);
-        _1767.y = -_1767.y;
-        float _1798 = dot(_1767, _1767);
-        bool _1801 = (_1798 * 1.2345678806304931640625) < 1.0;
-        float _1809 = sqrt(max(fma(-_1798, 1.2345678806304931640625, 1.0), 0.0));
-        vec3 _1812 = vec3(_1767 * vec2(1.111111164093017578125), _1809);
-        uvec2 _1770 = gl_GlobalInvocationID.xy / uvec2(_1243.CellSize);
-        uint _1832 = 2u * ((_1770.y * _1243.Columns) + _1770.x);
-        vec4 _1820 = Spheres_1._data[_1832];
-        vec4 _1821 = Spheres_1._data[_1832 + 1u];
-        vec3 _3692;
-        if (_1801 && (_1821.y > 0.0))
+        vec2 _1844 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1315.CellSize)) + vec2(0.5)) / vec2(float(_1315.CellSize))) * 2.0) - vec2(1.0);
+        _1844.y = -_1844.y;
+        float _1875 = dot(_1844, _1844);
+        bool _1878 = (_1875 * 1.2345678806304931640625) < 1.0;
+        float _1886 = sqrt(max(fma(-_1875, 1.2345678806304931640625, 1.0), 0.0));
+        vec3 _1889 = vec3(_1844 * vec2(1.111111164093017578125), _1886);
+        uvec2 _1847 = gl_GlobalInvocationID.xy / uvec2(_1315.CellSize);
+        uint _1909 = 2u * ((_1847.y * _1315.Columns) + _1847.x);
+        vec4 _1897 = Spheres_1._data[_1909];
+        vec4 _1898 = Spheres_1._data[_1909 + 1u];
+        vec3 _3843;
+        if (_1878 && (_1898.y > 0.0))
         {
-            vec3 _3691;
+            vec3 _3842;
             do
             {
-                float _1877 = (1.0 - _1821.z) / (1.0 + _1821.z);
-                vec3 _1886 = refract(vec3(-0.0, -0.0, -1.0), _1812, 1.0 / _1821.z);
-                vec3 _1895 = normalize(_1812 - (_1886 * (2.0 * dot(_1812, _1886))));
-                vec3 _1900 = refract(_1886, -_1895, _1821.z);
-                if (dot(_1900, _1900) == 0.0)
+                float _1954 = (1.0 - _1898.z) / (1.0 + _1898.z);
+                vec3 _1963 = refract(vec3(-0.0, -0.0, -1.0), _1889, 1.0 / _1898.z);
+                vec3 _1972 = normalize(_1889 - (_1963 * (2.0 * dot(_1889, _1963))));
+                vec3 _1977 = refract(_1963, -_1972, _1898.z);
+                if (dot(_1977, _1977) == 0.0)
                 {
-                    _3691 = vec3(0.0);
+                    _3842 = vec3(0.0);
                     break;
                 }
-                float _3690;
+                float _3841;
                 do
                 {
-                    float _2015 = float(_1243.SpecularMips - 1u);
-                    float _2017 = clamp(_1820.w, 0.0, 1.0);
-                    if (_1243.LodMapping == 1u)
+                    float _2092 = float(_1315.SpecularMips - 1u);
+                    float _2094 = clamp(_1897.w, 0.0, 1.0);
+                    if (_1315.LodMapping == 1u)
                     {
-                        _3690 = (_2017 * (2.0 - _2017)) * _2015;
+                        _3841 = (_2094 * (2.0 - _2094)) * _2092;
                         break;
                     }
-                    if (_1243.LodMapping == 2u)
+                    if (_1315.LodMapping == 2u)
                     {
-                        _3690 = pow(_2017, _1243.LodParameter) * _2015;
+                        _3841 = pow(_2094, _1315.LodParameter) * _2092;
                         break;
                     }
-                    if (_1243.LodMapping == 3u)
+                    if (_1315.LodMapping == 3u)
                     {
-                        _3690 = (_2017 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2017 * _2017) * float(_1243.SpecularSize)), 0.0, _2015) : 0.0;
+                        _3841 = (_2094 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2094 * _2094) * float(_1315.SpecularSize)), 0.0, _2092) : 0.0;
                         break;
                     }
-                    if (((_1243.LodMapping == 4u) && (_1243.SpecularMips >= 3u)) && (float(_1243.SpecularSize) > _1243.LodParameter))
+                    if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
                     {
-                        float _2076 = float(_1243.SpecularSize);
-                        _3690 = (_2017 > 0.0) ? clamp(fma((_2015 - 1.0) / log2(_2076 / _1243.LodParameter), log2((_2017 * _2017) * _2076) - log2(_2076), _2015), 0.0, _2015) : 0.0;
+                        float _2153 = float(_1315.SpecularSize);
+                        _3841 = (_2094 > 0.0) ? clamp(fma((_2092 - 1.0) / log2(_2153 / _1315.LodParameter), log2((_2094 * _2094) * _2153) - log2(_2153), _2092), 0.0, _2092) : 0.0;
                         break;
                     }
-                    _3690 = _2017 * _2015;
+                    _3841 = _2094 * _2092;
                     break;
                 } while(false);
-                _3691 = textureLod(Specular_LinearClamp, _1900, _3690).xyz * ((1.0 - fma(_1877, _1877, fma(-_1877, _1877, 1.0) * pow(1.0 - clamp(_1809, 0.0, 1.0), 5.0))) * (1.0 - fma(_1877, _1877, fma(-_1877, _1877, 1.0) * pow(1.0 - clamp(dot(_1895, _1900), 0.0, 1.0), 5.0))));
+                _3842 = textureLod(Specular_LinearClamp, _1977, _3841).xyz * ((1.0 - fma(_1954, _1954, fma(-_1954, _1954, 1.0) * pow(1.0 - clamp(_1886, 0.0, 1.0), 5.0))) * (1.0 - fma(_1954, _1954, fma(-_1954, _1954, 1.0) * pow(1.0 - clamp(dot(_1972, _1977), 0.0, 1.0), 5.0))));
                 break;
             } while(false);
-            _3692 = _3691;
+            _3843 = _3842;
         }
         else
         {
-            vec3 _3693;
-            if (_1801)
+            vec3 _3844;
+            if (_1878)
             {
-                vec3 _3672;
-                float _3673;
+                vec3 _3822;
+                float _3823;
                 do
                 {
-                    vec3 _2277 = reflect(vec3(-0.0, -0.0, -1.0), _1812);
-                    vec4 _2223 = textureLod(LobeTable_LinearClamp, vec2(clamp(_1809, 0.0, 1.0), _1820.w), 0.0);
-                    vec3 _3661;
+                    vec3 _2354 = reflect(vec3(-0.0, -0.0, -1.0), _1889);
+                    vec4 _2300 = textureLod(LobeTable_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0);
+                    vec3 _3811;
                     do
                     {
-                        float _2399 = _1820.w * _1820.w;
-                        if (_1243.Direction == 1u)
+                        float _2476 = _1897.w * _1897.w;
+                        if (_1315.Direction == 1u)
                         {
-                            float _2405 = clamp(fma(-_1820.w, _1820.w, 1.0), 0.0, 1.0);
-                            _3661 = normalize(mix(_1812, _2277, vec3(_2405 * fma(_1820.w, _1820.w, sqrt(_2405)))));
+                            float _2482 = clamp(fma(-_1897.w, _1897.w, 1.0), 0.0, 1.0);
+                            _3811 = normalize(mix(_1889, _2354, vec3(_2482 * fma(_1897.w, _1897.w, sqrt(_2482)))));
                             break;
                         }
-                        if (_1243.Direction == 2u)
+                        if (_1315.Direction == 2u)
                         {
-                            _3661 = normalize(mix(_2277, _1812, vec3(_2399 * _2399)));
+                            _3811 = normalize(mix(_2354, _1889, vec3(_2476 * _2476)));
                             break;
                         }
-                        if (_1243.Direction == 3u)
+                        if (_1315.Direction == 3u)
                         {
-                            vec3 _3660;
+                            vec3 _3810;
                             do
                             {
-                                float _2454 = acos(clamp(dot(_1812, _2277), -1.0, 1.0));
-                                if (_2454 < 9.9999997473787516355514526367188e-05)
+                                float _2531 = acos(clamp(dot(_1889, _2354), -1.0, 1.0));
+                                if (_2531 < 9.9999997473787516355514526367188e-05)
                                 {
-                                    _3660 = _2277;
+                                    _3810 = _2354;
                                     break;
                                 }
-                                _3660 = ((_1812 * sin((1.0 - _2223.x) * _2454)) + (_2277 * sin(_2223.x * _2454))) / vec3(sin(_2454));
+                                _3810 = ((_1889 * sin((1.0 - _2300.x) * _2531)) + (_2354 * sin(_2300.x * _2531))) / vec3(sin(_2531));
                                 break;
                             } while(false);
-                            _3661 = _3660;
+                            _3811 = _3810;
                             break;
                         }
-                        _3661 = _2277;
+                        _3811 = _2354;
                         break;
                     } while(false);
-                    if (_1243.Lookup == 0u)
+                    if (_1315.Lookup == 0u)
                     {
-                        float _3670;
+                        float _3820;
                         do
                         {
-                            float _2519 = float(_1243.SpecularMips - 1u);
-                            float _2521 = clamp(_1820.w, 0.0, 1.0);
-                            if (_1243.LodMapping == 1u)
+                            float _2596 = float(_1315.SpecularMips - 1u);
+                            float _2598 = clamp(_1897.w, 0.0, 1.0);
+                            if (_1315.LodMapping == 1u)
                             {
-                                _3670 = (_2521 * (2.0 - _2521)) * _2519;
+                                _3820 = (_2598 * (2.0 - _2598)) * _2596;
                                 break;
                             }
-                            if (_1243.LodMapping == 2u)
+                            if (_1315.LodMapping == 2u)
                             {
-                                _3670 = pow(_2521, _1243.LodParameter) * _2519;
+                                _3820 = pow(_2598, _1315.LodParameter) * _2596;
                                 break;
                             }
-                            if (_1243.LodMapping == 3u)
+                            if (_1315.LodMapping == 3u)
                             {
-                                _3670 = (_2521 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2521 * _2521) * float(_1243.SpecularSize)), 0.0, _2519) : 0.0;
+                                _3820 = (_2598 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2598 * _2598) * float(_1315.SpecularSize)), 0.0, _2596) : 0.0;
                                 break;
                             }
-                            if (((_1243.LodMapping == 4u) && (_1243.SpecularMips >= 3u)) && (float(_1243.SpecularSize) > _1243.LodParameter))
+                            if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
                             {
-                                float _2580 = float(_1243.SpecularSize);
-                                _3670 = (_2521 > 0.0) ? clamp(fma((_2519 - 1.0) / log2(_2580 / _1243.LodParameter), log2((_2521 * _2521) * _2580) - log2(_2580), _2519), 0.0, _2519) : 0.0;
+                                float _2657 = float(_1315.SpecularSize);
+                                _3820 = (_2598 > 0.0) ? clamp(fma((_2596 - 1.0) / log2(_2657 / _1315.LodParameter), log2((_2598 * _2598) * _2657) - log2(_2657), _2596), 0.0, _2596) : 0.0;
                                 break;
                             }
-                            _3670 = _2521 * _2519;
+                            _3820 = _2598 * _2596;
                             break;
                         } while(false);
-                        _3673 = (_1243.LightCount > 0u) ? clamp((_3670 - float(_1243.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _3672 = textureLod(Specular_LinearClamp, _3661, _3670).xyz * 1.0;
+                        _3823 = (_1315.LightCount > 0u) ? clamp((_3820 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _3822 = textureLod(Specular_LinearClamp, _3811, _3820).xyz * 1.0;
                         break;
                     }
-                    if (_1243.Lookup == 1u)
+                    if (_1315.Lookup == 1u)
                     {
-                        float _3668;
+                        float _3818;
                         do
                         {
-                            float _2664 = float(_1243.SpecularMips - 1u);
-                            float _2666 = clamp(_2223.y, 0.0, 1.0);
-                            if (_1243.LodMapping == 1u)
+                            float _2741 = float(_1315.SpecularMips - 1u);
+                            float _2743 = clamp(_2300.y, 0.0, 1.0);
+                            if (_1315.LodMapping == 1u)
                             {
-                                _3668 = (_2666 * (2.0 - _2666)) * _2664;
+                                _3818 = (_2743 * (2.0 - _2743)) * _2741;
                                 break;
                             }
-                            if (_1243.LodMapping == 2u)
+                            if (_1315.LodMapping == 2u)
                             {
-                                _3668 = pow(_2666, _1243.LodParameter) * _2664;
+                                _3818 = pow(_2743, _1315.LodParameter) * _2741;
                                 break;
                             }
-                            if (_1243.LodMapping == 3u)
+                            if (_1315.LodMapping == 3u)
                             {
-                                _3668 = (_2666 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2666 * _2666) * float(_1243.SpecularSize)), 0.0, _2664) : 0.0;
+                                _3818 = (_2743 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2743 * _2743) * float(_1315.SpecularSize)), 0.0, _2741) : 0.0;
                                 break;
                             }
-                            if (((_1243.LodMapping == 4u) && (_1243.SpecularMips >= 3u)) && (float(_1243.SpecularSize) > _1243.LodParameter))
+                            if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
                             {
-                                float _2725 = float(_1243.SpecularSize);
-                                _3668 = (_2666 > 0.0) ? clamp(fma((_2664 - 1.0) / log2(_2725 / _1243.LodParameter), log2((_2666 * _2666) * _2725) - log2(_2725), _2664), 0.0, _2664) : 0.0;
+                                float _2802 = float(_1315.SpecularSize);
+                                _3818 = (_2743 > 0.0) ? clamp(fma((_2741 - 1.0) / log2(_2802 / _1315.LodParameter), log2((_2743 * _2743) * _2802) - log2(_2802), _2741), 0.0, _2741) : 0.0;
                                 break;
                             }
-                            _3668 = _2666 * _2664;
+                            _3818 = _2743 * _2741;
                             break;
                         } while(false);
-                        _3673 = (_1243.LightCount > 0u) ? clamp((_3668 - float(_1243.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _3672 = textureLod(Specular_LinearClamp, _3661, _3668).xyz * 1.0;
+                        _3823 = (_1315.LightCount > 0u) ? clamp((_3818 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _3822 = textureLod(Specular_LinearClamp, _3811, _3818).xyz * 1.0;
                         break;
                     }
-                    vec3 _2320 = cross(_1812, vec3(0.0, 0.0, 1.0));
-                    float _2322 = length(_2320);
-                    vec3 _2332 = mix(vec3(0.0), cross(_2320 / vec3(_2322), _3661), bvec3(_2322 > 9.9999999747524270787835121154785e-07));
-                    float _3664;
+                    vec3 _2397 = cross(_1889, vec3(0.0, 0.0, 1.0));
+                    float _2399 = length(_2397);
+                    vec3 _2409 = mix(vec3(0.0), cross(_2397 / vec3(_2399), _3811), bvec3(_2399 > 9.9999999747524270787835121154785e-07));
+                    float _3814;
                     do
                     {
-                        float _2809 = float(_1243.SpecularMips - 1u);
-                        float _2811 = clamp(_2223.z, 0.0, 1.0);
-                        if (_1243.LodMapping == 1u)
+                        float _2886 = float(_1315.SpecularMips - 1u);
+                        float _2888 = clamp(_2300.z, 0.0, 1.0);
+                        if (_1315.LodMapping == 1u)
                         {
-                            _3664 = (_2811 * (2.0 - _2811)) * _2809;
+                            _3814 = (_2888 * (2.0 - _2888)) * _2886;
                             break;
                         }
-                        if (_1243.LodMapping == 2u)
+                        if (_1315.LodMapping == 2u)
                         {
-                            _3664 = pow(_2811, _1243.LodParameter) * _2809;
+                            _3814 = pow(_2888, _1315.LodParameter) * _2886;
                             break;
                         }
-                        if (_1243.LodMapping == 3u)
+                        if (_1315.LodMapping == 3u)
                         {
-                            _3664 = (_2811 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2811 * _2811) * float(_1243.SpecularSize)), 0.0, _2809) : 0.0;
+                            _3814 = (_2888 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2888 * _2888) * float(_1315.SpecularSize)), 0.0, _2886) : 0.0;
                             break;
                         }
-                        if (((_1243.LodMapping == 4u) && (_1243.SpecularMips >= 3u)) && (float(_1243.SpecularSize) > _1243.LodParameter))
+                        if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
                         {
-                            float _2870 = float(_1243.SpecularSize);
-                            _3664 = (_2811 > 0.0) ? clamp(fma((_2809 - 1.0) / log2(_2870 / _1243.LodParameter), log2((_2811 * _2811) * _2870) - log2(_2870), _2809), 0.0, _2809) : 0.0;
+                            float _2947 = float(_1315.SpecularSize);
+                            _3814 = (_2888 > 0.0) ? clamp(fma((_2886 - 1.0) / log2(_2947 / _1315.LodParameter), log2((_2888 * _2888) * _2947) - log2(_2947), _2886), 0.0, _2886) : 0.0;
                             break;
                         }
-                        _3664 = _2811 * _2809;
+                        _3814 = _2888 * _2886;
                         break;
                     } while(false);
-                    float _3666;
+                    float _3816;
                     do
                     {
-                        float _2954 = float(_1243.SpecularMips - 1u);
-                        float _2956 = clamp(_2223.z, 0.0, 1.0);
-                        if (_1243.LodMapping == 1u)
+                        float _3031 = float(_1315.SpecularMips - 1u);
+                        float _3033 = clamp(_2300.z, 0.0, 1.0);
+                        if (_1315.LodMapping == 1u)
                         {
-                            _3666 = (_2956 * (2.0 - _2956)) * _2954;
+                            _3816 = (_3033 * (2.0 - _3033)) * _3031;
                             break;
                         }
-                        if (_1243.LodMapping == 2u)
+                        if (_1315.LodMapping == 2u)
                         {
-                            _3666 = pow(_2956, _1243.LodParameter) * _2954;
+                            _3816 = pow(_3033, _1315.LodParameter) * _3031;
                             break;
                         }
-                        if (_1243.LodMapping == 3u)
+                        if (_1315.LodMapping == 3u)
                         {
-                            _3666 = (_2956 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2956 * _2956) * float(_1243.SpecularSize)), 0.0, _2954) : 0.0;
+                            _3816 = (_3033 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3033 * _3033) * float(_1315.SpecularSize)), 0.0, _3031) : 0.0;
                             break;
                         }
-                        if (((_1243.LodMapping == 4u) && (_1243.SpecularMips >= 3u)) && (float(_1243.SpecularSize) > _1243.LodParameter))
+                        if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
                         {
-                            float _3015 = float(_1243.SpecularSize);
-                            _3666 = (_2956 > 0.0) ? clamp(fma((_2954 - 1.0) / log2(_3015 / _1243.LodParameter), log2((_2956 * _2956) * _3015) - log2(_3015), _2954), 0.0, _2954) : 0.0;
+                            float _3092 = float(_1315.SpecularSize);
+                            _3816 = (_3033 > 0.0) ? clamp(fma((_3031 - 1.0) / log2(_3092 / _1315.LodParameter), log2((_3033 * _3033) * _3092) - log2(_3092), _3031), 0.0, _3031) : 0.0;
                             break;
                         }
-                        _3666 = _2956 * _2954;
+                        _3816 = _3033 * _3031;
                         break;
                     } while(false);
-                    _3673 = fma(0.5, (_1243.LightCount > 0u) ? clamp((_3664 - float(_1243.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1243.LightCount > 0u) ? clamp((_3666 - float(_1243.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
-                    _3672 = (textureLod(Specular_LinearClamp, normalize((_3661 * cos(_2223.w)) + (_2332 * sin(_2223.w))), _3664).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_3661 * cos(_2223.w)) - (_2332 * sin(_2223.w))), _3666).xyz * 0.5);
+                    _3823 = fma(0.5, (_1315.LightCount > 0u) ? clamp((_3814 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1315.LightCount > 0u) ? clamp((_3816 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
+                    _3822 = (textureLod(Specular_LinearClamp, normalize((_3811 * cos(_2300.w)) + (_2409 * sin(_2300.w))), _3814).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_3811 * cos(_2300.w)) - (_2409 * sin(_2300.w))), _3816).xyz * 0.5);
                     break;
                 } while(false);
-                vec2 _2167 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1809, 0.0, 1.0), _1820.w), 0.0).xy);
-                vec3 _1704 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1832].xyz, vec3(_1821.x));
-                vec2 _3061 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1809, 0.0, 1.0), _1820.w), 0.0).xy);
-                vec3 _3084 = (_1704 * _3061.x) + vec3(_3061.y);
-                vec3 _3679;
-                _3679 = fma(_3672, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1832].xyz, vec3(_1821.x)) * _2167.x) + vec3(_2167.y), (textureLod(IrradianceMap_LinearClamp, _1812, 0.0).xyz * Spheres_1._data[_1832].xyz) * (1.0 - _1821.x));
-                vec3 _1746;
-                for (uint _3674 = 0u; _3674 < _1243.LightCount; _3679 = _1746, _3674++)
+                vec2 _2244 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0).xy);
+                vec3 _1781 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1909].xyz, vec3(_1898.x));
+                vec2 _3138 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0).xy);
+                vec3 _3161 = (_1781 * _3138.x) + vec3(_3138.y);
+                vec3 _3831;
+                _3831 = fma(_3822, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1909].xyz, vec3(_1898.x)) * _2244.x) + vec3(_2244.y), (textureLod(IrradianceMap_LinearClamp, _1889, 0.0).xyz * Spheres_1._data[_1909].xyz) * (1.0 - _1898.x));
+                vec3 _1823;
+                for (uint _3824 = 0u; _3824 < _1315.LightCount; _3831 = _1823, _3824++)
                 {
-                    vec3 _1726 = Spheres_1._data[_1832].xyz * (1.0 - _1821.x);
-                    uint _1728 = 2u * _3674;
-                    uint _1731 = (2u * _3674) + 1u;
-                    vec4 _1634 = Lights_1._data[_1728];
-                    vec4 _1635 = Lights_1._data[_1731];
-                    vec3 _3085 = Lights_1._data[_1728].xyz;
-                    vec3 _3123 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_3085.z) < 0.999000012874603271484375)), Lights_1._data[_1728].xyz));
-                    vec3 _3126 = cross(Lights_1._data[_1728].xyz, _3123);
-                    float _3129 = tan(_1634.w);
-                    vec3 _3676;
-                    vec3 _3677;
-                    _3677 = vec3(0.0);
-                    _3676 = vec3(0.0);
-                    vec3 _3694;
-                    vec3 _3695;
-                    for (uint _3675 = 0u; _3675 < 19u; _3677 = _3695, _3676 = _3694, _3675++)
+                    uint _1805 = 2u * _3824;
+                    uint _1808 = (2u * _3824) + 1u;
+                    vec4 _1711 = Lights_1._data[_1805];
+                    vec4 _1712 = Lights_1._data[_1808];
+                    vec3 _3162 = Lights_1._data[_1805].xyz;
+                    vec3 _3202 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_3162.z) < 0.999000012874603271484375)), Lights_1._data[_1805].xyz));
+                    vec3 _3205 = cross(Lights_1._data[_1805].xyz, _3202);
+                    float _3208 = tan(_1711.w);
+                    vec3 _3826;
+                    _3826 = vec3(0.0);
+                    vec3 _3845;
+                    for (uint _3825 = 0u; _3825 < 19u; _3826 = _3845, _3825++)
                     {
-                        vec2 _3681;
+                        vec2 _3834;
                         do
                         {
-                            if (_3675 == 0u)
+                            if (_3825 == 0u)
                             {
-                                _3681 = vec2(0.0);
+                                _3834 = vec2(0.0);
                                 break;
                             }
-                            bool _3233 = _3675 <= 6u;
-                            float _3250 = _3233 ? (float(_3675 - 1u) * 1.0471975803375244140625) : ((float(_3675 - 7u) + 0.5) * 0.52359879016876220703125);
-                            _3681 = vec2(cos(_3250), sin(_3250)) * (_3233 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
+                            bool _3316 = _3825 <= 6u;
+                            float _3333 = _3316 ? (float(_3825 - 1u) * 1.0471975803375244140625) : ((float(_3825 - 7u) + 0.5) * 0.52359879016876220703125);
+                            _3834 = vec2(cos(_3333), sin(_3333)) * (_3316 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
                             break;
                         } while(false);
-                        vec2 _3093 = _3681 * _3129;
-                        vec3 _3150 = normalize((Lights_1._data[_1728].xyz + (_3123 * _3093.x)) + (_3126 * _3093.y));
-                        float _3153 = dot(_1812, _3150);
-                        if (_3153 <= 0.0)
+                        vec2 _3169 = _3834 * _3208;
+                        vec3 _3229 = normalize((Lights_1._data[_1805].xyz + (_3202 * _3169.x)) + (_3205 * _3169.y));
+                        if (dot(_1889, _3229) > 0.0)
                         {
-                            _3695 = _3677;
-                            _3694 = _3676;
-                            continue;
+                            vec3 _3835;
+                            do
+                            {
+                                float _3363 = dot(_1889, _3229);
+                                float _3367 = clamp(_1886, 0.0, 1.0);
+                                if ((_3363 <= 0.0) || (_3367 <= 0.0))
+                                {
+                                    _3835 = vec3(0.0);
+                                    break;
+                                }
+                                vec3 _3378 = normalize(_3229 + vec3(0.0, 0.0, 1.0));
+                                float _3452 = _1897.w * _1897.w;
+                                float _3473 = _1897.w * _1897.w;
+                                float _3395 = clamp(dot(_1889, _3378), 0.0, 1.0);
+                                float _3494 = _1897.w * _1897.w;
+                                float _3506 = fma(_3395 * _3395, fma(_3494, _3494, -1.0), 1.0);
+                                _3835 = (_1781 + ((vec3(1.0) - _1781) * pow(clamp(1.0 - clamp(_3378.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_3363 / fma(_3363, fma(-_3452, 0.5, 1.0), _3452 * 0.5)) * (_3367 / fma(_3367, fma(-_3473, 0.5, 1.0), _3473 * 0.5))) * ((_3494 * _3494) / ((3.1415927410125732421875 * _3506) * _3506))) / (4.0 * _3367));
+                                break;
+                            } while(false);
+                            _3845 = _3826 + _3835;
                         }
-                        vec3 _3682;
-                        do
+                        else
                         {
-                            float _3280 = dot(_1812, _3150);
-                            float _3284 = clamp(_1809, 0.0, 1.0);
-                            if ((_3280 <= 0.0) || (_3284 <= 0.0))
-                            {
-                                _3682 = vec3(0.0);
-                                break;
-                            }
-                            vec3 _3295 = normalize(_3150 + vec3(0.0, 0.0, 1.0));
-                            float _3369 = _1820.w * _1820.w;
-                            float _3390 = _1820.w * _1820.w;
-                            float _3312 = clamp(dot(_1812, _3295), 0.0, 1.0);
-                            float _3411 = _1820.w * _1820.w;
-                            float _3423 = fma(_3312 * _3312, fma(_3411, _3411, -1.0), 1.0);
-                            _3682 = (_1704 + ((vec3(1.0) - _1704) * pow(clamp(1.0 - clamp(_3295.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_3280 / fma(_3280, fma(-_3369, 0.5, 1.0), _3369 * 0.5)) * (_3284 / fma(_3284, fma(-_3390, 0.5, 1.0), _3390 * 0.5))) * ((_3411 * _3411) / ((3.1415927410125732421875 * _3423) * _3423))) / (4.0 * _3284));
-                            break;
-                        } while(false);
-                        _3695 = _3677 + (_1726 * (_3153 * 0.3183098733425140380859375));
-                        _3694 = _3676 + _3682;
+                            _3845 = _3826;
+                        }
                     }
-                    float _3185 = clamp((((2.0 * _1820.w) * _1820.w) / max(_1634.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
-                    vec4 _3109 = Lights_1._data[_1728];
-                    float _3451 = 0.5 * _3109.w;
-                    float _3453 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _1812), Lights_1._data[_1728].xyz), -1.0, 1.0));
-                    float _3457 = max(_1820.w * _1820.w, 1.0000000116860974230803549289703e-07);
-                    float _3471 = (_3451 * _3451) / (_3457 * _3457);
-                    float _3478 = (_3453 * _3453) / (_3457 * _3457);
-                    float _3482 = (_3471 + 1.0) - _3478;
-                    _1746 = _3679 + ((((mix(mix(vec3(0.0), (_3084 * clamp(0.5 + (((_3471 - 1.0) - _3478) / (2.0 * sqrt(fma(_3482, _3482, 4.0 * _3478)))), 0.0, 1.0)) / vec3(_1635.w), bvec3(_3185 < 1.0)), _3676 * 0.052631579339504241943359375, vec3(_3185)) * _3673) + (_3677 * 0.052631579339504241943359375)) * Lights_1._data[_1731].xyz) * _1635.w);
+                    float _3257 = clamp((((2.0 * _1897.w) * _1897.w) / max(_1711.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
+                    vec4 _3184 = Lights_1._data[_1805];
+                    float _3534 = 0.5 * _3184.w;
+                    float _3536 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _1889), Lights_1._data[_1805].xyz), -1.0, 1.0));
+                    float _3540 = max(_1897.w * _1897.w, 1.0000000116860974230803549289703e-07);
+                    float _3554 = (_3534 * _3534) / (_3540 * _3540);
+                    float _3561 = (_3536 * _3536) / (_3540 * _3540);
+                    float _3565 = (_3554 + 1.0) - _3561;
+                    float _3281 = sin(_1711.w);
+                    float _3285 = dot(_1889, Lights_1._data[_1805].xyz);
+                    float _3288 = _3281 * _3281;
+                    float _3827;
+                    do
+                    {
+                        if (((_3285 * _3285) > _3288) || (_3288 <= 0.0))
+                        {
+                            _3827 = (3.1415927410125732421875 * _3288) * clamp(_3285, 0.0, 1.0);
+                            break;
+                        }
+                        float _3610 = sqrt(clamp(fma(-_3285, _3285, 1.0), 0.0, 1.0));
+                        float _3614 = sqrt((1.0 / _3288) - 1.0);
+                        float _3620 = (-_3614) * (_3285 / _3610);
+                        float _3628 = _3610 * sqrt(clamp(fma(-_3620, _3620, 1.0), 0.0, 1.0));
+                        _3827 = max(fma(fma(_3285, acos(clamp(_3620, -1.0, 1.0)), -(_3614 * _3628)), _3288, atan(_3628 / _3614)), 0.0);
+                        break;
+                    } while(false);
+                    _1823 = fma(((mix(mix(vec3(0.0), (_3161 * clamp(0.5 + (((_3554 - 1.0) - _3561) / (2.0 * sqrt(fma(_3565, _3565, 4.0 * _3561)))), 0.0, 1.0)) / vec3(_1712.w), bvec3(_3257 < 1.0)), _3826 * 0.052631579339504241943359375, vec3(_3257)) * _3823) * _1712.w) + ((Spheres_1._data[_1909].xyz * (1.0 - _1898.x)) * (_3827 * 0.3183098733425140380859375)), Lights_1._data[_1808].xyz, _3831);
                 }
-                _3693 = _3679;
+                _3844 = _3831;
             }
             else
             {
-                _3693 = vec3(0.0);
+                _3844 = vec3(0.0);
             }
-            _3692 = _3693;
+            _3843 = _3844;
         }
-        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_3692, float(_1801)));
+        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_3843, float(_1878)));
         break;
     } while(false);
 }

@@ -226,9 +226,24 @@ float3 IblNarrowLobeDisk( float3 normal, float3 viewDirection, float roughness, 
     return albedo * IblGgxDiskShare( 0.5f * head.w, 0.5f * away, max( roughness * roughness, 1e-7f ) );
 }
 
-// A light's specular (weighted by `specularWeight`) and diffuse radiance towards V. The diffuse,
-// and the specular of a lobe twice as wide as the disk, 2α >= 2 radius, by the disk's points;
-// the specular of a lobe no wider than it by IblNarrowLobeDisk; between, a blend.
+// ∫ max(0, N·L) dω over a uniform spherical cap of angular radius σ whose centre lies at cos θ
+// from N, the horizon's clipping included (Snyder 1996; Lagarde and de Rousiers 2014, Frostbite's
+// illuminanceSphereOrDisk): π sin²σ cos θ while the cap is above the horizon, 0 once below.
+float IblCapCosine( float cosTheta, float sinSigma2 )
+{
+    if ( cosTheta * cosTheta > sinSigma2 || sinSigma2 <= 0.f )
+        return PI * sinSigma2 * saturate( cosTheta );
+    float sinTheta = sqrt( saturate( 1.f - cosTheta * cosTheta ) );
+    float x = sqrt( 1.f / sinSigma2 - 1.f );
+    float y = -x * ( cosTheta / sinTheta );
+    float sinThetaSqrtY = sinTheta * sqrt( saturate( 1.f - y * y ) );
+    return max( ( cosTheta * acos( clamp( y, -1.f, 1.f ) ) - x * sinThetaSqrtY ) * sinSigma2 + atan( sinThetaSqrtY / x ), 0.f );
+}
+
+// A light's specular (weighted by `specularWeight`) and diffuse radiance towards V. The diffuse
+// by the cap's exact cosine integral; the specular of a lobe twice as wide as the disk,
+// 2α >= 2 radius, by the disk's points; of a lobe no wider than it by IblNarrowLobeDisk; between,
+// a blend.
 // `diffuseColor` is albedo (1 - metalness), `albedo` the LUT's F0 scale and bias applied to f0.
 float3 IblDiskLight( float3 normal, float3 viewDirection, float roughness, float3 f0, float3 albedo, float3 diffuseColor,
                      float specularWeight, float4 head, float4 body )
@@ -238,23 +253,22 @@ float3 IblDiskLight( float3 normal, float3 viewDirection, float roughness, float
     float3 tangent = normalize( cross( helper, centre ) );
     float3 bitangent = cross( centre, tangent );
     float spread = tan( head.w );
-    float3 specular = ( float3 )0.f, diffuse = ( float3 )0.f;
+    float3 specular = ( float3 )0.f;
     for ( uint i = 0u; i < IBL_DISK_POINTS; ++i )
     {
         float2 p = IblDiskPoint( i ) * spread;
         float3 toLight = normalize( centre + p.x * tangent + p.y * bitangent );
-        float ndotl = dot( normal, toLight );
-        if ( ndotl <= 0.f )
-            continue;
-        specular += IblSpecularBrdfCosine( normal, viewDirection, toLight, roughness, f0 );
-        diffuse += diffuseColor * ( ndotl / PI );
+        if ( dot( normal, toLight ) > 0.f )
+            specular += IblSpecularBrdfCosine( normal, viewDirection, toLight, roughness, f0 );
     }
     float share = 1.f / float( IBL_DISK_POINTS );
     float wide = saturate( 2.f * roughness * roughness / max( head.w, 1e-6f ) - 1.f );
     float3 narrow = wide < 1.f ? IblNarrowLobeDisk( normal, viewDirection, roughness, albedo, head ) / body.w
                                : ( float3 )0.f;
     specular = lerp( narrow, specular * share, wide );
-    return ( specularWeight * specular + diffuse * share ) * body.rgb * body.w;
+    float sinRadius = sin( head.w );
+    float3 diffuse = diffuseColor * ( IblCapCosine( dot( normal, centre ), sinRadius * sinRadius ) / PI );
+    return ( specularWeight * specular * body.w + diffuse ) * body.rgb;
 }
 
 // The kit's opaque shading from the maps: the recipe's specular lookups times the LUT's F0 scale

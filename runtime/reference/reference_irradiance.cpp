@@ -1,9 +1,11 @@
 #include "reference_irradiance.hpp"
 
 #include "cube_environment.hpp"
+#include "cube_geometry.hpp"
 
 #include <glm/geometric.hpp>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <thread>
@@ -17,11 +19,86 @@ glm::dvec3 texelRadiance(const std::vector<float>& texels, size_t texel) {
     return {texels[texel * 4], texels[texel * 4 + 1], texels[texel * 4 + 2]};
 }
 
-glm::dvec3 texelCentre(uint32_t face, uint32_t column, uint32_t row, uint32_t size) {
-    return glm::normalize(cubeTexelDirection(face, column, row, size));
+// ∫ n·l dω over the part of a spherical polygon (great-circle edges between `corners`) above
+// n's horizon: the polygon clipped by the plane n·x = 0 (a point of an edge's plane, normalised,
+// lies on its arc), then Lambert's formula.
+double clippedPolygonCosine(const glm::dvec3& n, const std::array<glm::dvec3, 4>& corners) {
+    std::array<glm::dvec3, 8> clipped;
+    size_t count = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 &a = corners[i], &b = corners[(i + 1) % 4];
+        const double da = glm::dot(n, a), db = glm::dot(n, b);
+        if (da >= 0) clipped[count++] = a;
+        if ((da >= 0) != (db >= 0)) clipped[count++] = glm::normalize(a + (b - a) * (da / (da - db)));
+    }
+    double sum = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const glm::dvec3 &a = clipped[i], &b = clipped[(i + 1) % count];
+        const glm::dvec3 edge = glm::cross(a, b);
+        const double length = glm::length(edge);
+        if (length < 1e-300) continue;
+        sum += std::atan2(length, glm::dot(a, b)) * glm::dot(n, edge / length);
+    }
+    return std::abs(sum) / 2;
+}
+
+// ∫ l dω over a spherical polygon (Lambert's vector form): ½ Σ angle_i unit(v_i × v_(i+1)),
+// pointing out through the polygon.
+glm::dvec3 polygonVector(const std::array<glm::dvec3, 4>& corners, const glm::dvec3& centre) {
+    glm::dvec3 sum(0);
+    for (size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 &a = corners[i], &b = corners[(i + 1) % 4];
+        const glm::dvec3 edge = glm::cross(a, b);
+        sum += std::atan2(glm::length(edge), glm::dot(a, b)) * glm::normalize(edge);
+    }
+    return glm::dot(sum, centre) < 0 ? -sum / 2.0 : sum / 2.0;
+}
+
+struct SourceTexel {
+    glm::dvec3 centre, radiance;
+    glm::dvec3 vector; // ∫ l dω over the texel: n·vector is its cosine integral when it is all above n's horizon
+    std::array<glm::dvec3, 4> corners;
+    double reach; // sine of the largest angle from the centre to a corner
+};
+
+std::vector<SourceTexel> sourceTexels(const std::vector<float>& texels, uint32_t size) {
+    std::vector<SourceTexel> result;
+    size_t texel = 0;
+    for (uint32_t face = 0; face < 6; ++face)
+        for (uint32_t row = 0; row < size; ++row)
+            for (uint32_t column = 0; column < size; ++column, ++texel) {
+                SourceTexel t;
+                t.centre = cubeTexelCentre(face, column, row, size);
+                t.radiance = texelRadiance(texels, texel);
+                double reach = 0;
+                for (int corner = 0; corner < 4; ++corner) {
+                    const double u = double(column + (corner == 1 || corner == 2)) / size;
+                    const double v = double(row + (corner >= 2)) / size;
+                    t.corners[size_t(corner)] = CubeFaceDirection<double>(face, glm::dvec2(u, v));
+                    reach = std::max(reach, glm::length(glm::cross(t.centre, t.corners[size_t(corner)])));
+                }
+                t.reach = reach;
+                t.vector = polygonVector(t.corners, t.centre);
+                result.push_back(t);
+            }
+    return result;
+}
+
+template <typename Fill>
+void forEachOutputTexel(size_t count, const Fill& fill) {
+    const size_t threads = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::jthread> workers;
+    for (size_t worker = 0; worker < threads; ++worker)
+        workers.emplace_back([&, worker] {
+            for (size_t out = worker; out < count; out += threads) fill(out);
+        });
 }
 
 } // namespace
+
+glm::dvec3 cubeTexelCentre(uint32_t face, uint32_t column, uint32_t row, uint32_t size) {
+    return glm::normalize(cubeTexelDirection(face, column, row, size));
+}
 
 double cubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size) {
     const double x0 = 2.0 * column / size - 1, y0 = 2.0 * row / size - 1;
@@ -51,7 +128,7 @@ std::array<glm::dvec3, 9> projectOnSh(const std::vector<float>& texels, uint32_t
     for (uint32_t face = 0; face < 6; ++face)
         for (uint32_t row = 0; row < size; ++row)
             for (uint32_t column = 0; column < size; ++column, ++texel) {
-                const auto basis = shBasis(texelCentre(face, column, row, size));
+                const auto basis = shBasis(cubeTexelCentre(face, column, row, size));
                 const glm::dvec3 weighted = texelRadiance(texels, texel) * cubeTexelSolidAngle(column, row, size);
                 for (size_t k = 0; k < 9; ++k) coefficients[k] += weighted * basis[k];
             }
@@ -64,7 +141,7 @@ std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_
     for (uint32_t face = 0; face < 6; ++face)
         for (uint32_t row = 0; row < size; ++row)
             for (uint32_t column = 0; column < size; ++column, ++texel) {
-                directions.push_back(texelCentre(face, column, row, size));
+                directions.push_back(cubeTexelCentre(face, column, row, size));
                 weighted.push_back(texelRadiance(texels, texel) * cubeTexelSolidAngle(column, row, size));
             }
     std::vector<glm::dvec3> result(size_t(6) * outSize * outSize);
@@ -72,7 +149,7 @@ std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_
         for (size_t out = first; out < result.size(); out += step) {
             const uint32_t face = uint32_t(out / (size_t(outSize) * outSize));
             const uint32_t row = uint32_t(out / outSize % outSize), column = uint32_t(out % outSize);
-            const glm::dvec3 normal = texelCentre(face, column, row, outSize);
+            const glm::dvec3 normal = cubeTexelCentre(face, column, row, outSize);
             glm::dvec3 sum(0);
             for (size_t i = 0; i < directions.size(); ++i) sum += weighted[i] * std::max(0.0, glm::dot(normal, directions[i]));
             result[out] = sum / std::numbers::pi;
@@ -91,6 +168,23 @@ glm::dvec3 shIrradiance(const std::array<glm::dvec3, 9>& radiance, glm::dvec3 no
     glm::dvec3 sum(0);
     for (size_t k = 0; k < 9; ++k) sum += radiance[k] * basis[k] * (k == 0 ? 1.0 : k < 4 ? 2.0 / 3.0 : 0.25);
     return sum;
+}
+
+std::vector<glm::dvec3> exactIrradianceCube(const std::vector<float>& texels, uint32_t size, uint32_t outSize) {
+    const auto sources = sourceTexels(texels, size);
+    std::vector<glm::dvec3> result(size_t(6) * outSize * outSize);
+    forEachOutputTexel(result.size(), [&](size_t out) {
+        const uint32_t face = uint32_t(out / (size_t(outSize) * outSize));
+        const glm::dvec3 n = cubeTexelCentre(face, uint32_t(out % outSize), uint32_t(out / outSize % outSize), outSize);
+        glm::dvec3 sum(0);
+        for (const auto& t : sources) {
+            const double cosine = glm::dot(n, t.centre);
+            if (cosine > t.reach) sum += t.radiance * glm::dot(n, t.vector);
+            else if (cosine > -t.reach) sum += t.radiance * clippedPolygonCosine(n, t.corners);
+        }
+        result[out] = sum / std::numbers::pi;
+    });
+    return result;
 }
 
 } // namespace iblkit::reference

@@ -13,6 +13,9 @@ namespace iblkit::reference {
 // The exact solid angle of texel (column, row) of a size x size face (hlsl/Common/Cube.fxh).
 double cubeTexelSolidAngle(uint32_t column, uint32_t row, uint32_t size);
 
+// The unit direction through the centre of texel (column, row) of `face` of a size x size cube.
+glm::dvec3 cubeTexelCentre(uint32_t face, uint32_t column, uint32_t row, uint32_t size);
+
 // Real spherical harmonics of bands 0-2 in hlsl/Common/SphericalHarmonics.fxh's order.
 // In T's arithmetic with T's constants, so T = float follows the shader.
 template <typename T>
@@ -36,6 +39,14 @@ std::array<glm::dvec3, 9> projectOnSh(const std::vector<float>& texels, uint32_t
 
 // IrradianceCubeCS in double: E(n) / pi per texel of an outSize cube (RGB per texel).
 std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_t size, uint32_t outSize);
+
+// E(n) / pi per texel of an outSize cube, exact for a source of constant texels: each source
+// texel is the spherical quadrilateral its face's straight edges cut, and one that n's horizon
+// crosses is clipped to it and integrated by Lambert's formula, ∫ n·l dω = ½ Σ_edges
+// angle_i n·unit(v_i × v_(i+1)); a texel clear of the horizon by the same formula's vector,
+// ∫ l dω, computed once per texel. The point sum of irradianceCube
+// errs where bright texels meet a normal's horizon (a low sun at 128²: 1.5 % of E).
+std::vector<glm::dvec3> exactIrradianceCube(const std::vector<float>& texels, uint32_t size, uint32_t outSize);
 
 // E(n) / pi from radiance coefficients (Ramamoorthi and Hanrahan's band factors).
 glm::dvec3 shIrradiance(const std::array<glm::dvec3, 9>& radiance, glm::dvec3 normal);

@@ -135,6 +135,7 @@ EnvironmentResult benchEnvironment(const std::string& name, const ShadingBenchOp
     EnvironmentResult result;
     result.name = name;
     std::optional<ReferenceImage> reference;
+    std::vector<glm::dvec3> exactDiffuse;
     double floor = 0;
     for (size_t i = 0; i < recipes.size(); ++i) {
         const auto started = std::chrono::steady_clock::now();
@@ -157,8 +158,11 @@ EnvironmentResult benchEnvironment(const std::string& name, const ShadingBenchOp
                                toneMapped(reference->mean, exposureOf(maps)).rgba);
         }
         if (i == 0) writeErrorPicture(options.pictures / name / (recipes[i]->name + "-error.png"), *reference, splitSum, floor);
+        const uint32_t irradianceSize = maps.irradiance.cube.desc().width;
+        if (exactDiffuse.empty()) exactDiffuse = exactIrradiance(context, maps.source, irradianceSize, options.cache);
+        const auto diffuse = irradianceError(exactDiffuse, maps.irradiance.cube.download(context), irradianceSize, maps.lights);
         result.recipes.push_back({recipes[i]->name, sphereErrors(grid, *reference, splitSum, options.cellSize, floor),
-                                  maps.lights, maps.lightLevel, bakeMs});
+                                  maps.lights, maps.lightLevel, bakeMs, diffuse});
     }
     return result;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/irradiance_error.hpp"
 #include "render/reference_render.hpp"
 #include "render/sphere_errors.hpp"
 
@@ -34,6 +35,7 @@ struct RecipeResult {
     std::vector<shading::EnvironmentLight> lights;
     uint32_t lightLevel = 0;
     double bakeMilliseconds = 0; // the maps' bake in process, device and host
+    IrradianceError irradiance;  // the diffuse's source (its map and lights) against the exact sum
 };
 
 struct EnvironmentResult {

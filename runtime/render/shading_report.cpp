@@ -54,6 +54,8 @@ nlohmann::json resultsJson(const std::vector<EnvironmentResult>& results) {
                                {"light_level", recipe.lightLevel},
                                {"lights", lights},
                                {"bake_ms", rounded(recipe.bakeMilliseconds)},
+                               {"irradiance_rms_relative_error", rounded(recipe.irradiance.rms)},
+                               {"irradiance_max_relative_error", rounded(recipe.irradiance.max)},
                                {"mean_relative_error", column(recipe.spheres, &SphereError::meanRelativeError)},
                                {"max_relative_error", column(recipe.spheres, &SphereError::maxRelativeError)},
                                {"total_relative_error", column(recipe.spheres, &SphereError::totalRelativeError)},
@@ -96,7 +98,7 @@ constexpr float kLotteryRoughness = 0.2f;
 struct RecipeSummary {
     size_t opaque = 0, met = 0;
     double excessSum = 0;
-    Worst excess, total, roughTotal, glass;
+    Worst excess, total, roughTotal, glass, irradiance;
     double bakeMs = 0;
 };
 
@@ -106,6 +108,7 @@ std::map<std::string, RecipeSummary> summarize(const std::vector<EnvironmentResu
         for (const auto& recipe : environment.recipes) {
             auto& summary = summaries[recipe.recipe];
             summary.bakeMs = std::max(summary.bakeMs, recipe.bakeMilliseconds);
+            summary.irradiance.take(recipe.irradiance.max, environment.name);
             for (const auto& sphere : recipe.spheres) {
                 const auto at = fmt::format("{} {:g} on {}", sphere.material, sphere.roughness, environment.name);
                 if (sphere.transmittance > 0) {
@@ -139,16 +142,50 @@ std::string describe(const shading::ShadingRecipe& recipe) {
 void writeSummary(std::ostream& out, const std::vector<EnvironmentResult>& results) {
     const auto summaries = summarize(results);
     out << fmt::format("| recipe | how | opaque spheres within both targets | their mean error above noise, on average | "
-                       "the worst | worst summed error | worst from roughness {:g} | worst glass mean error | slowest bake |\n"
-                       "|---|---|---:|---:|---|---|---|---|---:|\n",
+                       "the worst | worst summed error | worst from roughness {:g} | worst glass mean error | worst irradiance "
+                       "error | slowest bake |\n"
+                       "|---|---|---:|---:|---|---|---|---|---|---:|\n",
                        kLotteryRoughness);
     for (const auto& recipe : results.front().recipes) {
         const auto& s = summaries.at(recipe.recipe);
-        out << fmt::format("| {} | {} | {} of {} | {} % | {} % ({}) | {} % ({}) | {} % ({}) | {} % ({}) | {:.2f} s |\n",
+        out << fmt::format("| {} | {} | {} of {} | {} % | {} % ({}) | {} % ({}) | {} % ({}) | {} % ({}) | {:.2f} % ({}) | "
+                           "{:.2f} s |\n",
                            recipe.recipe, describe(shading::recipeNamed(recipe.recipe)), s.met, s.opaque,
                            percent(s.excessSum / double(std::max<size_t>(s.opaque, 1))), percent(s.excess.value),
                            s.excess.where, percent(s.total.value), s.total.where, percent(s.roughTotal.value),
-                           s.roughTotal.where, percent(s.glass.value), s.glass.where, s.bakeMs / 1e3);
+                           s.roughTotal.where, percent(s.glass.value), s.glass.where, 100 * s.irradiance.value,
+                           s.irradiance.where, s.bakeMs / 1e3);
+    }
+}
+
+// The diffuse's source against the exact sum, per environment, for each recipe that takes
+// out other lights than the recipes before it (the rest read the same irradiance).
+void writeIrradianceTable(std::ostream& out, const std::vector<EnvironmentResult>& results) {
+    std::vector<size_t> shown;
+    std::vector<std::string> kinds;
+    const auto& recipes = results.front().recipes;
+    for (size_t i = 0; i < recipes.size(); ++i) {
+        const auto& recipe = shading::recipeNamed(recipes[i].recipe);
+        const auto kind = recipe.lights ? fmt::format("{} {} {} {} {}", recipe.lights->threshold, recipe.lights->minShare,
+                                                      recipe.lights->maxRadius, recipe.lights->maxLights, recipe.irradianceSource)
+                                        : fmt::format("none {}", recipe.irradianceSource);
+        if (std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
+        kinds.push_back(kind);
+        shown.push_back(i);
+    }
+    out << "| environment |";
+    for (const size_t i : shown) out << " " << recipes[i].recipe << " |";
+    out << "\n|---|";
+    for (size_t i = 0; i < shown.size(); ++i) out << "---:|";
+    out << "\n";
+    for (const auto& environment : results) {
+        out << "| " << environment.name << " |";
+        for (const size_t i : shown) {
+            const auto& error = environment.recipes[i].irradiance;
+            const bool met = error.max <= kIrradianceTarget;
+            out << fmt::format(" {}{:.2f} % / {:.2f} %{} |", met ? "" : "**", 100 * error.rms, 100 * error.max, met ? "" : "**");
+        }
+        out << "\n";
     }
 }
 
@@ -279,6 +316,15 @@ void writeShadingReport(const ShadingReportOptions& options, const ShadingBenchO
     page << "\n![](shading/summary.png)\n\n## The best recipe per sphere\n\nThe worst over the environments of each "
             "sphere's mean error above noise (glass: its mean error), for the recipe with the least.\n\n";
     writeFrontier(page, results);
+    page << fmt::format("\n## Irradiance against the exact sum\n\nWhat the diffuse reads — the irradiance map (the "
+                        "source's 32² mip summed exactly, of the environment without its lights where the recipe takes "
+                        "them out) plus each light's E / π as IblDiskLight adds it (the exact cosine integral of its cap) — "
+                        "against the exact integral over the source cube's texels (Lambert's formula where a normal's "
+                        "horizon cuts one), at every texel of the 32² map: RMS / max relative error of "
+                        "luminance, in bold past the target ({:g} % everywhere). One column per way of taking lights "
+                        "out; the other recipes read the same.\n\n",
+                        100 * kIrradianceTarget);
+    writeIrradianceTable(page, results);
     page << "\n## Environment by environment\n\n";
     for (const auto& environment : results) writeEnvironment(page, environment, "shading");
     writeText(options.markdown, page.str());

@@ -13,6 +13,8 @@ namespace iblkit::render {
 // mean of a normal's magnitude), and the summed error within ±kTotalTarget; glass within
 // kGlassTarget.
 inline constexpr double kMeanTarget = 0.03, kTotalTarget = 0.02, kGlassTarget = 0.2;
+// The diffuse's source (irradiance map and lights) within this of the exact sum at every texel.
+inline constexpr double kIrradianceTarget = 0.01;
 
 // A sphere's mean error less the share its reference's noise explains.
 double excessError(const SphereError& sphere);

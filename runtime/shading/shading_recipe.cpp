@@ -29,6 +29,12 @@ ShadingRecipe handOff(ShadingRecipe recipe) {
     return recipe;
 }
 
+// The irradiance map sums the source's mip of at most this size.
+ShadingRecipe irradianceFrom(ShadingRecipe recipe, uint32_t size) {
+    recipe.irradianceSource = size;
+    return recipe;
+}
+
 ShadingRecipe withLights(ShadingRecipe recipe, ExtractionSettings lights) {
     recipe.lights = lights;
     return recipe;
@@ -57,6 +63,7 @@ std::vector<ShadingRecipe> makeBenchRecipes() {
         withLights(recipe("lights-within-3", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {50, 0.02, 0.0524, 8}),
         withLights(recipe("lights-within-10", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {50, 0.02, 0.1745, 8}),
         withLights(recipe("lights-above-20", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {20, 0.02, 0.1, 8}),
+        irradianceFrom(recipe("irradiance-64", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), 64),
     };
 }
 

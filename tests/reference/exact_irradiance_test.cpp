@@ -1,0 +1,62 @@
+// The exact irradiance of constant texels: Lambert's formula on texels the horizon crosses.
+#include "cube_geometry.hpp"
+#include "reference_irradiance.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace iblkit::reference {
+namespace {
+
+// A white furnace: E / π = 1 for every normal. The point sum misses by its texels' size; the
+// exact sum only by rounding.
+TEST(ExactIrradiance, AConstantEnvironmentGivesOneEverywhere) {
+    const uint32_t size = 16;
+    const std::vector<float> white(size_t(6) * size * size * 4, 1.f);
+    const auto exact = exactIrradianceCube(white, size, 8);
+    const auto points = irradianceCube(white, size, 8);
+    double exactWorst = 0, pointWorst = 0;
+    for (size_t i = 0; i < exact.size(); ++i) {
+        exactWorst = std::max(exactWorst, std::abs(exact[i].g - 1));
+        pointWorst = std::max(pointWorst, std::abs(points[i].g - 1));
+    }
+    // Bound 1e-12: double rounding over 1536 texels; the point sum's 2e-4 is what Lambert's formula removes.
+    EXPECT_LT(exactWorst, 1e-12);
+    EXPECT_GT(pointWorst, 1e-4);
+}
+
+// One lit texel that a normal's horizon cuts in two: against a fine quadrature of the texel
+// (512² sub-texels, each counted at its centre with its exact solid angle, clipped by the horizon).
+TEST(ExactIrradiance, ATexelTheHorizonCutsCountsItsPartAboveIt) {
+    const uint32_t size = 4, face = 4, column = 1, row = 1; // +Z, a texel beside the centre
+    std::vector<float> texels(size_t(6) * size * size * 4, 0.f);
+    const size_t lit = (size_t(face) * size + row) * size + column;
+    texels[4 * lit] = texels[4 * lit + 1] = texels[4 * lit + 2] = 1.f;
+    const auto exact = exactIrradianceCube(texels, size, 32);
+    const uint32_t fine = 512;
+    size_t checked = 0;
+    for (size_t out = 0; out < exact.size(); ++out) {
+        const uint32_t outFace = uint32_t(out / (32 * 32));
+        const glm::dvec3 n = cubeTexelCentre(outFace, uint32_t(out % 32), uint32_t(out / 32 % 32), 32);
+        const glm::dvec3 centre = cubeTexelCentre(face, column, row, size);
+        if (std::abs(glm::dot(n, centre)) > 0.2) continue; // the horizon near the texel
+        double sum = 0;
+        for (uint32_t y = 0; y < fine; ++y)
+            for (uint32_t x = 0; x < fine; ++x) {
+                const double u = (column + (x + 0.5) / fine) / size, v = (row + (y + 0.5) / fine) / size;
+                const glm::dvec3 d = CubeFaceDirection<double>(face, glm::dvec2(u, v));
+                const double solidAngle = CubeTexelSolidAngle<double>(column * fine + x, row * fine + y, size * fine);
+                sum += std::max(0.0, glm::dot(n, d)) * solidAngle;
+            }
+        // 1e-6 relative to the texel's full cosine weight: the fine quadrature's own error at 512².
+        EXPECT_NEAR(exact[out].g * std::numbers::pi, sum, 1e-6) << "output texel " << out;
+        ++checked;
+    }
+    EXPECT_GT(checked, 20u);
+}
+
+} // namespace
+} // namespace iblkit::reference
