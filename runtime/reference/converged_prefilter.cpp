@@ -148,7 +148,7 @@ std::vector<glm::dvec3> convergedPrefilter(std::span<const float> sourceTexels, 
     const Source source = prepareSource(sourceTexels, sourceSize, alpha, options.supersampling);
     forEachRow(uint32_t(texels.size()), [&](uint32_t i) {
         const glm::dvec3 normal = normalOf(texels[i]);
-        result[i] = prefilteredAt(source, PrefilterLobe(normal, alpha, options.supersampling), normal);
+        result[i] = prefilteredAt(source, PrefilterLobe(normal, alpha, options.supersampling, options.g1Weighting), normal);
     });
     return result;
 }

@@ -20,6 +20,7 @@ std::vector<PrefilterTexel> seededPrefilterTexels(uint32_t size, uint32_t count,
 
 struct ConvergedPrefilterOptions {
     uint32_t supersampling = 1; // multiplier on the adaptive sub-texel counts, for self-convergence tests
+    bool g1Weighting = false;   // the lobe D·G1(N·L) (PrefilterConvolutionCS's Weighting 1) instead of D·N·L
 };
 
 // The converged prefiltered radiance (RGB) of a cube source (RGBA floats ordered face +X, -X,

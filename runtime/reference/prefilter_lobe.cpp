@@ -46,9 +46,9 @@ FacePlane facePlane(uint32_t face) {
     return {origin, cubeTexelDirection(face, 1.5, 0.5, 2) - origin, cubeTexelDirection(face, 0.5, 1.5, 2) - origin};
 }
 
-PrefilterLobe::PrefilterLobe(glm::dvec3 normal, double alpha, uint32_t supersampling)
+PrefilterLobe::PrefilterLobe(glm::dvec3 normal, double alpha, uint32_t supersampling, bool g1Weighting)
     : normal_(glm::normalize(normal)), alpha2_(alpha * alpha), inverseAlpha2_(1 / (alpha * alpha)),
-      supersampling_(std::max(1u, supersampling)) {
+      g1K_(g1Weighting ? alpha / 2 : 0), supersampling_(std::max(1u, supersampling)) {
     for (uint32_t face = 0; face < 6; ++face) {
         faces_[face] = facePlane(face);
         normalOnFace_[face] = {glm::dot(normal_, faces_[face].origin), glm::dot(normal_, faces_[face].u),

@@ -18,10 +18,12 @@ FacePlane facePlane(uint32_t face);
 // has pdf D·N·H / (4 V·H) = D / 4, and each sample is weighted by N·L, so the estimate tends to
 // ∫ c(L) D(N·H(L)) N·L dω / ∫ D(N·H(L)) N·L dω over N·L > 0. With N·H² = (1 + N·L) / 2,
 //   D = α² / (π (N·H² (α² - 1) + 1)²) = 4α² / (π ((1 - N·L) + α² (1 + N·L))²);
-// weight() is D·N·L times πα² / 4 (the factor cancels in the ratio), at most 1/4.
+// weight() is D·N·L times πα² / 4 (the factor cancels in the ratio), at most 1/4. With
+// `g1Weighting`, N·L becomes Smith-Schlick's G1(N·L) = N·L / (N·L (1 - k) + k), k = α / 2
+// (PrefilterConvolutionCS's Weighting 1, the split sum's own lobe at N = V).
 class PrefilterLobe {
 public:
-    PrefilterLobe(glm::dvec3 normal, double alpha, uint32_t supersampling);
+    PrefilterLobe(glm::dvec3 normal, double alpha, uint32_t supersampling, bool g1Weighting = false);
 
     // ∫ weight dω over the square [a0, a0 + side] x [b0, b0 + side] of `face`, N·L > 0 only:
     // tensor Gauss–Legendre on sub-squares refined (a quadtree) until each is small against the
@@ -40,7 +42,8 @@ public:
 
     double weight(double ndotl, double oneMinusNdotl) const {
         const double spread = oneMinusNdotl * inverseAlpha2_ + (1 + ndotl);
-        return ndotl / (spread * spread);
+        const double lobe = g1K_ > 0 ? ndotl / (ndotl * (1 - g1K_) + g1K_) : ndotl;
+        return lobe / (spread * spread);
     }
 
 private:
@@ -52,6 +55,7 @@ private:
 
     glm::dvec3 normal_;
     double alpha2_, inverseAlpha2_;
+    double g1K_ = 0; // Smith-Schlick's k with G1's weighting, 0 with N·L's
     uint32_t supersampling_;
     std::array<FacePlane, 6> faces_;
     std::array<glm::dvec3, 6> normalOnFace_; // (N·origin, N·u, N·v)

@@ -120,6 +120,25 @@ TEST(ConvergedPrefilter, LobeOverEveryTexelIntegratesToItsClosedForm) {
     }
 }
 
+// G1's lobe (the kit's, PrefilterConvolutionCS's Weighting 1): at α = 1, D is 1/π everywhere and
+// weight() = G1(N·L) / 4 with k = 1/2, G1 = 2c / (1 + c), so over the cube it sums to
+// 2π ∫₀¹ 2c / (1 + c) dc / 4 = π (1 - ln 2); N·L's lobe sums to π / 4.
+TEST(ConvergedPrefilter, TheG1LobeOverEveryTexelIntegratesToItsClosedForm) {
+    constexpr uint32_t size = 16;
+    const glm::dvec3 normal = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+    for (const bool g1 : {false, true}) {
+        const PrefilterLobe lobe(normal, 1.0, 1, g1);
+        double total = 0;
+        for (uint32_t face = 0; face < 6; ++face)
+            for (uint32_t y = 0; y < size; ++y)
+                for (uint32_t x = 0; x < size; ++x)
+                    total += lobe.overSquare(face, -1 + 2.0 * x / size, -1 + 2.0 * y / size, 2.0 / size);
+        const double exact = g1 ? std::numbers::pi * (1 - std::log(2.0)) : std::numbers::pi / 4;
+        // 1e-9, as for N·L's lobe above: the far squares' 2 x 2 rule.
+        EXPECT_NEAR(total / exact, 1.0, 1e-9) << (g1 ? "G1" : "N·L");
+    }
+}
+
 // PrefilterSpecular<double> reads the 64² test environment bilinearly, the converged prefilter
 // takes its texels as constant: the two integrals differ by the filter, most where the lobe is
 // narrow. Measured largest relative difference over 24 texels at 2^16 samples: 7.7e-4 at

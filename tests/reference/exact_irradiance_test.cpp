@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace iblkit::reference {
@@ -29,18 +30,19 @@ TEST(ExactIrradiance, AConstantEnvironmentGivesOneEverywhere) {
 }
 
 // One lit texel that a normal's horizon cuts in two: against a fine quadrature of the texel
-// (512² sub-texels, each counted at its centre with its exact solid angle, clipped by the horizon).
+// (128² sub-texels, each counted at its centre with its exact solid angle, clipped by the horizon).
 TEST(ExactIrradiance, ATexelTheHorizonCutsCountsItsPartAboveIt) {
     const uint32_t size = 4, face = 4, column = 1, row = 1; // +Z, a texel beside the centre
     std::vector<float> texels(size_t(6) * size * size * 4, 0.f);
     const size_t lit = (size_t(face) * size + row) * size + column;
     texels[4 * lit] = texels[4 * lit + 1] = texels[4 * lit + 2] = 1.f;
-    const auto exact = exactIrradianceCube(texels, size, 32);
-    const uint32_t fine = 512;
+    const auto exact = exactIrradianceCube(texels, size, 16);
+    const uint32_t fine = 128;
+    double worst = 0;
     size_t checked = 0;
     for (size_t out = 0; out < exact.size(); ++out) {
-        const uint32_t outFace = uint32_t(out / (32 * 32));
-        const glm::dvec3 n = cubeTexelCentre(outFace, uint32_t(out % 32), uint32_t(out / 32 % 32), 32);
+        const uint32_t outFace = uint32_t(out / (16 * 16));
+        const glm::dvec3 n = cubeTexelCentre(outFace, uint32_t(out % 16), uint32_t(out / 16 % 16), 16);
         const glm::dvec3 centre = cubeTexelCentre(face, column, row, size);
         if (std::abs(glm::dot(n, centre)) > 0.2) continue; // the horizon near the texel
         double sum = 0;
@@ -51,10 +53,13 @@ TEST(ExactIrradiance, ATexelTheHorizonCutsCountsItsPartAboveIt) {
                 const double solidAngle = CubeTexelSolidAngle<double>(column * fine + x, row * fine + y, size * fine);
                 sum += std::max(0.0, glm::dot(n, d)) * solidAngle;
             }
-        // 1e-6 relative to the texel's full cosine weight: the fine quadrature's own error at 512².
-        EXPECT_NEAR(exact[out].g * std::numbers::pi, sum, 1e-6) << "output texel " << out;
+        worst = std::max(worst, std::abs(exact[out].g * std::numbers::pi - sum));
         ++checked;
     }
+    std::printf("[ measured ] a texel cut by the horizon, exact vs 128² sub-texels: %.1e\n", worst);
+    // Measured 3.8e-7 (of a texel of 0.4 sr): the sub-texels' own error where the horizon cuts
+    // them; bound 1e-6. Counting the texel's whole vector, or its centre, misses by 1e-2 and more.
+    EXPECT_LT(worst, 1e-6);
     EXPECT_GT(checked, 20u);
 }
 
