@@ -40,16 +40,13 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     auto outputs = bakeOutputs(settings, input, size, plan, toolVersion, progress, store ? &*store : nullptr);
 
     progress.begin("write");
-    const bool lobeTableFile = plan.specular && readsLobeTable(*plan.recipe);
+    const bool lobeTableFile = outputs.lobeTable.has_value();
     const ManifestFacts facts{toolVersion, outputs.device, &input, &settings, size, mips, &outputs.sh, nullptr,
                               outputs.previewExposure, &plan, &outputs.lights, outputs.lightLevel, lobeTableFile};
     if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = shadingJson(facts).dump();
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
-    for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance})
+    for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture) textures.push_back(std::move(**texture));
-    if (lobeTableFile)
-        textures.push_back({"lobe_table", image_io::PixelFormat::Rgba32Float, shading::kLobeTableSize, 1, 1,
-                            lobeTableOf(plan.recipe->weighting)});
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));

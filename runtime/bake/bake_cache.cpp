@@ -116,7 +116,9 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
     addLights(irradiance, *plan.recipe);
     auto lights = commonKey("lights", device, toolVersion);
     addLights(addSource(lights, input, size, files), *plan.recipe);
-    BakeKeys keys{specular.hex(), lut.hex(), irradiance.hex(), lights.hex(), ""};
+    auto lobeTable = commonKey("lobe table", device, toolVersion); // the program's digest holds its code
+    lobeTable.add("weighting", std::string(shading::nameOf(plan.recipe->weighting))).add("size", shading::kLobeTableSize);
+    BakeKeys keys{specular.hex(), lut.hex(), irradiance.hex(), lights.hex(), lobeTable.hex(), ""};
     auto preview = commonKey("preview", device, toolVersion);
     preview.add("specular", keys.specular).add("brdf lut", plan.lut ? keys.lut : "none").add("irradiance", keys.irradiance);
     preview.add("kernels", kernelSourcesDigest({"PreviewCS"}, files)).add("lights", keys.lights);

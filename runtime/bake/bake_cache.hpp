@@ -21,7 +21,7 @@ namespace iblkit::bake {
 // bytes. The LUT's key holds no environment, so one LUT serves every environment baked with its
 // settings.
 struct BakeKeys {
-    std::string specular, lut, irradiance, lights, preview;
+    std::string specular, lut, irradiance, lights, lobeTable, preview;
 };
 BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                   const vulkan::DeviceInfo& device, const std::string& toolVersion,

@@ -3,6 +3,7 @@
 #include "bake_cache.hpp"
 #include "bake_error.hpp"
 #include "bake_kernels.hpp"
+#include "bake_manifest.hpp"
 #include "cache_error.hpp"
 #include "content_store.hpp"
 #include "device_caches.hpp"
@@ -79,15 +80,18 @@ std::vector<uint8_t> toRgba8(const std::vector<float>& rgba) {
     return bytes;
 }
 
+// Whether the bake writes the recipe's lobe table: where it writes a specular chain read through it.
+bool writesLobeTable(const BakePlan& plan) { return plan.specular && readsLobeTable(*plan.recipe); }
+
 struct Cached {
-    std::optional<BakedTexture> specular, lut, irradiance;
+    std::optional<BakedTexture> specular, lut, irradiance, lobeTable;
     std::optional<IrradianceSh> sh;
     std::optional<std::vector<shading::EnvironmentLight>> lights;
     std::optional<std::string> previewPng;
 
     bool complete(const BakePlan& plan) const {
         return (!plan.specular || specular) && (!plan.lut || lut) && irradiance && (!plan.recipe->lights || lights) &&
-               previewPng;
+               (!writesLobeTable(plan) || lobeTable) && previewPng;
     }
 };
 
@@ -99,6 +103,7 @@ Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& 
         return payload ? textureFromPayload(*payload) : std::nullopt;
     };
     if (plan.specular) cached.specular = texture(keys.specular);
+    if (writesLobeTable(plan)) cached.lobeTable = texture(keys.lobeTable);
     if (plan.lut && (cached.lut = texture(keys.lut))) cached.lut->format = lutFormatOf(settings); // the values are the device's
     if (const auto payload = store->get(keys.irradiance))
         if (auto entry = irradianceFromPayload(*payload)) {
@@ -200,6 +205,10 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
     }
     const auto rgba16 = image_io::PixelFormat::Rgba16Float;
     if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, results.specular, "specular", rgba16);
+    if (writesLobeTable(plan))
+        outputs.lobeTable = cached.lobeTable ? *cached.lobeTable
+                                             : BakedTexture{"lobe_table", image_io::PixelFormat::Rgba32Float, shading::kLobeTableSize,
+                                                            1, 1, lobeTableOf(plan.recipe->weighting)};
     if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, results.lut, "brdf_lut", lutFormatOf(settings));
     outputs.irradiance = cached.irradiance ? *cached.irradiance : download(context, results.irradiance.cube, "irradiance", rgba16);
     return outputs;
@@ -213,6 +222,7 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
     if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
     if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(outputs.sh, *outputs.irradiance), warnings);
     if (!cached.lights && plan.recipe->lights) store(cache, keys.lights, lightsPayload(outputs.lights), warnings);
+    if (!cached.lobeTable && outputs.lobeTable) store(cache, keys.lobeTable, texturePayload(*outputs.lobeTable), warnings);
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
 }
 
@@ -271,7 +281,7 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& i
     const auto schedule = shading::scheduleOf(*plan.recipe, uint32_t(plan.mips.size()), size);
     const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, schedule, lights);
     const float exposure = previewExposure(*cached.sh, lights);
-    BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, *cached.sh,
+    BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, cached.lobeTable, *cached.sh,
                          std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, device.name, {}, {}, 0};
     return outputs;
 }

@@ -23,6 +23,7 @@ namespace iblkit::bake {
 // is neither read nor written.
 struct BakedOutputs {
     std::optional<BakedTexture> specular, lut, irradiance; // those the plan needs
+    std::optional<BakedTexture> lobeTable;                 // where the plan's specular chain is read through it
     IrradianceSh sh; // of the environment without the lights the recipe took out
     std::vector<shading::EnvironmentLight> lights; // those the recipe took out
     uint32_t lightLevel = 0;                         // the first mip prefiltered without them (shading::lightLevelOf)

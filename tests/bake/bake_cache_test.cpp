@@ -49,7 +49,7 @@ TEST_F(BakeCache, ARepeatedBakeOpensNoDeviceAndWritesTheSameFiles) {
     EXPECT_TRUE(openedADevice(first));
     const auto second = bake(settings("second"));
     EXPECT_EQ(second.cache.misses, 0u);
-    EXPECT_EQ(second.cache.hits, 5u) << "specular, LUT, irradiance, the sky's lights, preview";
+    EXPECT_EQ(second.cache.hits, 6u) << "specular, LUT, irradiance, the sky's lights, the lobe table, preview";
     EXPECT_FALSE(openedADevice(second));
     for (const char* file : {"specular.ktx2", "brdf_lut.ktx2", "irradiance.ktx2", "preview.png"})
         EXPECT_EQ(fileText(scratch.path() / "first" / file), fileText(scratch.path() / "second" / file)) << file;
@@ -60,7 +60,7 @@ TEST_F(BakeCache, AChangedSettingRecomputesOnlyWhatDependsOnIt) {
     auto biggerLut = settings("second");
     biggerLut.lutSize = 32;
     const auto second = bake(biggerLut);
-    EXPECT_EQ(second.cache.hits, 3u) << "specular, irradiance and the lights";
+    EXPECT_EQ(second.cache.hits, 4u) << "specular, irradiance, the lights and the lobe table";
     EXPECT_EQ(second.cache.misses, 2u) << "the LUT, and the preview that shows it";
     EXPECT_EQ(fileText(scratch.path() / "first" / "specular.ktx2"), fileText(scratch.path() / "second" / "specular.ktx2"));
 }
@@ -71,7 +71,7 @@ TEST_F(BakeCache, OneLutServesEveryEnvironment) {
     auto grey = settings("grey");
     grey.environment = scratch.path() / "grey.exr";
     const auto summary = bake(grey);
-    EXPECT_EQ(summary.cache.hits, 1u) << "the LUT alone";
+    EXPECT_EQ(summary.cache.hits, 2u) << "the LUT and the lobe table, which depend on no environment";
     EXPECT_EQ(fileText(scratch.path() / "sky" / "brdf_lut.ktx2"), fileText(scratch.path() / "grey" / "brdf_lut.ktx2"));
 }
 
@@ -113,7 +113,7 @@ TEST_F(BakeCache, ADamagedEntryIsComputedAgain) {
     }
     const auto second = bake(settings("second"));
     EXPECT_EQ(second.cache.corrupt, 1u);
-    EXPECT_EQ(second.cache.hits, 4u) << "the LUT, irradiance, lights and preview entries are whole";
+    EXPECT_EQ(second.cache.hits, 5u) << "the LUT, irradiance, lights, lobe table and preview entries are whole";
     EXPECT_TRUE(openedADevice(second));
     EXPECT_EQ(fileText(scratch.path() / "first" / "specular.ktx2"), fileText(scratch.path() / "second" / "specular.ktx2"));
     EXPECT_EQ(bake(settings("third")).cache.misses, 0u) << "written anew";
