@@ -175,7 +175,7 @@ json lightsJson(const std::vector<shading::EnvironmentLight>& lights) {
 json specularJson(const ManifestFacts& facts) {
     json roughness = json::array();
     for (const auto& mip : facts.plan->mips) roughness.push_back(mip.roughness);
-    const auto schedule = shading::scheduleOf(*facts.plan->recipe, facts.mips, facts.size);
+    const auto& schedule = facts.plan->schedule;
     json specular = {{"file", "specular.ktx2"},
                      {"format", "R16G16B16A16_SFLOAT"},
                      {"size", facts.size},
@@ -265,7 +265,7 @@ bool readsLobeTable(const shading::ShadingRecipe& recipe) {
 
 json shadingJson(const ManifestFacts& facts) {
     const auto& recipe = *facts.plan->recipe;
-    const auto schedule = shading::scheduleOf(recipe, facts.mips, facts.size);
+    const auto& schedule = facts.plan->schedule;
     json roughness = json::array();
     for (const auto& mip : facts.plan->mips) roughness.push_back(mip.roughness);
     const auto& lights = *facts.lights;

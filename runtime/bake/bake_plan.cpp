@@ -176,6 +176,7 @@ BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::option
     }
     plan.roughness = use.roughness;
     plan.recipe = &resolvedRecipe(settings);
+    plan.schedule = shading::scheduleOf(*plan.recipe, resolvedMips(settings, size), size);
     const auto outputs = outputsFor(use);
     plan.specular = outputs.specular;
     plan.lut = outputs.lut;

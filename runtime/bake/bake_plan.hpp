@@ -36,6 +36,7 @@ struct BakePlan {
     scene::ValueRange roughness;          // every lit material's, clearcoats included
     bool specular = true, irradiance = true, lut = true;
     const shading::ShadingRecipe* recipe = nullptr; // how the maps are made and read; its lights, when it takes them out
+    shading::MipSchedule schedule;                  // the recipe's, for the bake's chain: each mip's roughness and lod
     std::vector<SpecularMipPlan> mips;
     uint32_t lutFirstRow = 0, lutLastRow = 0; // the rows bilinear reads of `roughness` touch
     std::vector<std::string> kernels;     // shader names, with the defines that make their permutation

@@ -166,8 +166,7 @@ DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernel
     };
     const auto& recipe = *plan.recipe;
     auto taken = lightsOf(context, kernels, plan, cached, sourceCube, progress);
-    const auto schedule = shading::scheduleOf(recipe, uint32_t(plan.mips.size()), size);
-    const uint32_t lightLevel = shading::lightLevelOf(recipe, schedule, taken.lights);
+    const uint32_t lightLevel = shading::lightLevelOf(recipe, plan.schedule, taken.lights);
     const auto residualCube = [&]() -> vulkan::Image& { return taken.residual ? *taken.residual : sourceCube(); };
     auto specular = cached.specular ? uploaded(context, *cached.specular, "R32G32B32A32_SFLOAT")
                                     : prefilteredSpecular(context, kernels, plan, sourceCube(), taken, lightLevel, progress);
@@ -194,12 +193,11 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
         outputs.previewPng = *cached.previewPng;
     } else {
         const auto& recipe = *plan.recipe;
-        const auto schedule = shading::scheduleOf(recipe, results.specular.desc().mips, results.specular.desc().width);
         auto lobeTable = lobeTableImage(context, recipe.weighting);
         const auto lights = environmentLightBuffer(context, results.lights);
         const auto preview = renderPreview(context, kernels.preview(),
                                            {results.specular, results.irradiance.cube, results.lut, lobeTable, lights,
-                                            recipeParameters(recipe, schedule, results.lights.size(), results.lightLevel)},
+                                            recipeParameters(recipe, plan.schedule, results.lights.size(), results.lightLevel)},
                                            outputs.previewExposure, progress);
         outputs.previewPng = image_io::encodePng(preview.width, preview.height, toRgba8(preview.rgba));
     }
@@ -278,8 +276,7 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& i
     progress.end();
     if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
     auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
-    const auto schedule = shading::scheduleOf(*plan.recipe, uint32_t(plan.mips.size()), size);
-    const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, schedule, lights);
+    const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, plan.schedule, lights);
     const float exposure = previewExposure(*cached.sh, lights);
     BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, cached.lobeTable, *cached.sh,
                          std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, device.name, {}, {}, 0};

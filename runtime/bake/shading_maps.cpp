@@ -7,17 +7,13 @@
 #include <mutex>
 
 namespace iblkit::bake {
-namespace {
 
-// The source's mip 0 alone, as floats (the cube is RGBA32F).
 std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube) {
     const auto bytes = cube.downloadBytes(context);
     std::vector<float> values(size_t(6) * cube.desc().width * cube.desc().width * 4);
     std::memcpy(values.data(), bytes.data() + cube.valueOffset(0, 0) * sizeof(float), values.size() * sizeof(float));
     return values;
 }
-
-} // namespace
 
 TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress) {

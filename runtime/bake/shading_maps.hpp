@@ -12,6 +12,9 @@
 
 namespace iblkit::bake {
 
+// Mip 0 of an RGBA32F cube, as floats (face, row, column, channel).
+std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube);
+
 // What a recipe with lights makes of the source cube: the lights, and the environment without
 // them (RGBA32F with its mips), which the maps are prefiltered from.
 struct TakenOutLights {

@@ -1,6 +1,7 @@
 #include "render/irradiance_error.hpp"
 
 #include "measurements.hpp"
+#include "shading_maps.hpp"
 #include "reference_cache.hpp"
 #include "reference_irradiance.hpp"
 #include "shading/disk_light.hpp"
@@ -12,9 +13,7 @@ namespace iblkit::render {
 std::vector<glm::dvec3> exactIrradiance(const vulkan::VulkanContext& context, const vulkan::Image& source, uint32_t size,
                                         const std::filesystem::path& cache) {
     const uint32_t sourceSize = source.desc().width;
-    const auto all = source.download(context);
-    const auto first = all.begin() + std::ptrdiff_t(source.valueOffset(0, 0));
-    const std::vector<float> texels(first, first + std::ptrdiff_t(size_t(6) * sourceSize * sourceSize * 4));
+    const auto texels = bake::mipZero(context, source);
     const auto key = bench::ReferenceCache::key(fmt::format("exact irradiance v2 (Lambert's clipped texels) source {} output {}", sourceSize, size),
                                                 std::as_bytes(std::span(texels)));
     return bench::unflatten(bench::ReferenceCache(cache).getOrCompute(key, size_t(6) * size * size * 3, [&] {
