@@ -34,340 +34,340 @@ void main()
     uvec3 param = gl_GlobalInvocationID;
     do
     {
-        uvec2 _1685 = uvec2(0u);
-        uvec2 _1686 = uvec2(imageSize(Preview));
-        _1685.x = _1686.x;
-        _1685.y = _1686.y;
-        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _1685)))
+        uvec2 _1687 = uvec2(0u);
+        uvec2 _1688 = uvec2(imageSize(Preview));
+        _1687.x = _1688.x;
+        _1687.y = _1688.y;
+        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _1687)))
         {
             break;
         }
-        uint _1714 = _1238.Rows * _1238.CellSize;
-        vec3 _3616;
+        uint _1716 = _1238.Rows * _1238.CellSize;
+        vec3 _3618;
         if (param.x >= (_1238.Columns * _1238.CellSize))
         {
-            _3616 = vec3(0.0199999995529651641845703125);
+            _3618 = vec3(0.0199999995529651641845703125);
         }
         else
         {
-            vec3 _3617;
-            if (param.y < _1714)
+            vec3 _3619;
+            if (param.y < _1716)
             {
-                vec3 _3615;
+                vec3 _3617;
                 do
                 {
-                    uvec2 _1757 = gl_GlobalInvocationID.xy / uvec2(_1238.CellSize);
-                    vec2 _1758 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1238.CellSize)) + vec2(0.5)) / vec2(float(_1238.CellSize))) * 2.0) - vec2(1.0);
-                    _1758.y = -_1758.y;
-                    float _1830 = dot(_1758, _1758);
-                    if ((_1830 * 1.2345678806304931640625) >= 1.0)
+                    uvec2 _1759 = gl_GlobalInvocationID.xy / uvec2(_1238.CellSize);
+                    vec2 _1760 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1238.CellSize)) + vec2(0.5)) / vec2(float(_1238.CellSize))) * 2.0) - vec2(1.0);
+                    _1760.y = -_1760.y;
+                    float _1832 = dot(_1760, _1760);
+                    if ((_1832 * 1.2345678806304931640625) >= 1.0)
                     {
-                        _3615 = vec3(0.0199999995529651641845703125);
+                        _3617 = vec3(0.0199999995529651641845703125);
                         break;
                     }
-                    float _1922 = (_1238.Columns > 1u) ? (float(_1757.x) / float(_1238.Columns - 1u)) : 0.0;
-                    float _1933 = (_1238.Rows > 1u) ? (float(_1757.y) / float(_1238.Rows - 1u)) : 0.0;
-                    float _1851 = sqrt(fma(-_1830, 1.2345678806304931640625, 1.0));
-                    vec3 _1854 = vec3(_1758 * vec2(1.111111164093017578125), _1851);
-                    vec3 _3596;
-                    float _3597;
+                    float _1924 = (_1238.Columns > 1u) ? (float(_1759.x) / float(_1238.Columns - 1u)) : 0.0;
+                    float _1935 = (_1238.Rows > 1u) ? (float(_1759.y) / float(_1238.Rows - 1u)) : 0.0;
+                    float _1853 = sqrt(fma(-_1832, 1.2345678806304931640625, 1.0));
+                    vec3 _1856 = vec3(_1760 * vec2(1.111111164093017578125), _1853);
+                    vec3 _3598;
+                    float _3599;
                     do
                     {
-                        vec3 _2102 = reflect(vec3(-0.0, -0.0, -1.0), _1854);
-                        vec4 _2048 = textureLod(LobeTable_LinearClamp, vec2(clamp(_1851, 0.0, 1.0), _1922), 0.0);
-                        vec3 _3585;
+                        vec3 _2104 = reflect(vec3(-0.0, -0.0, -1.0), _1856);
+                        vec4 _2050 = textureLod(LobeTable_LinearClamp, vec2(clamp(_1853, 0.0, 1.0), _1924), 0.0);
+                        vec3 _3587;
                         do
                         {
-                            float _2224 = _1922 * _1922;
+                            float _2226 = _1924 * _1924;
                             if (_1238.Direction == 1u)
                             {
-                                float _2230 = clamp(fma(-_1922, _1922, 1.0), 0.0, 1.0);
-                                _3585 = normalize(mix(_1854, _2102, vec3(_2230 * fma(_1922, _1922, sqrt(_2230)))));
+                                float _2232 = clamp(fma(-_1924, _1924, 1.0), 0.0, 1.0);
+                                _3587 = normalize(mix(_1856, _2104, vec3(_2232 * fma(_1924, _1924, sqrt(_2232)))));
                                 break;
                             }
                             if (_1238.Direction == 2u)
                             {
-                                _3585 = normalize(mix(_2102, _1854, vec3(_2224 * _2224)));
+                                _3587 = normalize(mix(_2104, _1856, vec3(_2226 * _2226)));
                                 break;
                             }
                             if (_1238.Direction == 3u)
                             {
-                                vec3 _3584;
+                                vec3 _3586;
                                 do
                                 {
-                                    float _2279 = acos(clamp(dot(_1854, _2102), -1.0, 1.0));
-                                    if (_2279 < 9.9999997473787516355514526367188e-05)
+                                    float _2281 = acos(clamp(dot(_1856, _2104), -1.0, 1.0));
+                                    if (_2281 < 9.9999997473787516355514526367188e-05)
                                     {
-                                        _3584 = _2102;
+                                        _3586 = _2104;
                                         break;
                                     }
-                                    _3584 = ((_1854 * sin((1.0 - _2048.x) * _2279)) + (_2102 * sin(_2048.x * _2279))) / vec3(sin(_2279));
+                                    _3586 = ((_1856 * sin((1.0 - _2050.x) * _2281)) + (_2104 * sin(_2050.x * _2281))) / vec3(sin(_2281));
                                     break;
                                 } while(false);
-                                _3585 = _3584;
+                                _3587 = _3586;
                                 break;
                             }
-                            _3585 = _2102;
+                            _3587 = _2104;
                             break;
                         } while(false);
                         if (_1238.Lookup == 0u)
                         {
-                            float _3594;
+                            float _3596;
                             do
                             {
-                                float _2344 = float(_1238.SpecularMips - 1u);
-                                float _2346 = clamp(_1922, 0.0, 1.0);
+                                float _2346 = float(_1238.SpecularMips - 1u);
+                                float _2348 = clamp(_1924, 0.0, 1.0);
                                 if (_1238.LodMapping == 1u)
                                 {
-                                    _3594 = (_2346 * (2.0 - _2346)) * _2344;
+                                    _3596 = (_2348 * (2.0 - _2348)) * _2346;
                                     break;
                                 }
                                 if (_1238.LodMapping == 2u)
                                 {
-                                    _3594 = pow(_2346, _1238.LodParameter) * _2344;
+                                    _3596 = pow(_2348, _1238.LodParameter) * _2346;
                                     break;
                                 }
                                 if (_1238.LodMapping == 3u)
                                 {
-                                    _3594 = (_2346 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2346 * _2346) * float(_1238.SpecularSize)), 0.0, _2344) : 0.0;
+                                    _3596 = (_2348 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2348 * _2348) * float(_1238.SpecularSize)), 0.0, _2346) : 0.0;
                                     break;
                                 }
                                 if (((_1238.LodMapping == 4u) && (_1238.SpecularMips >= 3u)) && (float(_1238.SpecularSize) > _1238.LodParameter))
                                 {
-                                    float _2405 = float(_1238.SpecularSize);
-                                    _3594 = (_2346 > 0.0) ? clamp(fma((_2344 - 1.0) / log2(_2405 / _1238.LodParameter), log2((_2346 * _2346) * _2405) - log2(_2405), _2344), 0.0, _2344) : 0.0;
+                                    float _2407 = float(_1238.SpecularSize);
+                                    _3596 = (_2348 > 0.0) ? clamp(fma((_2346 - 1.0) / log2(_2407 / _1238.LodParameter), log2((_2348 * _2348) * _2407) - log2(_2407), _2346), 0.0, _2346) : 0.0;
                                     break;
                                 }
-                                _3594 = _2346 * _2344;
+                                _3596 = _2348 * _2346;
                                 break;
                             } while(false);
-                            _3597 = (_1238.LightCount > 0u) ? clamp((_3594 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                            _3596 = textureLod(Specular_LinearClamp, _3585, _3594).xyz * 1.0;
+                            _3599 = (_1238.LightCount > 0u) ? clamp((_3596 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                            _3598 = textureLod(Specular_LinearClamp, _3587, _3596).xyz * 1.0;
                             break;
                         }
                         if (_1238.Lookup == 1u)
                         {
-                            float _3592;
+                            float _3594;
                             do
                             {
-                                float _2489 = float(_1238.SpecularMips - 1u);
-                                float _2491 = clamp(_2048.y, 0.0, 1.0);
+                                float _2491 = float(_1238.SpecularMips - 1u);
+                                float _2493 = clamp(_2050.y, 0.0, 1.0);
                                 if (_1238.LodMapping == 1u)
                                 {
-                                    _3592 = (_2491 * (2.0 - _2491)) * _2489;
+                                    _3594 = (_2493 * (2.0 - _2493)) * _2491;
                                     break;
                                 }
                                 if (_1238.LodMapping == 2u)
                                 {
-                                    _3592 = pow(_2491, _1238.LodParameter) * _2489;
+                                    _3594 = pow(_2493, _1238.LodParameter) * _2491;
                                     break;
                                 }
                                 if (_1238.LodMapping == 3u)
                                 {
-                                    _3592 = (_2491 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2491 * _2491) * float(_1238.SpecularSize)), 0.0, _2489) : 0.0;
+                                    _3594 = (_2493 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2493 * _2493) * float(_1238.SpecularSize)), 0.0, _2491) : 0.0;
                                     break;
                                 }
                                 if (((_1238.LodMapping == 4u) && (_1238.SpecularMips >= 3u)) && (float(_1238.SpecularSize) > _1238.LodParameter))
                                 {
-                                    float _2550 = float(_1238.SpecularSize);
-                                    _3592 = (_2491 > 0.0) ? clamp(fma((_2489 - 1.0) / log2(_2550 / _1238.LodParameter), log2((_2491 * _2491) * _2550) - log2(_2550), _2489), 0.0, _2489) : 0.0;
+                                    float _2552 = float(_1238.SpecularSize);
+                                    _3594 = (_2493 > 0.0) ? clamp(fma((_2491 - 1.0) / log2(_2552 / _1238.LodParameter), log2((_2493 * _2493) * _2552) - log2(_2552), _2491), 0.0, _2491) : 0.0;
                                     break;
                                 }
-                                _3592 = _2491 * _2489;
+                                _3594 = _2493 * _2491;
                                 break;
                             } while(false);
-                            _3597 = (_1238.LightCount > 0u) ? clamp((_3592 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                            _3596 = textureLod(Specular_LinearClamp, _3585, _3592).xyz * 1.0;
+                            _3599 = (_1238.LightCount > 0u) ? clamp((_3594 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                            _3598 = textureLod(Specular_LinearClamp, _3587, _3594).xyz * 1.0;
                             break;
                         }
-                        vec3 _2145 = cross(_1854, vec3(0.0, 0.0, 1.0));
-                        float _2147 = length(_2145);
-                        vec3 _2157 = mix(vec3(0.0), cross(_2145 / vec3(_2147), _3585), bvec3(_2147 > 9.9999999747524270787835121154785e-07));
-                        float _3588;
-                        do
-                        {
-                            float _2634 = float(_1238.SpecularMips - 1u);
-                            float _2636 = clamp(_2048.z, 0.0, 1.0);
-                            if (_1238.LodMapping == 1u)
-                            {
-                                _3588 = (_2636 * (2.0 - _2636)) * _2634;
-                                break;
-                            }
-                            if (_1238.LodMapping == 2u)
-                            {
-                                _3588 = pow(_2636, _1238.LodParameter) * _2634;
-                                break;
-                            }
-                            if (_1238.LodMapping == 3u)
-                            {
-                                _3588 = (_2636 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2636 * _2636) * float(_1238.SpecularSize)), 0.0, _2634) : 0.0;
-                                break;
-                            }
-                            if (((_1238.LodMapping == 4u) && (_1238.SpecularMips >= 3u)) && (float(_1238.SpecularSize) > _1238.LodParameter))
-                            {
-                                float _2695 = float(_1238.SpecularSize);
-                                _3588 = (_2636 > 0.0) ? clamp(fma((_2634 - 1.0) / log2(_2695 / _1238.LodParameter), log2((_2636 * _2636) * _2695) - log2(_2695), _2634), 0.0, _2634) : 0.0;
-                                break;
-                            }
-                            _3588 = _2636 * _2634;
-                            break;
-                        } while(false);
+                        vec3 _2147 = cross(_1856, vec3(0.0, 0.0, 1.0));
+                        float _2149 = length(_2147);
+                        vec3 _2159 = mix(vec3(0.0), cross(_2147 / vec3(_2149), _3587), bvec3(_2149 > 9.9999999747524270787835121154785e-07));
                         float _3590;
                         do
                         {
-                            float _2779 = float(_1238.SpecularMips - 1u);
-                            float _2781 = clamp(_2048.z, 0.0, 1.0);
+                            float _2636 = float(_1238.SpecularMips - 1u);
+                            float _2638 = clamp(_2050.z, 0.0, 1.0);
                             if (_1238.LodMapping == 1u)
                             {
-                                _3590 = (_2781 * (2.0 - _2781)) * _2779;
+                                _3590 = (_2638 * (2.0 - _2638)) * _2636;
                                 break;
                             }
                             if (_1238.LodMapping == 2u)
                             {
-                                _3590 = pow(_2781, _1238.LodParameter) * _2779;
+                                _3590 = pow(_2638, _1238.LodParameter) * _2636;
                                 break;
                             }
                             if (_1238.LodMapping == 3u)
                             {
-                                _3590 = (_2781 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2781 * _2781) * float(_1238.SpecularSize)), 0.0, _2779) : 0.0;
+                                _3590 = (_2638 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2638 * _2638) * float(_1238.SpecularSize)), 0.0, _2636) : 0.0;
                                 break;
                             }
                             if (((_1238.LodMapping == 4u) && (_1238.SpecularMips >= 3u)) && (float(_1238.SpecularSize) > _1238.LodParameter))
                             {
-                                float _2840 = float(_1238.SpecularSize);
-                                _3590 = (_2781 > 0.0) ? clamp(fma((_2779 - 1.0) / log2(_2840 / _1238.LodParameter), log2((_2781 * _2781) * _2840) - log2(_2840), _2779), 0.0, _2779) : 0.0;
+                                float _2697 = float(_1238.SpecularSize);
+                                _3590 = (_2638 > 0.0) ? clamp(fma((_2636 - 1.0) / log2(_2697 / _1238.LodParameter), log2((_2638 * _2638) * _2697) - log2(_2697), _2636), 0.0, _2636) : 0.0;
                                 break;
                             }
-                            _3590 = _2781 * _2779;
+                            _3590 = _2638 * _2636;
                             break;
                         } while(false);
-                        _3597 = fma(0.5, (_1238.LightCount > 0u) ? clamp((_3588 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1238.LightCount > 0u) ? clamp((_3590 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
-                        _3596 = (textureLod(Specular_LinearClamp, normalize((_3585 * cos(_2048.w)) + (_2157 * sin(_2048.w))), _3588).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_3585 * cos(_2048.w)) - (_2157 * sin(_2048.w))), _3590).xyz * 0.5);
+                        float _3592;
+                        do
+                        {
+                            float _2781 = float(_1238.SpecularMips - 1u);
+                            float _2783 = clamp(_2050.z, 0.0, 1.0);
+                            if (_1238.LodMapping == 1u)
+                            {
+                                _3592 = (_2783 * (2.0 - _2783)) * _2781;
+                                break;
+                            }
+                            if (_1238.LodMapping == 2u)
+                            {
+                                _3592 = pow(_2783, _1238.LodParameter) * _2781;
+                                break;
+                            }
+                            if (_1238.LodMapping == 3u)
+                            {
+                                _3592 = (_2783 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2783 * _2783) * float(_1238.SpecularSize)), 0.0, _2781) : 0.0;
+                                break;
+                            }
+                            if (((_1238.LodMapping == 4u) && (_1238.SpecularMips >= 3u)) && (float(_1238.SpecularSize) > _1238.LodParameter))
+                            {
+                                float _2842 = float(_1238.SpecularSize);
+                                _3592 = (_2783 > 0.0) ? clamp(fma((_2781 - 1.0) / log2(_2842 / _1238.LodParameter), log2((_2783 * _2783) * _2842) - log2(_2842), _2781), 0.0, _2781) : 0.0;
+                                break;
+                            }
+                            _3592 = _2783 * _2781;
+                            break;
+                        } while(false);
+                        _3599 = fma(0.5, (_1238.LightCount > 0u) ? clamp((_3590 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1238.LightCount > 0u) ? clamp((_3592 - float(_1238.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
+                        _3598 = (textureLod(Specular_LinearClamp, normalize((_3587 * cos(_2050.w)) + (_2159 * sin(_2050.w))), _3590).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_3587 * cos(_2050.w)) - (_2159 * sin(_2050.w))), _3592).xyz * 0.5);
                         break;
                     } while(false);
-                    vec2 _1992 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1851, 0.0, 1.0), _1922), 0.0).xy);
-                    vec3 _1869 = mix(vec3(0.039999999105930328369140625), vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125), vec3(_1933));
-                    vec2 _2886 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1851, 0.0, 1.0), _1922), 0.0).xy);
-                    vec3 _2909 = (_1869 * _2886.x) + vec3(_2886.y);
-                    vec3 _3599;
-                    _3599 = fma(_3596, (mix(vec3(0.039999999105930328369140625), vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125), vec3(_1933)) * _1992.x) + vec3(_1992.y), (textureLod(IrradianceMap_LinearClamp, _1854, 0.0).xyz * vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125)) * (1.0 - _1933));
-                    vec3 _1904;
-                    for (uint _3598 = 0u; _3598 < _1238.LightCount; _3599 = _1904, _3598++)
+                    vec2 _1994 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1853, 0.0, 1.0), _1924), 0.0).xy);
+                    vec3 _1871 = mix(vec3(0.039999999105930328369140625), vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125), vec3(_1935));
+                    vec2 _2888 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1853, 0.0, 1.0), _1924), 0.0).xy);
+                    vec3 _2911 = (_1871 * _2888.x) + vec3(_2888.y);
+                    vec3 _3601;
+                    _3601 = fma(_3598, (mix(vec3(0.039999999105930328369140625), vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125), vec3(_1935)) * _1994.x) + vec3(_1994.y), (textureLod(IrradianceMap_LinearClamp, _1856, 0.0).xyz * vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125)) * (1.0 - _1935));
+                    vec3 _1906;
+                    for (uint _3600 = 0u; _3600 < _1238.LightCount; _3601 = _1906, _3600++)
                     {
-                        uint _1888 = 2u * _3598;
-                        uint _1891 = (2u * _3598) + 1u;
-                        vec4 _1798 = Lights_1._data[_1888];
-                        vec4 _1799 = Lights_1._data[_1891];
-                        vec3 _2910 = Lights_1._data[_1888].xyz;
-                        vec3 _2950 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_2910.z) < 0.999000012874603271484375)), Lights_1._data[_1888].xyz));
-                        vec3 _2953 = cross(Lights_1._data[_1888].xyz, _2950);
-                        float _2956 = tan(_1798.w);
-                        vec3 _3601;
-                        _3601 = vec3(0.0);
-                        vec3 _3618;
-                        for (uint _3600 = 0u; _3600 < 19u; _3601 = _3618, _3600++)
+                        uint _1890 = 2u * _3600;
+                        uint _1893 = (2u * _3600) + 1u;
+                        vec4 _1800 = Lights_1._data[_1890];
+                        vec4 _1801 = Lights_1._data[_1893];
+                        vec3 _2912 = Lights_1._data[_1890].xyz;
+                        vec3 _2952 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_2912.z) < 0.999000012874603271484375)), Lights_1._data[_1890].xyz));
+                        vec3 _2955 = cross(Lights_1._data[_1890].xyz, _2952);
+                        float _2958 = tan(_1800.w);
+                        vec3 _3603;
+                        _3603 = vec3(0.0);
+                        vec3 _3620;
+                        for (uint _3602 = 0u; _3602 < 19u; _3603 = _3620, _3602++)
                         {
-                            vec2 _3608;
+                            vec2 _3610;
                             do
                             {
-                                if (_3600 == 0u)
+                                if (_3602 == 0u)
                                 {
-                                    _3608 = vec2(0.0);
+                                    _3610 = vec2(0.0);
                                     break;
                                 }
-                                bool _3064 = _3600 <= 6u;
-                                float _3081 = _3064 ? (float(_3600 - 1u) * 1.0471975803375244140625) : ((float(_3600 - 7u) + 0.5) * 0.52359879016876220703125);
-                                _3608 = vec2(cos(_3081), sin(_3081)) * (_3064 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
+                                bool _3066 = _3602 <= 6u;
+                                float _3083 = _3066 ? (float(_3602 - 1u) * 1.0471975803375244140625) : ((float(_3602 - 7u) + 0.5) * 0.52359879016876220703125);
+                                _3610 = vec2(cos(_3083), sin(_3083)) * (_3066 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
                                 break;
                             } while(false);
-                            vec2 _2917 = _3608 * _2956;
-                            vec3 _2977 = normalize((Lights_1._data[_1888].xyz + (_2950 * _2917.x)) + (_2953 * _2917.y));
-                            if (dot(_1854, _2977) > 0.0)
+                            vec2 _2919 = _3610 * _2958;
+                            vec3 _2979 = normalize((Lights_1._data[_1890].xyz + (_2952 * _2919.x)) + (_2955 * _2919.y));
+                            if (dot(_1856, _2979) > 0.0)
                             {
-                                vec3 _3609;
+                                vec3 _3611;
                                 do
                                 {
-                                    float _3111 = dot(_1854, _2977);
-                                    float _3115 = clamp(_1851, 0.0, 1.0);
-                                    if ((_3111 <= 0.0) || (_3115 <= 0.0))
+                                    float _3113 = dot(_1856, _2979);
+                                    float _3117 = clamp(_1853, 0.0, 1.0);
+                                    if ((_3113 <= 0.0) || (_3117 <= 0.0))
                                     {
-                                        _3609 = vec3(0.0);
+                                        _3611 = vec3(0.0);
                                         break;
                                     }
-                                    vec3 _3126 = normalize(_2977 + vec3(0.0, 0.0, 1.0));
-                                    float _3200 = _1922 * _1922;
-                                    float _3221 = _1922 * _1922;
-                                    float _3143 = clamp(dot(_1854, _3126), 0.0, 1.0);
-                                    float _3242 = _1922 * _1922;
-                                    float _3254 = fma(_3143 * _3143, fma(_3242, _3242, -1.0), 1.0);
-                                    _3609 = (_1869 + ((vec3(1.0) - _1869) * pow(clamp(1.0 - clamp(_3126.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_3111 / fma(_3111, fma(-_3200, 0.5, 1.0), _3200 * 0.5)) * (_3115 / fma(_3115, fma(-_3221, 0.5, 1.0), _3221 * 0.5))) * ((_3242 * _3242) / ((3.1415927410125732421875 * _3254) * _3254))) / (4.0 * _3115));
+                                    vec3 _3128 = normalize(_2979 + vec3(0.0, 0.0, 1.0));
+                                    float _3202 = _1924 * _1924;
+                                    float _3223 = _1924 * _1924;
+                                    float _3145 = clamp(dot(_1856, _3128), 0.0, 1.0);
+                                    float _3244 = _1924 * _1924;
+                                    float _3256 = fma(_3145 * _3145, fma(_3244, _3244, -1.0), 1.0);
+                                    _3611 = (_1871 + ((vec3(1.0) - _1871) * pow(clamp(1.0 - clamp(_3128.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_3113 / fma(_3113, fma(-_3202, 0.5, 1.0), _3202 * 0.5)) * (_3117 / fma(_3117, fma(-_3223, 0.5, 1.0), _3223 * 0.5))) * ((_3244 * _3244) / ((3.1415927410125732421875 * _3256) * _3256))) / (4.0 * _3117));
                                     break;
                                 } while(false);
-                                _3618 = _3601 + _3609;
+                                _3620 = _3603 + _3611;
                             }
                             else
                             {
-                                _3618 = _3601;
+                                _3620 = _3603;
                             }
                         }
-                        float _3005 = clamp((((2.0 * _1922) * _1922) / max(_1798.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
-                        vec4 _2932 = Lights_1._data[_1888];
-                        float _3282 = 0.5 * _2932.w;
-                        float _3284 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _1854), Lights_1._data[_1888].xyz), -1.0, 1.0));
-                        float _3288 = max(_1922 * _1922, 1.0000000116860974230803549289703e-07);
-                        float _3302 = (_3282 * _3282) / (_3288 * _3288);
-                        float _3309 = (_3284 * _3284) / (_3288 * _3288);
-                        float _3313 = (_3302 + 1.0) - _3309;
-                        float _3029 = sin(_1798.w);
-                        float _3033 = dot(_1854, Lights_1._data[_1888].xyz);
-                        float _3036 = _3029 * _3029;
-                        float _3602;
+                        float _3007 = clamp((((2.0 * _1924) * _1924) / max(_1800.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
+                        vec4 _2934 = Lights_1._data[_1890];
+                        float _3284 = 0.5 * _2934.w;
+                        float _3286 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _1856), Lights_1._data[_1890].xyz), -1.0, 1.0));
+                        float _3290 = max(_1924 * _1924, 1.0000000116860974230803549289703e-07);
+                        float _3304 = (_3284 * _3284) / (_3290 * _3290);
+                        float _3311 = (_3286 * _3286) / (_3290 * _3290);
+                        float _3315 = (_3304 + 1.0) - _3311;
+                        float _3031 = sin(_1800.w);
+                        float _3035 = dot(_1856, Lights_1._data[_1890].xyz);
+                        float _3038 = _3031 * _3031;
+                        float _3604;
                         do
                         {
-                            if (((_3033 * _3033) > _3036) || (_3036 <= 0.0))
+                            if (((_3035 * _3035) > _3038) || (_3038 <= 0.0))
                             {
-                                _3602 = (3.1415927410125732421875 * _3036) * clamp(_3033, 0.0, 1.0);
+                                _3604 = (3.1415927410125732421875 * _3038) * clamp(_3035, 0.0, 1.0);
                                 break;
                             }
-                            float _3358 = sqrt(clamp(fma(-_3033, _3033, 1.0), 0.0, 1.0));
-                            float _3362 = sqrt((1.0 / _3036) - 1.0);
-                            float _3368 = (-_3362) * (_3033 / _3358);
-                            float _3376 = _3358 * sqrt(clamp(fma(-_3368, _3368, 1.0), 0.0, 1.0));
-                            _3602 = max(fma(fma(_3033, acos(clamp(_3368, -1.0, 1.0)), -(_3362 * _3376)), _3036, atan(_3376 / _3362)), 0.0);
+                            float _3360 = sqrt(clamp(fma(-_3035, _3035, 1.0), 0.0, 1.0));
+                            float _3364 = sqrt((1.0 / _3038) - 1.0);
+                            float _3370 = (-_3364) * (_3035 / _3360);
+                            float _3378 = _3360 * sqrt(clamp(fma(-_3370, _3370, 1.0), 0.0, 1.0));
+                            _3604 = max(fma(fma(_3035, acos(clamp(_3370, -1.0, 1.0)), -(_3364 * _3378)), _3038, atan(_3378 / _3364)), 0.0);
                             break;
                         } while(false);
-                        _1904 = fma(((mix(mix(vec3(0.0), (_2909 * clamp(0.5 + (((_3302 - 1.0) - _3309) / (2.0 * sqrt(fma(_3313, _3313, 4.0 * _3309)))), 0.0, 1.0)) / vec3(_1799.w), bvec3(_3005 < 1.0)), _3601 * 0.052631579339504241943359375, vec3(_3005)) * _3597) * _1799.w) + ((vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125) * (1.0 - _1933)) * (_3602 * 0.3183098733425140380859375)), Lights_1._data[_1891].xyz, _3599);
+                        _1906 = fma(((mix(mix(vec3(0.0), (_2911 * clamp(0.5 + (((_3304 - 1.0) - _3311) / (2.0 * sqrt(fma(_3315, _3315, 4.0 * _3311)))), 0.0, 1.0)) / vec3(_1801.w), bvec3(_3007 < 1.0)), _3603 * 0.052631579339504241943359375, vec3(_3007)) * _3599) * _1801.w) + ((vec3(1.0, 0.765999972820281982421875, 0.3359999954700469970703125) * (1.0 - _1935)) * (_3604 * 0.3183098733425140380859375)), Lights_1._data[_1893].xyz, _3601);
                     }
-                    _3615 = _3599;
+                    _3617 = _3601;
                     break;
                 } while(false);
-                _3617 = _3615;
+                _3619 = _3617;
             }
             else
             {
-                uvec2 _1690 = uvec2(param.x, param.y - _1714);
-                vec3 _3583;
+                uvec2 _1692 = uvec2(param.x, param.y - _1716);
+                vec3 _3585;
                 do
                 {
-                    uint _3408 = _1690.x / _1238.StripPanelWidth;
-                    if (_3408 >= _1238.SpecularMips)
+                    uint _3410 = _1692.x / _1238.StripPanelWidth;
+                    if (_3410 >= _1238.SpecularMips)
                     {
-                        _3583 = vec3(0.0199999995529651641845703125);
+                        _3585 = vec3(0.0199999995529651641845703125);
                         break;
                     }
-                    vec2 _3400 = (vec2(float(_1690.x % _1238.StripPanelWidth), float(_1690.y)) + vec2(0.5)) / vec2(float(_1238.StripPanelWidth), float(_1238.StripPanelWidth / 2u));
-                    float _3455 = (_3400.x - 0.5) * 6.283185482025146484375;
-                    float _3458 = _3400.y * 3.1415927410125732421875;
-                    _3583 = textureLod(Specular_LinearClamp, vec3(sin(_3458) * sin(_3455), cos(_3458), (-sin(_3458)) * cos(_3455)), float(_3408)).xyz;
+                    vec2 _3402 = (vec2(float(_1692.x % _1238.StripPanelWidth), float(_1692.y)) + vec2(0.5)) / vec2(float(_1238.StripPanelWidth), float(_1238.StripPanelWidth / 2u));
+                    float _3457 = (_3402.x - 0.5) * 6.283185482025146484375;
+                    float _3460 = _3402.y * 3.1415927410125732421875;
+                    _3585 = textureLod(Specular_LinearClamp, vec3(sin(_3460) * sin(_3457), cos(_3460), (-sin(_3460)) * cos(_3457)), float(_3410)).xyz;
                     break;
                 } while(false);
-                _3617 = _3583;
+                _3619 = _3585;
             }
-            _3616 = _3617;
+            _3618 = _3619;
         }
-        vec3 _3481 = _3616 * _1238.Exposure;
-        vec3 _3499 = clamp((_3481 * ((_3481 * 2.5099999904632568359375) + vec3(0.02999999932944774627685546875))) / fma(_3481, (_3481 * 2.4300000667572021484375) + vec3(0.589999973773956298828125), vec3(0.14000000059604644775390625)), vec3(0.0), vec3(1.0));
-        imageStore(Preview, ivec2(gl_GlobalInvocationID.xy), vec4(mix((pow(_3499, vec3(0.4166666567325592041015625)) * 1.05499994754791259765625) - vec3(0.054999999701976776123046875), _3499 * 12.9200000762939453125, step(_3499, vec3(0.003130800090730190277099609375))), 1.0));
+        vec3 _3483 = _3618 * _1238.Exposure;
+        vec3 _3501 = clamp((_3483 * ((_3483 * 2.5099999904632568359375) + vec3(0.02999999932944774627685546875))) / fma(_3483, (_3483 * 2.4300000667572021484375) + vec3(0.589999973773956298828125), vec3(0.14000000059604644775390625)), vec3(0.0), vec3(1.0));
+        imageStore(Preview, ivec2(gl_GlobalInvocationID.xy), vec4(mix((pow(_3501, vec3(0.4166666567325592041015625)) * 1.05499994754791259765625) - vec3(0.054999999701976776123046875), _3501 * 12.9200000762939453125, step(_3501, vec3(0.003130800090730190277099609375))), 1.0));
         break;
     } while(false);
 }

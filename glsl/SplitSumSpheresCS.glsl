@@ -1,6 +1,8 @@
 #version 450
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
+float _5278;
+
 layout(binding = 0, std430) readonly buffer Spheres
 {
     vec4 _data[];
@@ -18,7 +20,9 @@ layout(binding = 0, std140) uniform SplitSumParameter
     uint Lookup;
     uint LightCount;
     uint LightLevel;
-} _1315;
+    uint GlassTransmission;
+    float GlassRoughnessScale;
+} _1526;
 
 layout(binding = 1, std430) readonly buffer Lights
 {
@@ -26,7 +30,11 @@ layout(binding = 1, std430) readonly buffer Lights
 } Lights_1;
 
 layout(binding = 0, rgba32f) uniform writeonly image2D SplitSum;
+layout(binding = 7) uniform sampler2D SphereTransmissionTable;
+layout(binding = 6) uniform sampler2D SphereTransmissionTable_LinearClamp;
 layout(binding = 0) uniform samplerCube Specular_LinearClamp;
+layout(binding = 5) uniform sampler2D TransmissionTable;
+layout(binding = 4) uniform sampler2D TransmissionTable_LinearClamp;
 layout(binding = 3) uniform sampler2D LobeTable_LinearClamp;
 layout(binding = 2) uniform sampler2D BrdfLut_LinearClamp;
 layout(binding = 1) uniform samplerCube IrradianceMap_LinearClamp;
@@ -35,356 +43,456 @@ void main()
 {
     do
     {
-        uvec2 _1669 = uvec2(0u);
-        uvec2 _1670 = uvec2(imageSize(SplitSum));
-        _1669.x = _1670.x;
-        _1669.y = _1670.y;
-        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _1669)))
+        uvec2 _2040 = uvec2(0u);
+        uvec2 _2041 = uvec2(imageSize(SplitSum));
+        _2040.x = _2041.x;
+        _2040.y = _2041.y;
+        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _2040)))
         {
             break;
         }
-        vec2 _1844 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1315.CellSize)) + vec2(0.5)) / vec2(float(_1315.CellSize))) * 2.0) - vec2(1.0);
-        _1844.y = -_1844.y;
-        float _1875 = dot(_1844, _1844);
-        bool _1878 = (_1875 * 1.2345678806304931640625) < 1.0;
-        float _1886 = sqrt(max(fma(-_1875, 1.2345678806304931640625, 1.0), 0.0));
-        vec3 _1889 = vec3(_1844 * vec2(1.111111164093017578125), _1886);
-        uvec2 _1847 = gl_GlobalInvocationID.xy / uvec2(_1315.CellSize);
-        uint _1909 = 2u * ((_1847.y * _1315.Columns) + _1847.x);
-        vec4 _1897 = Spheres_1._data[_1909];
-        vec4 _1898 = Spheres_1._data[_1909 + 1u];
-        vec3 _3843;
-        if (_1878 && (_1898.y > 0.0))
+        vec2 _2215 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1526.CellSize)) + vec2(0.5)) / vec2(float(_1526.CellSize))) * 2.0) - vec2(1.0);
+        _2215.y = -_2215.y;
+        float _2246 = dot(_2215, _2215);
+        bool _2249 = (_2246 * 1.2345678806304931640625) < 1.0;
+        float _2257 = sqrt(max(fma(-_2246, 1.2345678806304931640625, 1.0), 0.0));
+        vec3 _2260 = vec3(_2215 * vec2(1.111111164093017578125), _2257);
+        uvec2 _2218 = gl_GlobalInvocationID.xy / uvec2(_1526.CellSize);
+        uint _2280 = 2u * ((_2218.y * _1526.Columns) + _2218.x);
+        vec4 _2268 = Spheres_1._data[_2280];
+        vec4 _2269 = Spheres_1._data[_2280 + 1u];
+        vec3 _5243;
+        if (_2249 && (_2269.y > 0.0))
         {
-            vec3 _3842;
+            vec3 _5242;
             do
             {
-                float _1954 = (1.0 - _1898.z) / (1.0 + _1898.z);
-                vec3 _1963 = refract(vec3(-0.0, -0.0, -1.0), _1889, 1.0 / _1898.z);
-                vec3 _1972 = normalize(_1889 - (_1963 * (2.0 * dot(_1889, _1963))));
-                vec3 _1977 = refract(_1963, -_1972, _1898.z);
-                if (dot(_1977, _1977) == 0.0)
+                float _2346 = clamp(_2257, 0.0, 1.0);
+                if (_1526.GlassTransmission == 2u)
                 {
-                    _3842 = vec3(0.0);
+                    uvec2 _2474 = uvec2(textureSize(SphereTransmissionTable, 0));
+                    float _2524 = float(_2474.y / _2474.x);
+                    float _2530 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _2524 - 1.0);
+                    float _2532 = floor(_2530);
+                    float _2535 = 0.5 / float(_2474.x);
+                    float _2540 = clamp(_2268.w, _2535, 1.0 - _2535);
+                    vec3 _2307 = mix(textureLod(SphereTransmissionTable_LinearClamp, vec2(_2346, (_2532 + _2540) / _2524), 0.0).xyz, textureLod(SphereTransmissionTable_LinearClamp, vec2(_2346, (min(_2532 + 1.0, _2524 - 1.0) + _2540) / _2524), 0.0).xyz, vec3(_2530 - _2532));
+                    vec3 _2361 = _2260 - (vec3(0.0, 0.0, 1.0) * _2346);
+                    float _2364 = dot(_2361, _2361);
+                    vec3 _2385 = normalize((vec3(0.0, 0.0, 1.0) * (-cos(_2307.y))) + (mix(vec3(0.0), _2361 * inversesqrt(_2364), bvec3(_2364 > 9.9999999600419720025001879548654e-13)) * sin(_2307.y)));
+                    float _5239;
+                    do
+                    {
+                        float _2686 = float(_1526.SpecularMips - 1u);
+                        float _2688 = clamp(_2307.z, 0.0, 1.0);
+                        if (_1526.LodMapping == 1u)
+                        {
+                            _5239 = (_2688 * (2.0 - _2688)) * _2686;
+                            break;
+                        }
+                        if (_1526.LodMapping == 2u)
+                        {
+                            _5239 = pow(_2688, _1526.LodParameter) * _2686;
+                            break;
+                        }
+                        if (_1526.LodMapping == 3u)
+                        {
+                            _5239 = (_2688 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2688 * _2688) * float(_1526.SpecularSize)), 0.0, _2686) : 0.0;
+                            break;
+                        }
+                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
+                        {
+                            float _2747 = float(_1526.SpecularSize);
+                            _5239 = (_2688 > 0.0) ? clamp(fma((_2686 - 1.0) / log2(_2747 / _1526.LodParameter), log2((_2688 * _2688) * _2747) - log2(_2747), _2686), 0.0, _2686) : 0.0;
+                            break;
+                        }
+                        _5239 = _2688 * _2686;
+                        break;
+                    } while(false);
+                    float _2839 = (_1526.LightCount > 0u) ? clamp((_5239 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                    float _2596 = max(_2307.z * _2307.z, 1.0000000116860974230803549289703e-07);
+                    vec3 _5241;
+                    _5241 = textureLod(Specular_LinearClamp, _2385, _5239).xyz;
+                    vec3 _2621;
+                    for (uint _5240 = 0u; _5240 < _1526.LightCount; _5241 = _2621, _5240++)
+                    {
+                        uint _2613 = 2u * _5240;
+                        vec4 _2577 = Lights_1._data[_2613];
+                        float _2857 = tan(min(0.5 * acos(clamp(dot(_2385, Lights_1._data[_2613].xyz), -1.0, 1.0)), 1.5));
+                        float _2867 = (0.5 * _2577.w) * pow(fma(_2857, _2857, 1.0), 0.75);
+                        float _2882 = (_2867 * _2867) / (_2596 * _2596);
+                        float _2889 = (_2857 * _2857) / (_2596 * _2596);
+                        float _2893 = (_2882 + 1.0) - _2889;
+                        _2621 = _5241 + ((Lights_1._data[(2u * _5240) + 1u].xyz * _2839) * clamp(0.5 + (((_2882 - 1.0) - _2889) / (2.0 * sqrt(fma(_2893, _2893, 4.0 * _2889)))), 0.0, 1.0));
+                    }
+                    _5242 = _5241 * _2307.x;
                     break;
                 }
-                float _3841;
+                float _2398 = (1.0 - _2269.z) / (1.0 + _2269.z);
+                vec3 _2407 = refract(vec3(-0.0, -0.0, -1.0), _2260, 1.0 / _2269.z);
+                vec3 _2416 = normalize(_2260 - (_2407 * (2.0 * dot(_2260, _2407))));
+                vec3 _2421 = refract(_2407, -_2416, _2269.z);
+                if (dot(_2421, _2421) == 0.0)
+                {
+                    _5242 = vec3(0.0);
+                    break;
+                }
+                float _5238;
+                if (_1526.GlassTransmission == 1u)
+                {
+                    uvec2 _2911 = uvec2(textureSize(TransmissionTable, 0));
+                    float _2965 = float(_2911.y / _2911.x);
+                    float _2971 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _2965 - 1.0);
+                    float _2973 = floor(_2971);
+                    float _2976 = 0.5 / float(_2911.x);
+                    float _2981 = clamp(_2268.w, _2976, 1.0 - _2976);
+                    float _2441 = dot(_2416, _2407);
+                    uvec2 _3009 = uvec2(textureSize(TransmissionTable, 0));
+                    float _3063 = float(_3009.y / _3009.x);
+                    float _3069 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _3063 - 1.0);
+                    float _3071 = floor(_3069);
+                    float _3074 = 0.5 / float(_3009.x);
+                    float _3079 = clamp(_2268.w, _3074, 1.0 - _3074);
+                    _5238 = mix(vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2346, (_2973 + _2981) / _2965), 0.0).x, _5278), vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2346, (min(_2973 + 1.0, _2965 - 1.0) + _2981) / _2965), 0.0).x, _5278), vec2(_2971 - _2973)).x * mix(vec2(_5278, textureLod(TransmissionTable_LinearClamp, vec2(_2441, (_3071 + _3079) / _3063), 0.0).y), vec2(_5278, textureLod(TransmissionTable_LinearClamp, vec2(_2441, (min(_3071 + 1.0, _3063 - 1.0) + _3079) / _3063), 0.0).y), vec2(_3069 - _3071)).y;
+                }
+                else
+                {
+                    _5238 = (1.0 - fma(_2398, _2398, fma(-_2398, _2398, 1.0) * pow(1.0 - clamp(_2257, 0.0, 1.0), 5.0))) * (1.0 - fma(_2398, _2398, fma(-_2398, _2398, 1.0) * pow(1.0 - clamp(dot(_2416, _2421), 0.0, 1.0), 5.0)));
+                }
+                float _2465 = _2268.w * _1526.GlassRoughnessScale;
+                float _5233;
                 do
                 {
-                    float _2092 = float(_1315.SpecularMips - 1u);
-                    float _2094 = clamp(_1897.w, 0.0, 1.0);
-                    if (_1315.LodMapping == 1u)
+                    float _3249 = float(_1526.SpecularMips - 1u);
+                    float _3251 = clamp(_2465, 0.0, 1.0);
+                    if (_1526.LodMapping == 1u)
                     {
-                        _3841 = (_2094 * (2.0 - _2094)) * _2092;
+                        _5233 = (_3251 * (2.0 - _3251)) * _3249;
                         break;
                     }
-                    if (_1315.LodMapping == 2u)
+                    if (_1526.LodMapping == 2u)
                     {
-                        _3841 = pow(_2094, _1315.LodParameter) * _2092;
+                        _5233 = pow(_3251, _1526.LodParameter) * _3249;
                         break;
                     }
-                    if (_1315.LodMapping == 3u)
+                    if (_1526.LodMapping == 3u)
                     {
-                        _3841 = (_2094 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2094 * _2094) * float(_1315.SpecularSize)), 0.0, _2092) : 0.0;
+                        _5233 = (_3251 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3251 * _3251) * float(_1526.SpecularSize)), 0.0, _3249) : 0.0;
                         break;
                     }
-                    if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
+                    if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
                     {
-                        float _2153 = float(_1315.SpecularSize);
-                        _3841 = (_2094 > 0.0) ? clamp(fma((_2092 - 1.0) / log2(_2153 / _1315.LodParameter), log2((_2094 * _2094) * _2153) - log2(_2153), _2092), 0.0, _2092) : 0.0;
+                        float _3310 = float(_1526.SpecularSize);
+                        _5233 = (_3251 > 0.0) ? clamp(fma((_3249 - 1.0) / log2(_3310 / _1526.LodParameter), log2((_3251 * _3251) * _3310) - log2(_3310), _3249), 0.0, _3249) : 0.0;
                         break;
                     }
-                    _3841 = _2094 * _2092;
+                    _5233 = _3251 * _3249;
                     break;
                 } while(false);
-                _3842 = textureLod(Specular_LinearClamp, _1977, _3841).xyz * ((1.0 - fma(_1954, _1954, fma(-_1954, _1954, 1.0) * pow(1.0 - clamp(_1886, 0.0, 1.0), 5.0))) * (1.0 - fma(_1954, _1954, fma(-_1954, _1954, 1.0) * pow(1.0 - clamp(dot(_1972, _1977), 0.0, 1.0), 5.0))));
+                float _3402 = (_1526.LightCount > 0u) ? clamp((_5233 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                float _3159 = max(_2465 * _2465, 1.0000000116860974230803549289703e-07);
+                vec3 _5235;
+                _5235 = textureLod(Specular_LinearClamp, _2421, _5233).xyz;
+                vec3 _3184;
+                for (uint _5234 = 0u; _5234 < _1526.LightCount; _5235 = _3184, _5234++)
+                {
+                    uint _3176 = 2u * _5234;
+                    vec4 _3140 = Lights_1._data[_3176];
+                    float _3420 = tan(min(0.5 * acos(clamp(dot(_2421, Lights_1._data[_3176].xyz), -1.0, 1.0)), 1.5));
+                    float _3430 = (0.5 * _3140.w) * pow(fma(_3420, _3420, 1.0), 0.75);
+                    float _3445 = (_3430 * _3430) / (_3159 * _3159);
+                    float _3452 = (_3420 * _3420) / (_3159 * _3159);
+                    float _3456 = (_3445 + 1.0) - _3452;
+                    _3184 = _5235 + ((Lights_1._data[(2u * _5234) + 1u].xyz * _3402) * clamp(0.5 + (((_3445 - 1.0) - _3452) / (2.0 * sqrt(fma(_3456, _3456, 4.0 * _3452)))), 0.0, 1.0));
+                }
+                _5242 = _5235 * _5238;
                 break;
             } while(false);
-            _3843 = _3842;
+            _5243 = _5242;
         }
         else
         {
-            vec3 _3844;
-            if (_1878)
+            vec3 _5244;
+            if (_2249)
             {
-                vec3 _3822;
-                float _3823;
+                vec3 _5214;
+                float _5215;
                 do
                 {
-                    vec3 _2354 = reflect(vec3(-0.0, -0.0, -1.0), _1889);
-                    vec4 _2300 = textureLod(LobeTable_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0);
-                    vec3 _3811;
+                    vec3 _3640 = reflect(vec3(-0.0, -0.0, -1.0), _2260);
+                    vec4 _3586 = textureLod(LobeTable_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0);
+                    vec3 _5203;
                     do
                     {
-                        float _2476 = _1897.w * _1897.w;
-                        if (_1315.Direction == 1u)
+                        float _3762 = _2268.w * _2268.w;
+                        if (_1526.Direction == 1u)
                         {
-                            float _2482 = clamp(fma(-_1897.w, _1897.w, 1.0), 0.0, 1.0);
-                            _3811 = normalize(mix(_1889, _2354, vec3(_2482 * fma(_1897.w, _1897.w, sqrt(_2482)))));
+                            float _3768 = clamp(fma(-_2268.w, _2268.w, 1.0), 0.0, 1.0);
+                            _5203 = normalize(mix(_2260, _3640, vec3(_3768 * fma(_2268.w, _2268.w, sqrt(_3768)))));
                             break;
                         }
-                        if (_1315.Direction == 2u)
+                        if (_1526.Direction == 2u)
                         {
-                            _3811 = normalize(mix(_2354, _1889, vec3(_2476 * _2476)));
+                            _5203 = normalize(mix(_3640, _2260, vec3(_3762 * _3762)));
                             break;
                         }
-                        if (_1315.Direction == 3u)
+                        if (_1526.Direction == 3u)
                         {
-                            vec3 _3810;
+                            vec3 _5202;
                             do
                             {
-                                float _2531 = acos(clamp(dot(_1889, _2354), -1.0, 1.0));
-                                if (_2531 < 9.9999997473787516355514526367188e-05)
+                                float _3817 = acos(clamp(dot(_2260, _3640), -1.0, 1.0));
+                                if (_3817 < 9.9999997473787516355514526367188e-05)
                                 {
-                                    _3810 = _2354;
+                                    _5202 = _3640;
                                     break;
                                 }
-                                _3810 = ((_1889 * sin((1.0 - _2300.x) * _2531)) + (_2354 * sin(_2300.x * _2531))) / vec3(sin(_2531));
+                                _5202 = ((_2260 * sin((1.0 - _3586.x) * _3817)) + (_3640 * sin(_3586.x * _3817))) / vec3(sin(_3817));
                                 break;
                             } while(false);
-                            _3811 = _3810;
+                            _5203 = _5202;
                             break;
                         }
-                        _3811 = _2354;
+                        _5203 = _3640;
                         break;
                     } while(false);
-                    if (_1315.Lookup == 0u)
+                    if (_1526.Lookup == 0u)
                     {
-                        float _3820;
+                        float _5212;
                         do
                         {
-                            float _2596 = float(_1315.SpecularMips - 1u);
-                            float _2598 = clamp(_1897.w, 0.0, 1.0);
-                            if (_1315.LodMapping == 1u)
+                            float _3882 = float(_1526.SpecularMips - 1u);
+                            float _3884 = clamp(_2268.w, 0.0, 1.0);
+                            if (_1526.LodMapping == 1u)
                             {
-                                _3820 = (_2598 * (2.0 - _2598)) * _2596;
+                                _5212 = (_3884 * (2.0 - _3884)) * _3882;
                                 break;
                             }
-                            if (_1315.LodMapping == 2u)
+                            if (_1526.LodMapping == 2u)
                             {
-                                _3820 = pow(_2598, _1315.LodParameter) * _2596;
+                                _5212 = pow(_3884, _1526.LodParameter) * _3882;
                                 break;
                             }
-                            if (_1315.LodMapping == 3u)
+                            if (_1526.LodMapping == 3u)
                             {
-                                _3820 = (_2598 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2598 * _2598) * float(_1315.SpecularSize)), 0.0, _2596) : 0.0;
+                                _5212 = (_3884 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3884 * _3884) * float(_1526.SpecularSize)), 0.0, _3882) : 0.0;
                                 break;
                             }
-                            if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
+                            if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
                             {
-                                float _2657 = float(_1315.SpecularSize);
-                                _3820 = (_2598 > 0.0) ? clamp(fma((_2596 - 1.0) / log2(_2657 / _1315.LodParameter), log2((_2598 * _2598) * _2657) - log2(_2657), _2596), 0.0, _2596) : 0.0;
+                                float _3943 = float(_1526.SpecularSize);
+                                _5212 = (_3884 > 0.0) ? clamp(fma((_3882 - 1.0) / log2(_3943 / _1526.LodParameter), log2((_3884 * _3884) * _3943) - log2(_3943), _3882), 0.0, _3882) : 0.0;
                                 break;
                             }
-                            _3820 = _2598 * _2596;
+                            _5212 = _3884 * _3882;
                             break;
                         } while(false);
-                        _3823 = (_1315.LightCount > 0u) ? clamp((_3820 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _3822 = textureLod(Specular_LinearClamp, _3811, _3820).xyz * 1.0;
+                        _5215 = (_1526.LightCount > 0u) ? clamp((_5212 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _5214 = textureLod(Specular_LinearClamp, _5203, _5212).xyz * 1.0;
                         break;
                     }
-                    if (_1315.Lookup == 1u)
+                    if (_1526.Lookup == 1u)
                     {
-                        float _3818;
+                        float _5210;
                         do
                         {
-                            float _2741 = float(_1315.SpecularMips - 1u);
-                            float _2743 = clamp(_2300.y, 0.0, 1.0);
-                            if (_1315.LodMapping == 1u)
+                            float _4027 = float(_1526.SpecularMips - 1u);
+                            float _4029 = clamp(_3586.y, 0.0, 1.0);
+                            if (_1526.LodMapping == 1u)
                             {
-                                _3818 = (_2743 * (2.0 - _2743)) * _2741;
+                                _5210 = (_4029 * (2.0 - _4029)) * _4027;
                                 break;
                             }
-                            if (_1315.LodMapping == 2u)
+                            if (_1526.LodMapping == 2u)
                             {
-                                _3818 = pow(_2743, _1315.LodParameter) * _2741;
+                                _5210 = pow(_4029, _1526.LodParameter) * _4027;
                                 break;
                             }
-                            if (_1315.LodMapping == 3u)
+                            if (_1526.LodMapping == 3u)
                             {
-                                _3818 = (_2743 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2743 * _2743) * float(_1315.SpecularSize)), 0.0, _2741) : 0.0;
+                                _5210 = (_4029 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4029 * _4029) * float(_1526.SpecularSize)), 0.0, _4027) : 0.0;
                                 break;
                             }
-                            if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
+                            if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
                             {
-                                float _2802 = float(_1315.SpecularSize);
-                                _3818 = (_2743 > 0.0) ? clamp(fma((_2741 - 1.0) / log2(_2802 / _1315.LodParameter), log2((_2743 * _2743) * _2802) - log2(_2802), _2741), 0.0, _2741) : 0.0;
+                                float _4088 = float(_1526.SpecularSize);
+                                _5210 = (_4029 > 0.0) ? clamp(fma((_4027 - 1.0) / log2(_4088 / _1526.LodParameter), log2((_4029 * _4029) * _4088) - log2(_4088), _4027), 0.0, _4027) : 0.0;
                                 break;
                             }
-                            _3818 = _2743 * _2741;
+                            _5210 = _4029 * _4027;
                             break;
                         } while(false);
-                        _3823 = (_1315.LightCount > 0u) ? clamp((_3818 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _3822 = textureLod(Specular_LinearClamp, _3811, _3818).xyz * 1.0;
+                        _5215 = (_1526.LightCount > 0u) ? clamp((_5210 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _5214 = textureLod(Specular_LinearClamp, _5203, _5210).xyz * 1.0;
                         break;
                     }
-                    vec3 _2397 = cross(_1889, vec3(0.0, 0.0, 1.0));
-                    float _2399 = length(_2397);
-                    vec3 _2409 = mix(vec3(0.0), cross(_2397 / vec3(_2399), _3811), bvec3(_2399 > 9.9999999747524270787835121154785e-07));
-                    float _3814;
+                    vec3 _3683 = cross(_2260, vec3(0.0, 0.0, 1.0));
+                    float _3685 = length(_3683);
+                    vec3 _3695 = mix(vec3(0.0), cross(_3683 / vec3(_3685), _5203), bvec3(_3685 > 9.9999999747524270787835121154785e-07));
+                    float _5206;
                     do
                     {
-                        float _2886 = float(_1315.SpecularMips - 1u);
-                        float _2888 = clamp(_2300.z, 0.0, 1.0);
-                        if (_1315.LodMapping == 1u)
+                        float _4172 = float(_1526.SpecularMips - 1u);
+                        float _4174 = clamp(_3586.z, 0.0, 1.0);
+                        if (_1526.LodMapping == 1u)
                         {
-                            _3814 = (_2888 * (2.0 - _2888)) * _2886;
+                            _5206 = (_4174 * (2.0 - _4174)) * _4172;
                             break;
                         }
-                        if (_1315.LodMapping == 2u)
+                        if (_1526.LodMapping == 2u)
                         {
-                            _3814 = pow(_2888, _1315.LodParameter) * _2886;
+                            _5206 = pow(_4174, _1526.LodParameter) * _4172;
                             break;
                         }
-                        if (_1315.LodMapping == 3u)
+                        if (_1526.LodMapping == 3u)
                         {
-                            _3814 = (_2888 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2888 * _2888) * float(_1315.SpecularSize)), 0.0, _2886) : 0.0;
+                            _5206 = (_4174 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4174 * _4174) * float(_1526.SpecularSize)), 0.0, _4172) : 0.0;
                             break;
                         }
-                        if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
+                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
                         {
-                            float _2947 = float(_1315.SpecularSize);
-                            _3814 = (_2888 > 0.0) ? clamp(fma((_2886 - 1.0) / log2(_2947 / _1315.LodParameter), log2((_2888 * _2888) * _2947) - log2(_2947), _2886), 0.0, _2886) : 0.0;
+                            float _4233 = float(_1526.SpecularSize);
+                            _5206 = (_4174 > 0.0) ? clamp(fma((_4172 - 1.0) / log2(_4233 / _1526.LodParameter), log2((_4174 * _4174) * _4233) - log2(_4233), _4172), 0.0, _4172) : 0.0;
                             break;
                         }
-                        _3814 = _2888 * _2886;
+                        _5206 = _4174 * _4172;
                         break;
                     } while(false);
-                    float _3816;
+                    float _5208;
                     do
                     {
-                        float _3031 = float(_1315.SpecularMips - 1u);
-                        float _3033 = clamp(_2300.z, 0.0, 1.0);
-                        if (_1315.LodMapping == 1u)
+                        float _4317 = float(_1526.SpecularMips - 1u);
+                        float _4319 = clamp(_3586.z, 0.0, 1.0);
+                        if (_1526.LodMapping == 1u)
                         {
-                            _3816 = (_3033 * (2.0 - _3033)) * _3031;
+                            _5208 = (_4319 * (2.0 - _4319)) * _4317;
                             break;
                         }
-                        if (_1315.LodMapping == 2u)
+                        if (_1526.LodMapping == 2u)
                         {
-                            _3816 = pow(_3033, _1315.LodParameter) * _3031;
+                            _5208 = pow(_4319, _1526.LodParameter) * _4317;
                             break;
                         }
-                        if (_1315.LodMapping == 3u)
+                        if (_1526.LodMapping == 3u)
                         {
-                            _3816 = (_3033 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3033 * _3033) * float(_1315.SpecularSize)), 0.0, _3031) : 0.0;
+                            _5208 = (_4319 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4319 * _4319) * float(_1526.SpecularSize)), 0.0, _4317) : 0.0;
                             break;
                         }
-                        if (((_1315.LodMapping == 4u) && (_1315.SpecularMips >= 3u)) && (float(_1315.SpecularSize) > _1315.LodParameter))
+                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
                         {
-                            float _3092 = float(_1315.SpecularSize);
-                            _3816 = (_3033 > 0.0) ? clamp(fma((_3031 - 1.0) / log2(_3092 / _1315.LodParameter), log2((_3033 * _3033) * _3092) - log2(_3092), _3031), 0.0, _3031) : 0.0;
+                            float _4378 = float(_1526.SpecularSize);
+                            _5208 = (_4319 > 0.0) ? clamp(fma((_4317 - 1.0) / log2(_4378 / _1526.LodParameter), log2((_4319 * _4319) * _4378) - log2(_4378), _4317), 0.0, _4317) : 0.0;
                             break;
                         }
-                        _3816 = _3033 * _3031;
+                        _5208 = _4319 * _4317;
                         break;
                     } while(false);
-                    _3823 = fma(0.5, (_1315.LightCount > 0u) ? clamp((_3814 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1315.LightCount > 0u) ? clamp((_3816 - float(_1315.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
-                    _3822 = (textureLod(Specular_LinearClamp, normalize((_3811 * cos(_2300.w)) + (_2409 * sin(_2300.w))), _3814).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_3811 * cos(_2300.w)) - (_2409 * sin(_2300.w))), _3816).xyz * 0.5);
+                    _5215 = fma(0.5, (_1526.LightCount > 0u) ? clamp((_5206 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1526.LightCount > 0u) ? clamp((_5208 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
+                    _5214 = (textureLod(Specular_LinearClamp, normalize((_5203 * cos(_3586.w)) + (_3695 * sin(_3586.w))), _5206).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_5203 * cos(_3586.w)) - (_3695 * sin(_3586.w))), _5208).xyz * 0.5);
                     break;
                 } while(false);
-                vec2 _2244 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0).xy);
-                vec3 _1781 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1909].xyz, vec3(_1898.x));
-                vec2 _3138 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_1886, 0.0, 1.0), _1897.w), 0.0).xy);
-                vec3 _3161 = (_1781 * _3138.x) + vec3(_3138.y);
-                vec3 _3831;
-                _3831 = fma(_3822, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_1909].xyz, vec3(_1898.x)) * _2244.x) + vec3(_2244.y), (textureLod(IrradianceMap_LinearClamp, _1889, 0.0).xyz * Spheres_1._data[_1909].xyz) * (1.0 - _1898.x));
-                vec3 _1823;
-                for (uint _3824 = 0u; _3824 < _1315.LightCount; _3831 = _1823, _3824++)
+                vec2 _3530 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0).xy);
+                vec3 _2152 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2280].xyz, vec3(_2269.x));
+                vec2 _4424 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0).xy);
+                vec3 _4447 = (_2152 * _4424.x) + vec3(_4424.y);
+                vec3 _5223;
+                _5223 = fma(_5214, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2280].xyz, vec3(_2269.x)) * _3530.x) + vec3(_3530.y), (textureLod(IrradianceMap_LinearClamp, _2260, 0.0).xyz * Spheres_1._data[_2280].xyz) * (1.0 - _2269.x));
+                vec3 _2194;
+                for (uint _5216 = 0u; _5216 < _1526.LightCount; _5223 = _2194, _5216++)
                 {
-                    uint _1805 = 2u * _3824;
-                    uint _1808 = (2u * _3824) + 1u;
-                    vec4 _1711 = Lights_1._data[_1805];
-                    vec4 _1712 = Lights_1._data[_1808];
-                    vec3 _3162 = Lights_1._data[_1805].xyz;
-                    vec3 _3202 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_3162.z) < 0.999000012874603271484375)), Lights_1._data[_1805].xyz));
-                    vec3 _3205 = cross(Lights_1._data[_1805].xyz, _3202);
-                    float _3208 = tan(_1711.w);
-                    vec3 _3826;
-                    _3826 = vec3(0.0);
-                    vec3 _3845;
-                    for (uint _3825 = 0u; _3825 < 19u; _3826 = _3845, _3825++)
+                    uint _2176 = 2u * _5216;
+                    uint _2179 = (2u * _5216) + 1u;
+                    vec4 _2082 = Lights_1._data[_2176];
+                    vec4 _2083 = Lights_1._data[_2179];
+                    vec3 _4448 = Lights_1._data[_2176].xyz;
+                    vec3 _4488 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_4448.z) < 0.999000012874603271484375)), Lights_1._data[_2176].xyz));
+                    vec3 _4491 = cross(Lights_1._data[_2176].xyz, _4488);
+                    float _4494 = tan(_2082.w);
+                    vec3 _5218;
+                    _5218 = vec3(0.0);
+                    vec3 _5245;
+                    for (uint _5217 = 0u; _5217 < 19u; _5218 = _5245, _5217++)
                     {
-                        vec2 _3834;
+                        vec2 _5226;
                         do
                         {
-                            if (_3825 == 0u)
+                            if (_5217 == 0u)
                             {
-                                _3834 = vec2(0.0);
+                                _5226 = vec2(0.0);
                                 break;
                             }
-                            bool _3316 = _3825 <= 6u;
-                            float _3333 = _3316 ? (float(_3825 - 1u) * 1.0471975803375244140625) : ((float(_3825 - 7u) + 0.5) * 0.52359879016876220703125);
-                            _3834 = vec2(cos(_3333), sin(_3333)) * (_3316 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
+                            bool _4602 = _5217 <= 6u;
+                            float _4619 = _4602 ? (float(_5217 - 1u) * 1.0471975803375244140625) : ((float(_5217 - 7u) + 0.5) * 0.52359879016876220703125);
+                            _5226 = vec2(cos(_4619), sin(_4619)) * (_4602 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
                             break;
                         } while(false);
-                        vec2 _3169 = _3834 * _3208;
-                        vec3 _3229 = normalize((Lights_1._data[_1805].xyz + (_3202 * _3169.x)) + (_3205 * _3169.y));
-                        if (dot(_1889, _3229) > 0.0)
+                        vec2 _4455 = _5226 * _4494;
+                        vec3 _4515 = normalize((Lights_1._data[_2176].xyz + (_4488 * _4455.x)) + (_4491 * _4455.y));
+                        if (dot(_2260, _4515) > 0.0)
                         {
-                            vec3 _3835;
+                            vec3 _5227;
                             do
                             {
-                                float _3363 = dot(_1889, _3229);
-                                float _3367 = clamp(_1886, 0.0, 1.0);
-                                if ((_3363 <= 0.0) || (_3367 <= 0.0))
+                                float _4649 = dot(_2260, _4515);
+                                float _4653 = clamp(_2257, 0.0, 1.0);
+                                if ((_4649 <= 0.0) || (_4653 <= 0.0))
                                 {
-                                    _3835 = vec3(0.0);
+                                    _5227 = vec3(0.0);
                                     break;
                                 }
-                                vec3 _3378 = normalize(_3229 + vec3(0.0, 0.0, 1.0));
-                                float _3452 = _1897.w * _1897.w;
-                                float _3473 = _1897.w * _1897.w;
-                                float _3395 = clamp(dot(_1889, _3378), 0.0, 1.0);
-                                float _3494 = _1897.w * _1897.w;
-                                float _3506 = fma(_3395 * _3395, fma(_3494, _3494, -1.0), 1.0);
-                                _3835 = (_1781 + ((vec3(1.0) - _1781) * pow(clamp(1.0 - clamp(_3378.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_3363 / fma(_3363, fma(-_3452, 0.5, 1.0), _3452 * 0.5)) * (_3367 / fma(_3367, fma(-_3473, 0.5, 1.0), _3473 * 0.5))) * ((_3494 * _3494) / ((3.1415927410125732421875 * _3506) * _3506))) / (4.0 * _3367));
+                                vec3 _4664 = normalize(_4515 + vec3(0.0, 0.0, 1.0));
+                                float _4738 = _2268.w * _2268.w;
+                                float _4759 = _2268.w * _2268.w;
+                                float _4681 = clamp(dot(_2260, _4664), 0.0, 1.0);
+                                float _4780 = _2268.w * _2268.w;
+                                float _4792 = fma(_4681 * _4681, fma(_4780, _4780, -1.0), 1.0);
+                                _5227 = (_2152 + ((vec3(1.0) - _2152) * pow(clamp(1.0 - clamp(_4664.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_4649 / fma(_4649, fma(-_4738, 0.5, 1.0), _4738 * 0.5)) * (_4653 / fma(_4653, fma(-_4759, 0.5, 1.0), _4759 * 0.5))) * ((_4780 * _4780) / ((3.1415927410125732421875 * _4792) * _4792))) / (4.0 * _4653));
                                 break;
                             } while(false);
-                            _3845 = _3826 + _3835;
+                            _5245 = _5218 + _5227;
                         }
                         else
                         {
-                            _3845 = _3826;
+                            _5245 = _5218;
                         }
                     }
-                    float _3257 = clamp((((2.0 * _1897.w) * _1897.w) / max(_1711.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
-                    vec4 _3184 = Lights_1._data[_1805];
-                    float _3534 = 0.5 * _3184.w;
-                    float _3536 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _1889), Lights_1._data[_1805].xyz), -1.0, 1.0));
-                    float _3540 = max(_1897.w * _1897.w, 1.0000000116860974230803549289703e-07);
-                    float _3554 = (_3534 * _3534) / (_3540 * _3540);
-                    float _3561 = (_3536 * _3536) / (_3540 * _3540);
-                    float _3565 = (_3554 + 1.0) - _3561;
-                    float _3281 = sin(_1711.w);
-                    float _3285 = dot(_1889, Lights_1._data[_1805].xyz);
-                    float _3288 = _3281 * _3281;
-                    float _3827;
+                    float _4543 = clamp((((2.0 * _2268.w) * _2268.w) / max(_2082.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
+                    vec4 _4470 = Lights_1._data[_2176];
+                    float _4820 = 0.5 * _4470.w;
+                    float _4822 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _2260), Lights_1._data[_2176].xyz), -1.0, 1.0));
+                    float _4826 = max(_2268.w * _2268.w, 1.0000000116860974230803549289703e-07);
+                    float _4840 = (_4820 * _4820) / (_4826 * _4826);
+                    float _4847 = (_4822 * _4822) / (_4826 * _4826);
+                    float _4851 = (_4840 + 1.0) - _4847;
+                    float _4567 = sin(_2082.w);
+                    float _4571 = dot(_2260, Lights_1._data[_2176].xyz);
+                    float _4574 = _4567 * _4567;
+                    float _5219;
                     do
                     {
-                        if (((_3285 * _3285) > _3288) || (_3288 <= 0.0))
+                        if (((_4571 * _4571) > _4574) || (_4574 <= 0.0))
                         {
-                            _3827 = (3.1415927410125732421875 * _3288) * clamp(_3285, 0.0, 1.0);
+                            _5219 = (3.1415927410125732421875 * _4574) * clamp(_4571, 0.0, 1.0);
                             break;
                         }
-                        float _3610 = sqrt(clamp(fma(-_3285, _3285, 1.0), 0.0, 1.0));
-                        float _3614 = sqrt((1.0 / _3288) - 1.0);
-                        float _3620 = (-_3614) * (_3285 / _3610);
-                        float _3628 = _3610 * sqrt(clamp(fma(-_3620, _3620, 1.0), 0.0, 1.0));
-                        _3827 = max(fma(fma(_3285, acos(clamp(_3620, -1.0, 1.0)), -(_3614 * _3628)), _3288, atan(_3628 / _3614)), 0.0);
+                        float _4896 = sqrt(clamp(fma(-_4571, _4571, 1.0), 0.0, 1.0));
+                        float _4900 = sqrt((1.0 / _4574) - 1.0);
+                        float _4906 = (-_4900) * (_4571 / _4896);
+                        float _4914 = _4896 * sqrt(clamp(fma(-_4906, _4906, 1.0), 0.0, 1.0));
+                        _5219 = max(fma(fma(_4571, acos(clamp(_4906, -1.0, 1.0)), -(_4900 * _4914)), _4574, atan(_4914 / _4900)), 0.0);
                         break;
                     } while(false);
-                    _1823 = fma(((mix(mix(vec3(0.0), (_3161 * clamp(0.5 + (((_3554 - 1.0) - _3561) / (2.0 * sqrt(fma(_3565, _3565, 4.0 * _3561)))), 0.0, 1.0)) / vec3(_1712.w), bvec3(_3257 < 1.0)), _3826 * 0.052631579339504241943359375, vec3(_3257)) * _3823) * _1712.w) + ((Spheres_1._data[_1909].xyz * (1.0 - _1898.x)) * (_3827 * 0.3183098733425140380859375)), Lights_1._data[_1808].xyz, _3831);
+                    _2194 = fma(((mix(mix(vec3(0.0), (_4447 * clamp(0.5 + (((_4840 - 1.0) - _4847) / (2.0 * sqrt(fma(_4851, _4851, 4.0 * _4847)))), 0.0, 1.0)) / vec3(_2083.w), bvec3(_4543 < 1.0)), _5218 * 0.052631579339504241943359375, vec3(_4543)) * _5215) * _2083.w) + ((Spheres_1._data[_2280].xyz * (1.0 - _2269.x)) * (_5219 * 0.3183098733425140380859375)), Lights_1._data[_2179].xyz, _5223);
                 }
-                _3844 = _3831;
+                _5244 = _5223;
             }
             else
             {
-                _3844 = vec3(0.0);
+                _5244 = vec3(0.0);
             }
-            _3843 = _3844;
+            _5243 = _5244;
         }
-        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_3843, float(_1878)));
+        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_5243, float(_2249)));
         break;
     } while(false);
 }

@@ -219,6 +219,17 @@ float IblGgxDiskShare( float radius, float offset, float alpha )
     return saturate( 0.5f + ( V - 1.f - beta2 ) / ( 2.f * sqrt( w * w + 4.f * beta2 ) ) );
 }
 
+// The share of a prefiltered kernel of GGX's α about `direction` that falls in a light's disk
+// (head: direction towards it, angular radius): IblGgxDiskShare in slope space, where the
+// kernel's half angles x become slopes tan x and a small disk's area grows by sec³ x.
+float IblKernelDiskShare( float3 direction, float alpha, float4 head )
+{
+    float away = 0.5f * acos( clamp( dot( direction, head.xyz ), -1.f, 1.f ) );
+    float slope = tan( min( away, 1.5f ) );
+    float stretch = pow( 1.f + slope * slope, 0.75f ); // sec^1.5: the disk of equal area
+    return IblGgxDiskShare( 0.5f * head.w * stretch, slope, alpha );
+}
+
 float3 IblNarrowLobeDisk( float3 normal, float3 viewDirection, float roughness, float3 albedo, float4 head )
 {
     float3 reflected = reflect( -viewDirection, normal );
@@ -292,6 +303,58 @@ float3 IblDirectionalAlbedo( float3 normal, float3 viewDirection, float roughnes
 {
     float2 brdf = brdfLut.SampleLevel( linearSampler, float2( saturate( dot( normal, viewDirection ) ), roughness ), 0 ).rg;
     return f0 * brdf.x + brdf.y;
+}
+
+// The share of the light a dielectric's rough interface passes on along a view ray crossing it,
+// (entering from outside, leaving from inside), from the transmission table
+// (runtime/shading/transmission_table.hpp): one square layer per index of refraction, 1.1, 1.3,
+// .. 2.5, stacked down one texture, N·V (on V's side) across and roughness down each. Indices
+// between two layers blend them; reads stay a half texel inside their layer.
+static const float IBL_TRANSMISSION_FIRST_ETA = 1.1f;
+static const float IBL_TRANSMISSION_ETA_STEP = 0.2f;
+
+// Where a layered table is read for (N·V, roughness, eta): the two layers' coordinates and the
+// weight of the upper.
+struct IblLayeredRead
+{
+    float2 Below, Above;
+    float Blend;
+};
+
+IblLayeredRead IblLayeredReadOf( float ndotv, float roughness, float eta, uint width, uint height )
+{
+    float layers = float( height / width );
+    float at = clamp( ( eta - IBL_TRANSMISSION_FIRST_ETA ) / IBL_TRANSMISSION_ETA_STEP, 0.f, layers - 1.f );
+    float below = floor( at );
+    float halfTexel = 0.5f / float( width );
+    float v = clamp( roughness, halfTexel, 1.f - halfTexel );
+    IblLayeredRead read;
+    read.Below = float2( ndotv, ( below + v ) / layers );
+    read.Above = float2( ndotv, ( min( below + 1.f, layers - 1.f ) + v ) / layers );
+    read.Blend = at - below;
+    return read;
+}
+
+float2 IblTransmittedShares( float ndotv, float roughness, float eta, Texture2D<float2> transmissionTable,
+                             SamplerState linearSampler )
+{
+    uint width = 0u, height = 0u;
+    transmissionTable.GetDimensions( width, height );
+    IblLayeredRead read = IblLayeredReadOf( ndotv, roughness, eta, width, height );
+    return lerp( transmissionTable.SampleLevel( linearSampler, read.Below, 0 ).rg,
+                 transmissionTable.SampleLevel( linearSampler, read.Above, 0 ).rg, read.Blend );
+}
+
+// The sphere transmission table (runtime/shading/sphere_transmission.hpp), laid out as the
+// transmission table: (energy, angle from -V towards N of the mean exiting direction, the
+// kernel roughness of its spread) for a solid sphere of rough glass.
+float3 IblSphereTransmission( float ndotv, float roughness, float eta, Texture2D<float4> table, SamplerState linearSampler )
+{
+    uint width = 0u, height = 0u;
+    table.GetDimensions( width, height );
+    IblLayeredRead read = IblLayeredReadOf( ndotv, roughness, eta, width, height );
+    return lerp( table.SampleLevel( linearSampler, read.Below, 0 ).rgb, table.SampleLevel( linearSampler, read.Above, 0 ).rgb,
+                 read.Blend );
 }
 
 #endif // COMMON_IMAGE_BASED_LIGHTING_FXH

@@ -1,6 +1,8 @@
 #include "shading_maps.hpp"
 
 #include "kernels/kernel_steps.hpp"
+#include "shading/sphere_transmission.hpp"
+#include "shading/transmission_table.hpp"
 
 #include <cstring>
 #include <map>
@@ -50,6 +52,50 @@ vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::Lobe
     vulkan::Image table(context, {"LobeTable", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 1, 1, false, false});
     table.upload(context, lobeTableOf(weighting));
     return table;
+}
+
+namespace {
+
+template <typename Compute>
+const std::vector<float>& computedOnce(uint32_t size, const Compute& compute) {
+    static std::mutex mutex;
+    static std::map<uint32_t, std::vector<float>> tables;
+    const std::lock_guard lock(mutex);
+    auto found = tables.find(size);
+    if (found == tables.end()) found = tables.emplace(size, compute(size)).first;
+    return found->second;
+}
+
+vulkan::Image layeredTable(const vulkan::VulkanContext& context, const char* name, const char* format, uint32_t size,
+                           const std::vector<float>& values) {
+    const auto layers = uint32_t(shading::kTransmissionEtas.size());
+    vulkan::Image table(context, {name, &vulkan::texelFormatNamed(format), size, size * layers, 1, 1, false, false});
+    table.upload(context, values);
+    return table;
+}
+
+} // namespace
+
+const std::vector<float>& transmissionTableOf(uint32_t size) {
+    return computedOnce(size, [](uint32_t n) { return shading::transmissionTable(n); });
+}
+
+const std::vector<float>& sphereTransmissionTableOf(uint32_t size) {
+    return computedOnce(size, [](uint32_t n) { return shading::sphereTransmissionTable(n); });
+}
+
+uint32_t transmissionTableSize(shading::GlassTransmission transmission) {
+    return transmission == shading::GlassTransmission::Tabulated ? shading::kTransmissionTableSize : 1;
+}
+
+uint32_t sphereTransmissionTableSize(shading::GlassTransmission transmission) {
+    return transmission == shading::GlassTransmission::Sphere ? shading::kTransmissionTableSize : 1;
+}
+
+GlassTables glassTables(const vulkan::VulkanContext& context, shading::GlassTransmission transmission) {
+    const uint32_t interfaceSize = transmissionTableSize(transmission), sphereSize = sphereTransmissionTableSize(transmission);
+    return {layeredTable(context, "TransmissionTable", "R32G32_SFLOAT", interfaceSize, transmissionTableOf(interfaceSize)),
+            layeredTable(context, "SphereTransmissionTable", "R32G32B32A32_SFLOAT", sphereSize, sphereTransmissionTableOf(sphereSize))};
 }
 
 std::vector<float> packEnvironmentLights(const std::vector<shading::EnvironmentLight>& lights) {

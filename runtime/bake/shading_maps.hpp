@@ -29,6 +29,19 @@ TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan:
 const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting);
 vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting);
 
+// The glass shading's tables, each computed once per process at its full size where the recipe
+// reads it (2 s on two cores each) and at one texel per layer where it does not (the shader
+// binds both): shading::transmissionTable as RG32F and shading::sphereTransmissionTable as
+// RGBA32F, their layers stacked down.
+struct GlassTables {
+    vulkan::Image transmission, sphere;
+};
+const std::vector<float>& transmissionTableOf(uint32_t size);
+const std::vector<float>& sphereTransmissionTableOf(uint32_t size);
+uint32_t transmissionTableSize(shading::GlassTransmission transmission);
+uint32_t sphereTransmissionTableSize(shading::GlassTransmission transmission);
+GlassTables glassTables(const vulkan::VulkanContext& context, shading::GlassTransmission transmission);
+
 // Two float4 per light, as Common/ImageBasedLighting.fxh's IblDiskLight reads them (one of zeros
 // when there is none: a storage buffer cannot be empty).
 std::vector<float> packEnvironmentLights(const std::vector<shading::EnvironmentLight>& lights);

@@ -11,6 +11,9 @@
 #include "render/environment_distribution.hpp"
 #include "render/lights_file.hpp"
 #include "render/sphere_grid.hpp"
+#include "shading/shading_recipe.hpp"
+#include "shading/transmission_table.hpp"
+#include "shading_maps.hpp"
 
 #include <fmt/core.h>
 
@@ -108,7 +111,9 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
 }
 
 kernels::RenderSplitSumParameters splitSumParameters(const PreviewInputs& maps) {
-    return {grid().columns(), kCellSize, maps.specular.mips, maps.parameters.recipe};
+    const auto& glass = shading::defaultRecipe().glass;
+    return {grid().columns(), kCellSize, maps.specular.mips, maps.parameters.recipe, uint32_t(glass.transmission),
+            float(glass.roughnessScale)};
 }
 
 std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathProgram& program, const PreviewInputs& inputs) {
@@ -117,7 +122,9 @@ std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathP
     const vulkan::Sampler linear(context, {});
     vulkan::Image image(context, {"SplitSum", &rgba32(), gridWidth(), gridHeight(), 1, 1, false, true});
     const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
-    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, maps.lobeTable, maps.lights, linear, image},
+    auto glass = bake::glassTables(context, shading::defaultRecipe().glass.transmission);
+    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, maps.lobeTable, glass.transmission,
+                                        glass.sphere, maps.lights, linear, image},
                                splitSumParameters(inputs));
     return image.download(context);
 }
@@ -128,6 +135,22 @@ std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlFor
     const uint32_t width = gridWidth(), height = gridHeight();
     const auto sphereBytes = std::as_bytes(std::span(sphereMaterials()));
     const auto spheres = glpath::bindStorageBuffer(context, form, "Spheres", sphereBytes.size(), sphereBytes);
+    const auto glassTransmission = shading::defaultRecipe().glass.transmission;
+    const auto layers = uint32_t(shading::kTransmissionEtas.size());
+    const uint32_t interfaceSize = bake::transmissionTableSize(glassTransmission);
+    const uint32_t sphereSize = bake::sphereTransmissionTableSize(glassTransmission);
+    const auto transmissionTable = glpath::texture2D(context, GL_RG32F, GL_RG, interfaceSize, interfaceSize * layers,
+                                                     bake::transmissionTableOf(interfaceSize));
+    const auto sphereTable = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, sphereSize, sphereSize * layers,
+                                               bake::sphereTransmissionTableOf(sphereSize));
+    // Each table is read through the sampler and, for its size, alone (GetDimensions).
+    for (const auto& [name, texture] : {std::pair{"TransmissionTable", &transmissionTable},
+                                        std::pair{"SphereTransmissionTable", &sphereTable}}) {
+        const std::string sampled = std::string(name) + "+LinearClamp";
+        glpath::bindTexture(context, form, sampled, *texture);
+        context.gl().BindSampler(glpath::slotOf(form, sampled), maps.sampler.name());
+        glpath::bindTexture(context, form, name, *texture);
+    }
     const auto image = glpath::texture2D(context, GL_RGBA32F, GL_RGBA, width, height);
     context.gl().BindImageTexture(glpath::slotOf(form, "SplitSum"), image.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const auto bound = glpath::bindParameters(context, form, splitSumParameters(inputs).members());

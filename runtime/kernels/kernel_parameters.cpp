@@ -77,7 +77,8 @@ NamedValues RenderReferenceParameters::members() const {
 }
 
 NamedValues RenderSplitSumParameters::members() const {
-    NamedValues values{{"Columns", {double(columns)}}, {"CellSize", {double(cellSize)}}, {"SpecularMips", {double(specularMips)}}};
+    NamedValues values{{"Columns", {double(columns)}}, {"CellSize", {double(cellSize)}}, {"SpecularMips", {double(specularMips)}},
+                       {"GlassTransmission", {double(glassTransmission)}}, {"GlassRoughnessScale", {double(glassRoughnessScale)}}};
     recipe.addTo(values);
     return values;
 }

@@ -108,11 +108,13 @@ struct RenderReferenceParameters {
     NamedValues members() const;
 };
 
-// SplitSumSpheresCS: the sphere grid, the specular cube's mips and face size, and the shading
-// recipe (Common/ImageBasedLighting.fxh's IblRecipe).
+// SplitSumSpheresCS: the sphere grid, the specular cube's mips and face size, the shading
+// recipe (Common/ImageBasedLighting.fxh's IblRecipe) and how it shades glass.
 struct RenderSplitSumParameters {
     uint32_t columns = 0, cellSize = 0, specularMips = 0;
     IblRecipeParameters recipe;
+    uint32_t glassTransmission = 0; // GLASS_SCHLICK, GLASS_TABULATED, GLASS_SPHERE
+    float glassRoughnessScale = 1;
     NamedValues members() const;
 };
 

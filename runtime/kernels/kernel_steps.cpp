@@ -208,6 +208,8 @@ void runRenderSplitSum(Kernel& kernel, const RenderSplitSumResources& resources,
     program.bind("IrradianceMap", resources.irradiance);
     program.bind("BrdfLut", resources.brdfLut);
     program.bind("LobeTable", resources.lobeTable);
+    program.bind("TransmissionTable", resources.transmissionTable);
+    program.bind("SphereTransmissionTable", resources.sphereTransmissionTable);
     program.bind("Lights", resources.lights);
     program.bind("LinearClamp", resources.sampler);
     program.bind("SplitSum", resources.image);

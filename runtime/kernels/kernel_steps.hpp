@@ -141,6 +141,8 @@ struct RenderSplitSumResources {
     vulkan::Image& irradiance;
     vulkan::Image& brdfLut;
     vulkan::Image& lobeTable;
+    vulkan::Image& transmissionTable;
+    vulkan::Image& sphereTransmissionTable;
     const vulkan::Buffer& lights;
     const vulkan::Sampler& sampler;
     vulkan::Image& image;

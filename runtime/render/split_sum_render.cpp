@@ -8,7 +8,8 @@ namespace iblkit::render {
 
 kernels::RenderSplitSumParameters splitSumParameters(const SphereGrid& grid, const BakedMaps& maps, uint32_t cellSize) {
     return {grid.columns(), cellSize, maps.schedule.mips,
-            bake::recipeParameters(*maps.recipe, maps.schedule, maps.lights.size(), maps.lightLevel)};
+            bake::recipeParameters(*maps.recipe, maps.schedule, maps.lights.size(), maps.lightLevel),
+            uint32_t(maps.recipe->glass.transmission), float(maps.recipe->glass.roughnessScale)};
 }
 
 SphereImage renderSplitSum(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,
@@ -19,8 +20,9 @@ SphereImage renderSplitSum(const vulkan::VulkanContext& context, kernels::Kernel
     const vulkan::Sampler linear(context, {});
     const auto materials = packSpheres(grid);
     const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(materials)), "Spheres");
-    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance.cube, maps.lut, maps.lobeTable, *maps.lightBuffer,
-                                        linear, image},
+    auto glass = bake::glassTables(context, maps.recipe->glass.transmission);
+    kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance.cube, maps.lut, maps.lobeTable, glass.transmission,
+                                        glass.sphere, *maps.lightBuffer, linear, image},
                                splitSumParameters(grid, maps, cellSize));
     progress.addDeviceTime(kernel.takeTotals().deviceMilliseconds);
     SphereImage result{width, height, image.download(context)};

@@ -1,6 +1,7 @@
 #include "shading/lobe_table.hpp"
 
 #include "reference/parallel_rows.hpp"
+#include "shading/half_vector_nodes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -30,28 +31,7 @@ double schlickG1(double cosine, double roughness) {
     return cosine / (cosine * (1 - k) + k);
 }
 
-// Nodes of the GGX half-vector distribution at N: u = tan²θ / (α² + tan²θ) is uniform for
-// D(h) cos θ_h dω_h / (2π dφ), and s = -ln(1 - u) spaces them so that GGX's long tail (whose
-// sin² θ moment falls off only as 1 / (1 - u)) is resolved down to 1 - u = α² / 10⁴, where
-// tan θ_h = 100 (θ_h within 0.6 degrees of the horizon). Each node carries its share of
-// D cos θ_h dω_h over the hemisphere of h.
 constexpr int kS = 256, kPhi = 64; // φ over [0, π]: the lobe is symmetric about the plane of N and V
-
-struct HalfVectorNode {
-    double cosH, sinH, weight;
-};
-
-std::vector<HalfVectorNode> halfVectorNodes(double alpha) {
-    const double tail = std::log(1e4 / (alpha * alpha));
-    std::vector<HalfVectorNode> nodes;
-    for (int i = 0; i < kS; ++i) {
-        const double s = tail * (i + 0.5) / kS, oneMinusU = std::exp(-s);
-        const double tan2 = alpha * alpha * (1 - oneMinusU) / oneMinusU;
-        const double cosH = 1 / std::sqrt(1 + tan2);
-        nodes.push_back({cosH, std::sqrt(tan2) * cosH, oneMinusU * tail / kS});
-    }
-    return nodes;
-}
 
 } // namespace
 
@@ -66,7 +46,7 @@ double kernelTangentVariance(double roughness, LobeWeighting weighting) {
     // dω_l = 4 cos θ_h dω_h, so each node carries the kernel's weighting of d·L (D cancels into the
     // nodes' own weight).
     double spread = 0, total = 0;
-    for (const auto& node : halfVectorNodes(roughness * roughness)) {
+    for (const auto& node : halfVectorNodes(roughness * roughness, kS)) {
         const double cosL = 2 * node.cosH * node.cosH - 1;
         if (cosL <= 0) continue;
         const double w = node.weight * (weighting == LobeWeighting::NdotL ? cosL : schlickG1(cosL, roughness));
@@ -96,7 +76,7 @@ LobeFit fitLobe(double ndotv, double roughness, LobeWeighting weighting) {
     if (roughness <= 1e-4) return {1.f, float(roughness), float(roughness), 0.f};
     const double alpha = roughness * roughness;
     // First moment, then the second moments about the mean direction.
-    const auto nodes = halfVectorNodes(alpha);
+    const auto nodes = halfVectorNodes(alpha, kS);
     // f (N·L) dω_l = D G1(L) G1(V) / (4 N·V) · 4 (V·H) dω_h, and the nodes carry D cos θ_h dω_h.
     const auto forEachDirection = [&](const auto& visit) {
         for (int j = 0; j < kPhi; ++j) {

@@ -40,13 +40,18 @@ ShadingRecipe withLights(ShadingRecipe recipe, ExtractionSettings lights) {
     return recipe;
 }
 
+ShadingRecipe glassBy(ShadingRecipe recipe, GlassShading glass) {
+    recipe.glass = glass;
+    return recipe;
+}
+
 std::vector<ShadingRecipe> makeBenchRecipes() {
     using enum LobeWeighting;
     using enum LodMapping;
     using D = LookupDirection;
     using L = LookupLobe;
     return {
-        recipe("kit", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip),
+        glassBy(recipe("kit", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {GlassTransmission::Sphere, 1}),
         recipe("document", NdotL, Linear, D::Reflected, L::Roughness, false),
         recipe("quadratic", NdotL, Quadratic, D::Reflected, L::Roughness, false),
         recipe("babylon", NdotL, Babylon, D::Reflected, L::Roughness, false),
@@ -64,6 +69,11 @@ std::vector<ShadingRecipe> makeBenchRecipes() {
         withLights(recipe("lights-within-10", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {50, 0.02, 0.1745, 8}),
         withLights(recipe("lights-above-20", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {20, 0.02, 0.1, 8}),
         irradianceFrom(recipe("irradiance-64", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), 64),
+        glassBy(recipe("glass-tabulated", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip),
+                {GlassTransmission::Tabulated, 1}),
+        glassBy(recipe("glass-tabulated-0.5", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip),
+                {GlassTransmission::Tabulated, 0.5}),
+        glassBy(recipe("glass-schlick", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {GlassTransmission::Schlick, 1}),
     };
 }
 
@@ -77,6 +87,15 @@ std::string_view nameOf(LookupDirection direction) {
     case LookupDirection::Fitted: return "fitted";
     }
     return "reflected";
+}
+
+std::string_view nameOf(GlassTransmission transmission) {
+    switch (transmission) {
+    case GlassTransmission::Schlick: return "Schlick";
+    case GlassTransmission::Tabulated: return "tabulated";
+    case GlassTransmission::Sphere: return "sphere";
+    }
+    return "Schlick";
 }
 
 std::string_view nameOf(LookupLobe lookup) {

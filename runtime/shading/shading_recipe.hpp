@@ -20,6 +20,18 @@ enum class LookupLobe : uint32_t { Roughness = 0, Fitted = 1, Pair = 2 };
 std::string_view nameOf(LookupDirection direction);
 std::string_view nameOf(LookupLobe lookup);
 
+// How glass reads the maps (hlsl/SplitSumSpheresCS.hlsl's GlassSplitSum): along the smooth
+// sphere's refraction, at the surface's roughness times roughnessScale, passing Schlick's 1 - F
+// at each crossing or the transmission table's share of the rough interface
+// (shading/transmission_table.hpp); or as the sphere transmission table's fit of the rough
+// sphere's exiting light (shading/sphere_transmission.hpp), where roughnessScale plays no part.
+enum class GlassTransmission : uint32_t { Schlick = 0, Tabulated = 1, Sphere = 2 };
+std::string_view nameOf(GlassTransmission transmission);
+struct GlassShading {
+    GlassTransmission transmission = GlassTransmission::Schlick;
+    double roughnessScale = 1;
+};
+
 // How the maps are made and read: one record, written by the bake into its manifest and read by
 // the shading (docs/shading.md measures each against the Monte Carlo reference).
 struct ShadingRecipe {
@@ -37,6 +49,7 @@ struct ShadingRecipe {
     double lobeOverLight = 0;
     // The irradiance cube sums the source's first mip of at most this size.
     uint32_t irradianceSource = 32;
+    GlassShading glass;
 };
 
 // The documents' recipe: N·L lobe, linear lods, R, one lookup at the surface's roughness, no lights.

@@ -289,11 +289,25 @@ TEST(RenderSplitSum, UnderUniformLightTheSplitSumIsTheReferenceOfItsOwnBsdf) {
     const auto rendered = renderGrid(uniformEnvironment(1.f), {}, ReferenceBsdf::SplitSum, 0.001);
     const auto spheres = sphereErrors(grid(), rendered.reference, rendered.splitSum, kCell, kFloorShare);
     for (const auto& sphere : spheres) {
-        if (sphere.transmittance > 0) continue; // rough glass loses what the split sum's glass keeps
+        if (sphere.transmittance > 0) continue; // GlassUnderUniformLight… below
         // A uniform environment leaves the split sum only the LUT (within 1e-4) and the irradiance
         // of a constant (exact): what remains is the reference's noise over a sphere's 57 pixels at
         // 8192 paths, measured at 0.31 % at most.
         EXPECT_LT(std::abs(sphere.totalRelativeError), 0.006) << "row " << sphere.row << " column " << sphere.column;
+    }
+}
+
+TEST(RenderSplitSum, UnderUniformLightTheKitsGlassPassesWhatTheReferencesGlassPasses) {
+    // A uniform environment leaves the kit's glass only the sphere transmission table's energy.
+    // Up to roughness 0.4 its sums are within 0.09 % (the reference's noise at 8192 paths, 0.31 %
+    // at most, bounds them); rougher, the table leaves out the band of L where the document's BTDF
+    // counts half vectors pointing inside, which the reference integrates: -0.4 % at 0.5 to -3.4 %
+    // at roughness 1. (Engines' (1 - F)² passes +100 to +660 % too much there: docs/shading.md.)
+    const auto rendered = renderGrid(uniformEnvironment(1.f), {}, ReferenceBsdf::SplitSum, 0.001);
+    for (const auto& sphere : sphereErrors(grid(), rendered.reference, rendered.splitSum, kCell, kFloorShare)) {
+        if (sphere.transmittance == 0) continue;
+        const double bound = sphere.roughness < 0.45 ? 0.006 : 0.04;
+        EXPECT_LT(std::abs(sphere.totalRelativeError), bound) << "column " << sphere.column;
     }
 }
 
