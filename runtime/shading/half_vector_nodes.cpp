@@ -18,14 +18,18 @@ std::vector<HalfVectorNode> halfVectorNodes(double alpha, int count) {
     return nodes;
 }
 
+double ggxDistribution(double cosH, double alpha) {
+    const double a2 = alpha * alpha, d = cosH * cosH * (a2 - 1) + 1;
+    return a2 / (std::numbers::pi * d * d);
+}
+
 std::vector<HalfVectorNode> horizonNodes(double alpha, int count) {
-    const double from = std::atan(100.0), step = (std::numbers::pi / 2 - from) / count, a2 = alpha * alpha;
+    const double from = std::atan(100.0), step = (std::numbers::pi / 2 - from) / count;
     std::vector<HalfVectorNode> nodes;
     nodes.reserve(size_t(count));
     for (int i = 0; i < count; ++i) {
         const double theta = from + (i + 0.5) * step, cosH = std::cos(theta), sinH = std::sin(theta);
-        const double d = cosH * cosH * (a2 - 1) + 1, ggx = a2 / (std::numbers::pi * d * d);
-        nodes.push_back({cosH, sinH, 2 * std::numbers::pi * ggx * cosH * sinH * step});
+        nodes.push_back({cosH, sinH, 2 * std::numbers::pi * ggxDistribution(cosH, alpha) * cosH * sinH * step});
     }
     return nodes;
 }

@@ -15,6 +15,10 @@ struct HalfVectorNode {
 
 std::vector<HalfVectorNode> halfVectorNodes(double alpha, int count);
 
+// GGX's D at cos θ_h for α (D's argument is squared: a half vector pointing inside counts as its
+// mirror image, as the document's D has it).
+double ggxDistribution(double cosH, double alpha);
+
 // The rest of the hemisphere, from tan θ_h = 100 to the horizon, by the midpoint rule in θ_h: for
 // integrands that grow as 1 / cos θ_h there, which the nodes above would miss (a refracted lobe's
 // is one; at α = 0.8, 0.4 % of its integral lies past tan θ_h = 100).

@@ -22,6 +22,13 @@ constexpr int kBandCosines = 96, kBandAngles = 48; // the inward band's grid ove
 
 double fifthPower(double x) { return x * x * x * x * x; }
 
+double dielectricF0(double eta) { return (1 - eta) * (1 - eta) / ((1 + eta) * (1 + eta)); }
+
+// 1 - F, Schlick's F on the outside's cosine with the facet's normal.
+double schlickTransmitted(double f0, const glm::dvec3& outside, const glm::dvec3& h) {
+    return (1 - f0) * (1 - fifthPower(1 - std::clamp(glm::dot(outside, h), 0.0, 1.0)));
+}
+
 double schlickG1(double cosine, double roughness) {
     const double k = roughness * roughness / 2;
     return cosine / (cosine * (1 - k) + k);
@@ -39,24 +46,20 @@ double inwardBandShare(const glm::dvec3& V, double roughness, double eta, Crossi
     // eta_L L.z + eta_V V.z > 0: |L.z| below eta_V |V.z| / eta_L entering, above it leaving.
     const double edge = std::min(etaV * std::abs(V.z) / etaL, 1.0);
     const double low = entering ? 0 : edge, width = entering ? edge : 1 - edge;
-    const double f0 = std::pow((1 - eta) / (1 + eta), 2), a2 = std::pow(roughness, 4);
+    const double f0 = dielectricF0(eta), alpha = roughness * roughness;
     double sum = 0;
     for (int i = 0; i < kBandCosines; ++i) {
         const double c = low + width * (i + 0.5) / kBandCosines, s = std::sqrt(1 - c * c);
         for (int j = 0; j < kBandAngles; ++j) {
             const double phi = std::numbers::pi * (j + 0.5) / kBandAngles;
             const glm::dvec3 L(s * std::cos(phi), s * std::sin(phi), V.z > 0 ? -c : c);
-            const glm::dvec3 sum3 = etaL * L + etaV * V;
-            const glm::dvec3 h = -glm::normalize(sum3);
+            const glm::dvec3 h = -glm::normalize(etaL * L + etaV * V);
             if (h.z >= 0) continue;
-            const glm::dvec3 outside = entering ? V : L;
-            const double fresnel = f0 + (1 - f0) * fifthPower(1 - std::clamp(glm::dot(outside, h), 0.0, 1.0));
             const double ldoth = glm::dot(L, h), vdoth = glm::dot(V, h), denominator = etaL * ldoth + etaV * vdoth;
-            const double d = h.z * h.z * (a2 - 1) + 1, ggx = a2 / (std::numbers::pi * d * d);
             const double g = schlickG1(c, roughness) * schlickG1(std::abs(V.z), roughness);
-            // f |N·L| with f's 1 / |N·L| cancelled, times (eta_L / eta_V)².
-            sum += std::abs(ldoth * vdoth) * etaV * etaV * (1 - fresnel) / (denominator * denominator) * g / std::abs(V.z) * ggx *
-                   (etaL * etaL) / (etaV * etaV);
+            // f |N·L| with f's 1 / |N·L| cancelled, times (eta_L / eta_V)²: the BTDF's eta_V² cancels.
+            sum += std::abs(ldoth * vdoth) * etaL * etaL * schlickTransmitted(f0, entering ? V : L, h) / (denominator * denominator) *
+                   g / std::abs(V.z) * ggxDistribution(h.z, alpha);
         }
     }
     return sum * 2 * std::numbers::pi * width / (double(kBandCosines) * kBandAngles);
@@ -74,11 +77,8 @@ FacetRefraction refractThroughFacet(const glm::dvec3& V, const glm::dvec3& h, do
     if (vdoth <= 0) return {};
     const glm::dvec3 L = glm::refract(-V, facing, entering ? 1 / eta : eta);
     if (glm::dot(L, L) == 0 || L.z * V.z >= 0) return {};
-    const glm::dvec3 outside = entering ? V : L;
-    const double f0 = (1 - eta) * (1 - eta) / ((1 + eta) * (1 + eta));
-    const double fresnel = f0 + (1 - f0) * fifthPower(1 - std::clamp(glm::dot(outside, h), 0.0, 1.0));
     const double g = schlickG1(std::abs(L.z), roughness) * schlickG1(std::abs(V.z), roughness);
-    return {L, vdoth * (1 - fresnel) * g / (std::abs(V.z) * h.z)};
+    return {L, vdoth * schlickTransmitted(dielectricF0(eta), entering ? V : L, h) * g / (std::abs(V.z) * h.z)};
 }
 
 double transmittedShare(double ndotv, double roughness, double eta, Crossing crossing) {
