@@ -173,11 +173,15 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
     return nearN || acrossHorizon;
 }
 
-// llvmpipe ends a loop after 65535 iterations without a word, and the walk takes one per term.
-// Bright blocks open from farther away, so no budget bounds the terms of every environment: a
-// texel stops opening blocks once it has summed this many, and the rest of its walk (the top
-// level's blocks and at most three siblings per level) is taken whole.
-static const uint OPEN_LIMIT = 65000u;
+// llvmpipe counts every iteration of all of an invocation's loops against one budget of 65535
+// (Mesa's gallivm loop limiter: one counter per shader, for the SIMD vector of texels it runs
+// together) and past it ends them all without a word. A term costs the vector an iteration of the
+// walk, the entries of the two inner loops, and as many descents and climbs as its farthest
+// texel makes, each at most the tree's depth. Bright blocks open from farther away, so no budget
+// bounds the walk of every environment: a texel stops opening blocks once its terms at that cost
+// leave only what the rest of its walk needs (the top level's blocks and at most three siblings
+// per level, taken whole).
+static const uint LOOP_BUDGET = 65535u;
 
 [numthreads(8, 8, 1)]
 void main( uint3 DTid : SV_DispatchThreadId )
@@ -196,7 +200,8 @@ void main( uint3 DTid : SV_DispatchThreadId )
     float weight = 0.f;
     uint topSize = max( baseSize >> TopLevel, 1u );
     float meanLuminance = MeanLuminance( firstbithigh( baseSize ) ); // the 1x1 level of the full chain
-    uint openLimit = OPEN_LIMIT - min( 6u * topSize * topSize, OPEN_LIMIT );
+    uint termCost = 3u + 2u * ( TopLevel - FineLevel );
+    uint openLimit = LOOP_BUDGET / termCost - min( 6u * topSize * topSize + 3u * TopLevel + 1u, LOOP_BUDGET / termCost );
     uint terms = 0;
     uint face = 0, level = TopLevel;
     uint2 xy = 0;

@@ -55,6 +55,7 @@ StructuredBuffer<float> EnvironmentCdf;
 StructuredBuffer<float4> Lights;
 // Pixels as y * width + x.
 StructuredBuffer<uint> ActivePixels;
+// Per pixel: the sum of the paths' radiance, and in alpha how many paths ran.
 RWTexture2D<float4> RadianceSum;
 RWTexture2D<float4> SquareSum;
 
@@ -407,12 +408,16 @@ void main( uint3 DTid : SV_DispatchThreadId )
         return;
     float3 sum = ( float3 )0.f, squares = ( float3 )0.f;
     RandomState rng = SeedRandom( Seed + FirstSample, index );
+    // The paths that ran, which the host checks: a driver may end loops early (llvmpipe, past
+    // 65535 iterations of all of an invocation's loops together).
+    float traced = 0.f;
     for ( uint i = 0u; i < SampleCount; ++i )
     {
         float3 radiance = TracePath( hit, rng );
         sum += radiance;
         squares += radiance * radiance;
+        traced += 1.f;
     }
-    RadianceSum[pixel] = RadianceSum[pixel] + float4( sum, 0.f );
+    RadianceSum[pixel] = RadianceSum[pixel] + float4( sum, traced );
     SquareSum[pixel] = SquareSum[pixel] + float4( squares, 0.f );
 }

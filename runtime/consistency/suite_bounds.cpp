@@ -133,7 +133,7 @@ std::string boundsRationale() {
            "alone) and lands 6.7e-6 from float, 7.2e-6 from double, RMS 4.6e-7 and 6.9e-7 (5.5e-7 on OpenGL), on "
            "values up to ~9.\n"
            "- **Known divergence: PrefilterConvolution on path b.** The -O form returns wrong values (largest "
-           "error 16, RMS 0.84, on values up to ~9): on lavapipe (Mesa 22.3), SPIRV-Tools 2023.1's "
+           "error 15–16, RMS 0.8, on values up to ~9): on lavapipe (Mesa 22.3), SPIRV-Tools 2023.1's "
            "performance passes turn the tree walk into SPIR-V that llvmpipe executes wrong. The -O SPIR-V itself "
            "is right: SPIRV-Cross's HLSL of it, compiled again without -O, matches the reference on lavapipe to "
            "6e-6 (tried with the walk as one loop, as two nested loops, with and without a struct, with single-exit "

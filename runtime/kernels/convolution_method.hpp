@@ -28,11 +28,14 @@ struct ConvolutionPlan {
 // 0 or above kMaxConvolutionBudget.
 inline constexpr double kFineTexelsPerLobe = 12;
 inline constexpr double kHorizonTexels = 16;
-// The shader's walk takes one loop iteration per term, and llvmpipe ends a loop after 65535
-// iterations without a word. Measured on a 256² source, a texel at a face corner sums up to
-// 1.02 terms per unit of budget (33333 at 32768, 55329 at 65536, roughness 0.2): budgets above
-// 32768 are refused, and the shader stops opening blocks before the limit whatever the light.
-inline constexpr uint32_t kMaxConvolutionBudget = 32768;
+// llvmpipe ends every loop of an invocation once all of them together have run 65535 iterations,
+// counted for the SIMD vector of texels it runs at once: each term of the walk costs the vector up
+// to 3 + 2 × the tree's depth (7) of them, 17, so a walk of more than about 3850 terms loses the
+// rest of its sum without a word (at 32768, mip 1 of a 64² source was 14 times off). Measured on a
+// 256² source, a texel at a face corner sums up to 1.02 terms per unit of budget, and bright
+// blocks add about 15 %: budgets above 2048 are refused, and the shader stops opening blocks
+// within the device's budget whatever the light.
+inline constexpr uint32_t kMaxConvolutionBudget = 2048;
 ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t budget);
 
 // The convolution method: the energy pyramid of a source (built once per source image, on its

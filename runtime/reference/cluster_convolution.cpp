@@ -11,7 +11,8 @@ namespace {
 template <typename T> using vec4 = glm::vec<4, T>;
 
 constexpr float kHorizonOpen = 2;
-constexpr uint32_t kOpenLimit = 65000;
+// The shader's LOOP_BUDGET: llvmpipe's iterations of all of an invocation's loops together.
+constexpr uint32_t kLoopBudget = 65535;
 
 template <typename T>
 vec3<T> blockCentre(uint32_t face, uint32_t x, uint32_t y, uint32_t size) {
@@ -164,7 +165,9 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
     T weight = 0;
     const uint32_t topSize = std::max(pyramid.size >> tree.topLevel, 1u);
     const T meanLight = meanLuminance(pyramid);
-    const uint32_t openLimit = kOpenLimit - std::min(6 * topSize * topSize, kOpenLimit);
+    const uint32_t termCost = 3 + 2 * (tree.topLevel - tree.fineLevel);
+    const uint32_t openLimit =
+        kLoopBudget / termCost - std::min(6 * topSize * topSize + 3 * tree.topLevel + 1, kLoopBudget / termCost);
     uint32_t terms = 0;
     Block block{0, 0, 0, tree.topLevel};
     while (block.face < 6) {

@@ -1,6 +1,7 @@
 #include "render/reference_render.hpp"
 
 #include "render/environment_distribution.hpp"
+#include "render/render_error.hpp"
 #include "render/render_settings.hpp"
 
 #include "buffer.hpp"
@@ -105,7 +106,36 @@ uint32_t batchSamples(size_t covered, size_t active) {
     return samples;
 }
 
+// Every pixel traced as many paths as it was dispatched: the shader counts them in the radiance
+// sum's alpha.
+void requireEveryPath(const ReferenceImage& image, const std::vector<uint32_t>& active, const std::vector<float>& sums) {
+    for (const uint32_t pixel : active) {
+        const float ran = sums[4 * pixel + 3];
+        if (ran != float(image.samples[pixel]))
+            throw RenderError(fmt::format("the device ended the reference's loops early: pixel {} traced {} of {} paths "
+                                          "(a loop iteration budget per invocation; see docs/render.md)",
+                                          pixel, ran, image.samples[pixel]));
+    }
+}
+
+uint32_t searchSteps(uint64_t count) {
+    uint32_t steps = 0;
+    while ((uint64_t(1) << steps) < count) ++steps;
+    return steps;
+}
+
 } // namespace
+
+uint32_t pathsWithinLoopBudget(uint32_t distributionSize, size_t lightCount) {
+    constexpr uint32_t kLoopBudget = 65535, kVertices = 4;
+    // Each loop's entry may cost one iteration more than its trips: the depth loop's, and per
+    // vertex the search's and the lights'.
+    const uint64_t perVertex = 1 + (searchSteps(uint64_t(6) * distributionSize * distributionSize) + 1) + (lightCount + 1);
+    const uint64_t perPath = 2 + kVertices * perVertex;
+    uint32_t paths = 1;
+    while (paths * 2 <= kMaxBatchSamples && uint64_t(paths) * 2 * perPath <= kLoopBudget) paths *= 2;
+    return paths;
+}
 
 ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,
                                vulkan::Image& environment, const std::vector<RenderLight>& lights, const SphereImage& coverage,
@@ -132,18 +162,26 @@ ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Ke
     const size_t covered = active.size();
     kernels::RenderReferenceParameters parameters{grid.columns(), options.cellSize, 0, 0, options.seed,
                                                   uint32_t(lights.size()), distribution.faceSize, distribution.mip, 0};
-    for (uint32_t done = 0; !active.empty(); done += parameters.sampleCount) {
+    const uint32_t perDispatch =
+        options.pathsPerDispatch ? options.pathsPerDispatch : pathsWithinLoopBudget(distribution.faceSize, lights.size());
+    uint32_t batch = 0;
+    for (uint32_t done = 0; !active.empty(); done += batch) {
         const auto activeBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(active)), "ActivePixels");
-        parameters.firstSample = done;
-        parameters.sampleCount = std::min(batchSamples(covered, active.size()), options.maxSamples - done);
+        batch = std::min(batchSamples(covered, active.size()), options.maxSamples - done);
         parameters.activeCount = uint32_t(active.size());
-        kernels::runRenderReference(kernel, {spheres, environment, cdf, lightBuffer, activeBuffer, sums.radiance, sums.squares},
-                                    parameters);
-        for (const uint32_t pixel : active) image.samples[pixel] += parameters.sampleCount;
-        estimate(image, active, sums.radiance.download(context), sums.squares.download(context));
+        for (uint32_t part = 0; part < batch; part += perDispatch) {
+            parameters.firstSample = done + part;
+            parameters.sampleCount = std::min(perDispatch, batch - part);
+            kernels::runRenderReference(kernel, {spheres, environment, cdf, lightBuffer, activeBuffer, sums.radiance, sums.squares},
+                                        parameters);
+        }
+        for (const uint32_t pixel : active) image.samples[pixel] += batch;
+        const auto radiance = sums.radiance.download(context);
+        requireEveryPath(image, active, radiance);
+        estimate(image, active, radiance, sums.squares.download(context));
         active = stillActive(image, active, options);
         progress.advance(1.0 - double(active.size()) / double(covered),
-                         fmt::format("{} paths, {} pixels to go", done + parameters.sampleCount, active.size()));
+                         fmt::format("{} paths, {} pixels to go", done + batch, active.size()));
     }
     summarize(image, options);
     image.deviceMilliseconds = kernel.takeTotals().deviceMilliseconds;

@@ -20,8 +20,8 @@ inline constexpr uint32_t kMaxCellSize = 192;
 // (kDefaultStandardErrorBound of their value): a pixel stops once within it, never before
 // kMinSamples (so that a rare bright path has had its chances to show in the variance), never past
 // --samples. A batch is kBatchSamples paths a pixel, more as fewer pixels remain (up to
-// kMaxBatchSamples, far below llvmpipe's 65535 iterations a loop). At 2 % a pixel's noise moves a
-// sphere's mean error by about 1.6 % at most.
+// kMaxBatchSamples), run as dispatches within llvmpipe's loop budget (reference_render.hpp). At
+// 2 % a pixel's noise moves a sphere's mean error by about 1.6 % at most.
 inline constexpr uint32_t kBatchSamples = 64;
 inline constexpr uint32_t kMaxBatchSamples = 16384;
 inline constexpr uint32_t kMinSamples = 256;

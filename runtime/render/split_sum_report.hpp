@@ -8,9 +8,10 @@
 
 namespace iblkit::render {
 
-// The environments docs/split-sum-error.md is measured on: the built-in sky and two of
-// blender-data's worlds, one lit by a sun through leaves, one by an open sky between walls.
-inline const std::vector<std::string> kReportEnvironments = {"sky", "forest", "courtyard"};
+// The environments docs/split-sum-error.md is measured on: the built-in sky and three of
+// blender-data's worlds, one lit by a sun through leaves, one by an open sky between walls, one by
+// lamps and windows indoors.
+inline const std::vector<std::string> kReportEnvironments = {"sky", "forest", "courtyard", "interior"};
 
 struct ReportOptions {
     std::filesystem::path markdown;             // docs/split-sum-error.md; its pictures go beside it, under split-sum/

@@ -73,7 +73,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.size = 0; }, "--size");
     refused([](BakeSettings& s) { s.size = 32768; }, "--size");
     refused([](BakeSettings& s) { s.samples = 0; }, "--samples");
-    refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 32768)");
+    refused([](BakeSettings& s) { s.samples = 65536; }, "--samples 65536 is out of range (1 to 2048)");
     refused([](BakeSettings& s) {
         s.specularMethod = "pyramid";
         s.samples = 5;

@@ -247,7 +247,7 @@ TEST_F(BakeCli, SizesOutOfRangeOrBeyondMemoryAreRefused) {
     expectFailure({"bake", "-o", at("out"), "--lut-format", "rgba8"}, "--lut-format");
     expectFailure({"bake", "-o", at("out"), "--mips", "12", "--size", "64"}, "--mips 12");
     expectFailure({"bake", "-o", at("out"), "--method", "nope"}, "--method nope is not a prefilter method");
-    expectFailure({"bake", "-o", at("out"), "--samples", "40000"}, "--samples 40000 is out of range (1 to 32768)");
+    expectFailure({"bake", "-o", at("out"), "--samples", "40000"}, "--samples 40000 is out of range (1 to 2048)");
 }
 
 TEST_F(BakeCli, AFolderThatIsNotABakeIsNeverReplaced) {

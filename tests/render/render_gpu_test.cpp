@@ -5,6 +5,7 @@
 // first test must catch.
 #include "render/baked_maps.hpp"
 #include "render/reference_render.hpp"
+#include "render/render_error.hpp"
 #include "render/render_settings.hpp"
 #include "render/sphere_errors.hpp"
 #include "render/sphere_grid.hpp"
@@ -51,7 +52,8 @@ struct Rendered {
 
 // 8192 paths per pixel, fewer where every pixel is within `bound` sooner.
 Rendered renderGrid(const bake::EnvironmentInput& input, const std::vector<RenderLight>& lights, ReferenceBsdf bsdf,
-                    double bound, const kernels::ShaderFiles& files = kernels::embeddedShaderFiles()) {
+                    double bound, const kernels::ShaderFiles& files = kernels::embeddedShaderFiles(),
+                    uint32_t pathsPerDispatch = 0) {
     const vulkan::VulkanContext context(vulkan::ContextOptions{});
     bake::BakeProgress progress(true);
     auto maps = bakeMaps(context, input, shading::defaultRecipe(), progress);
@@ -60,7 +62,7 @@ Rendered renderGrid(const bake::EnvironmentInput& input, const std::vector<Rende
         context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(bsdf)), {}, {}, files));
     auto splitSum = renderSplitSum(context, splitSumKernel, grid(), maps, kCell, progress);
     auto reference = renderReference(context, referenceKernel, grid(), maps.source, lights, splitSum,
-                                     {kCell, 8192, 7, kFloorShare, bound}, progress);
+                                     {kCell, 8192, 7, kFloorShare, bound, pathsPerDispatch}, progress);
     return {std::move(splitSum), std::move(reference)};
 }
 
@@ -283,6 +285,26 @@ TEST(BrokenRender, AnEnvironmentDensityWithoutItsSolidAngleFailsTheDirectSum) {
     ASSERT_NE(at, std::string::npos) << "the density's solid angle moved: update the mutation";
     source.replace(at, jacobian.size(), "return probability * halfSize * halfSize;");
     EXPECT_GT(worstCentreDeviation(files), 20.0);
+}
+
+TEST(RenderReference, ADispatchStaysWithinTheDevicesLoopBudget) {
+    // 1 + 4 × (the depth loop, a search of 6 × 256² texels in 19 steps, no lights), each loop
+    // entered once more: 90 iterations a path, 728 within 65535, 512 in a power of 2.
+    EXPECT_EQ(pathsWithinLoopBudget(256, 0), 512u);
+    EXPECT_EQ(pathsWithinLoopBudget(32, 0), 512u); // 13 steps: 66 a path, 992 within the budget
+    EXPECT_EQ(pathsWithinLoopBudget(256, 64), 128u);
+}
+
+TEST(BrokenRender, DispatchesPastTheLoopBudgetAreRefusedNotTruncated) {
+    // llvmpipe ends every loop of an invocation once all of them together have run 65535
+    // iterations: the sunlit sky's last pixels, at batches of thousands of paths in one
+    // dispatch, would trace a fraction of them and read as converged and too dark.
+    try {
+        renderGrid(sunlitEnvironment(), {}, ReferenceBsdf::Document, 0.02, kernels::embeddedShaderFiles(), 8192);
+        ADD_FAILURE() << "a dispatch of 8192 paths a pixel ran without a shortfall";
+    } catch (const RenderError& error) {
+        EXPECT_NE(std::string(error.what()).find("ended the reference's loops early"), std::string::npos) << error.what();
+    }
 }
 
 TEST(RenderSplitSum, UnderUniformLightTheSplitSumIsTheReferenceOfItsOwnBsdf) {

@@ -121,7 +121,7 @@ void addRenderReportCommand(CLI::App& app) {
         "render-report", "Measure the split sum's error with iblkit render on several environments and write the page");
     command->add_option("--out", arguments->options.markdown, "The page to write (docs/split-sum-error.md)")->required();
     command->add_option("--cache", arguments->cache, "Where blender-data's worlds are fetched to (default bench-cache)");
-    command->add_option("--environments", arguments->environments, "sky and blender's worlds (default sky forest courtyard)")
+    command->add_option("--environments", arguments->environments, "sky and blender's worlds (default sky forest courtyard interior)")
         ->delimiter(',');
     command->add_option("--device", arguments->options.context.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
