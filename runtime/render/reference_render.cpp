@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace iblkit::render {
@@ -118,23 +119,17 @@ void requireEveryPath(const ReferenceImage& image, const std::vector<uint32_t>& 
     }
 }
 
-uint32_t searchSteps(uint64_t count) {
-    uint32_t steps = 0;
-    while ((uint64_t(1) << steps) < count) ++steps;
-    return steps;
-}
-
 } // namespace
 
 uint32_t pathsWithinLoopBudget(uint32_t distributionSize, size_t lightCount) {
-    constexpr uint32_t kLoopBudget = 65535, kVertices = 4;
-    // Each loop's entry may cost one iteration more than its trips: the depth loop's, and per
-    // vertex the search's and the lights'.
-    const uint64_t perVertex = 1 + (searchSteps(uint64_t(6) * distributionSize * distributionSize) + 1) + (lightCount + 1);
+    constexpr uint64_t kLoopBudget = 65535, kVertices = 4;
+    // The environment draw's binary search takes ceil(log2(texels)) steps; each loop's entry may
+    // cost one iteration more than its trips: the depth loop's, and per vertex the search's and
+    // the lights'.
+    const uint64_t searchSteps = std::bit_width(uint64_t(6) * distributionSize * distributionSize - 1);
+    const uint64_t perVertex = 1 + (searchSteps + 1) + (lightCount + 1);
     const uint64_t perPath = 2 + kVertices * perVertex;
-    uint32_t paths = 1;
-    while (paths * 2 <= kMaxBatchSamples && uint64_t(paths) * 2 * perPath <= kLoopBudget) paths *= 2;
-    return paths;
+    return uint32_t(std::bit_floor(std::clamp<uint64_t>(kLoopBudget / perPath, 1, kMaxBatchSamples)));
 }
 
 ReferenceImage renderReference(const vulkan::VulkanContext& context, kernels::Kernel& kernel, const SphereGrid& grid,

@@ -137,7 +137,8 @@ std::string describe(const shading::ShadingRecipe& recipe) {
         text += fmt::format(", lights above {:g}× the mean carrying {:g} % within {:.1f}°", recipe.lights->threshold,
                             100 * recipe.lights->minShare, recipe.lights->maxRadius * 180 / 3.14159265358979);
     text += fmt::format(", glass: {} transmission", shading::nameOf(recipe.glass.transmission));
-    if (recipe.glass.transmission != shading::GlassTransmission::Sphere && recipe.glass.roughnessScale != 1) text += fmt::format(" at {:g}× the roughness", recipe.glass.roughnessScale);
+    if (recipe.glass.transmission != shading::GlassTransmission::Sphere && recipe.glass.roughnessScale != 1)
+        text += fmt::format(" at {:g}× the roughness", recipe.glass.roughnessScale);
     return text;
 }
 
