@@ -5,169 +5,105 @@ using namespace metal;
 
 struct IrradianceParameter
 {
-    uint SourceMip;
+    uint MomentSize;
 };
 
-constant int _899 = {};
-
-kernel void main0(constant IrradianceParameter& _222 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float, access::write> Irradiance [[texture(1)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]], uint gl_LocalInvocationIndex [[thread_index_in_threadgroup]])
+struct Moments
 {
-    threadgroup float3 ChunkDirection[64];
+    float4 _data[1];
+};
+
+kernel void main0(constant IrradianceParameter& _133 [[buffer(0)]], const device Moments& Moments_1 [[buffer(1)]], texture2d_array<float, access::write> Irradiance [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]], uint gl_LocalInvocationIndex [[thread_index_in_threadgroup]])
+{
     threadgroup float3 ChunkEnergy[64];
+    threadgroup float3 ChunkDirection[64];
     uint3 param = gl_GlobalInvocationID;
-    uint3 _420 = uint3(0u);
-    uint3 _421 = uint3(Irradiance.get_width(), Irradiance.get_height(), Irradiance.get_array_size());
-    _420.x = _421.x;
-    _420.y = _421.y;
-    _420.z = _421.z;
-    uint3 _461 = _420;
-    uint3 _427 = uint3(Source.get_width(_222.SourceMip), Source.get_height(_222.SourceMip), Source.get_array_size());
-    uint _478 = _427.x * _427.x;
-    uint _480 = 6u * _478;
-    float2 _432 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_461.xy)) - float2(0.5)) * float2(2.0, -2.0);
-    float3 _859;
+    uint3 _266 = uint3(0u);
+    uint3 _267 = uint3(Irradiance.get_width(), Irradiance.get_height(), Irradiance.get_array_size());
+    _266.x = _267.x;
+    _266.y = _267.y;
+    _266.z = _267.z;
+    uint3 _293 = _266;
+    uint _301 = (6u * _133.MomentSize) * _133.MomentSize;
+    float2 _272 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_293.xy)) - float2(0.5)) * float2(2.0, -2.0);
+    float3 _450;
     if (param.z == 0u)
     {
-        _859 = float3(1.0, _432.y, -_432.x);
+        _450 = float3(1.0, _272.y, -_272.x);
     }
     else
     {
-        float3 _860;
+        float3 _451;
         if (param.z == 1u)
         {
-            _860 = float3(-1.0, _432.y, _432.x);
+            _451 = float3(-1.0, _272.y, _272.x);
         }
         else
         {
-            float3 _861;
+            float3 _452;
             if (param.z == 2u)
             {
-                _861 = float3(_432.x, 1.0, -_432.y);
+                _452 = float3(_272.x, 1.0, -_272.y);
             }
             else
             {
-                float3 _862;
+                float3 _453;
                 if (param.z == 3u)
                 {
-                    _862 = float3(_432.x, -1.0, _432.y);
+                    _453 = float3(_272.x, -1.0, _272.y);
                 }
                 else
                 {
-                    float3 _863;
+                    float3 _454;
                     if (param.z == 4u)
                     {
-                        _863 = float3(_432.x, _432.y, 1.0);
+                        _454 = float3(_272.x, _272.y, 1.0);
                     }
                     else
                     {
-                        _863 = float3(-_432.x, _432.y, -1.0);
+                        _454 = float3(-_272.x, _272.y, -1.0);
                     }
-                    _862 = _863;
+                    _453 = _454;
                 }
-                _861 = _862;
+                _452 = _453;
             }
-            _860 = _861;
+            _451 = _452;
         }
-        _859 = _860;
+        _450 = _451;
     }
-    float3 _676 = fast::normalize(_859);
-    float3 _865;
-    _865 = float3(0.0);
-    float3 _881;
-    for (uint _864 = 0u; _864 < _480; _865 = _881, _864 += 64u)
+    float3 _449 = fast::normalize(_450);
+    float3 _456;
+    _456 = float3(0.0);
+    float3 _462;
+    for (uint _455 = 0u; _455 < _301; _456 = _462, _455 += 64u)
     {
-        uint _501 = _864 + gl_LocalInvocationIndex;
-        float3 _871;
-        float3 _872;
-        if (_501 < _480)
+        uint _322 = _455 + gl_LocalInvocationIndex;
+        float3 _457;
+        float3 _458;
+        if (_322 < _301)
         {
-            uint _508 = _501 / _478;
-            uint _511 = _501 % _427.x;
-            uint _516 = (_501 % _478) / _427.x;
-            float2 _442 = (((float2(float(_511), float(_516)) + float2(0.5)) / float2(float(_427.x))) - float2(0.5)) * float2(2.0, -2.0);
-            float3 _866;
-            if (_508 == 0u)
-            {
-                _866 = float3(1.0, _442.y, -_442.x);
-            }
-            else
-            {
-                float3 _867;
-                if (_508 == 1u)
-                {
-                    _867 = float3(-1.0, _442.y, _442.x);
-                }
-                else
-                {
-                    float3 _868;
-                    if (_508 == 2u)
-                    {
-                        _868 = float3(_442.x, 1.0, -_442.y);
-                    }
-                    else
-                    {
-                        float3 _869;
-                        if (_508 == 3u)
-                        {
-                            _869 = float3(_442.x, -1.0, _442.y);
-                        }
-                        else
-                        {
-                            float3 _870;
-                            if (_508 == 4u)
-                            {
-                                _870 = float3(_442.x, _442.y, 1.0);
-                            }
-                            else
-                            {
-                                _870 = float3(-_442.x, _442.y, -1.0);
-                            }
-                            _869 = _870;
-                        }
-                        _868 = _869;
-                    }
-                    _867 = _868;
-                }
-                _866 = _867;
-            }
-            int3 _541 = int4(int(_511), int(_516), int(_508), _899).xyz;
-            uint2 _443 = uint2(_511, _516);
-            float _760 = float(_427.x);
-            float _761 = 1.0 / _760;
-            float _768 = fma(2.0 * float(_443.x), _761, -1.0);
-            float _775 = fma(2.0 * float(_443.y), _761, -1.0);
-            float _779 = _768 + (2.0 / _760);
-            float _783 = _775 + (2.0 / _760);
-            _872 = Source.read(uint2(_541.xy), uint(_541.z), int(_222.SourceMip)).xyz * (((precise::atan2(_768 * _775, sqrt(fma(_768, _768, _775 * _775) + 1.0)) - precise::atan2(_768 * _783, sqrt(fma(_768, _768, _783 * _783) + 1.0))) - precise::atan2(_779 * _775, sqrt(fma(_779, _779, _775 * _775) + 1.0))) + precise::atan2(_779 * _783, sqrt(fma(_779, _779, _783 * _783) + 1.0)));
-            _871 = fast::normalize(_866);
+            _458 = Moments_1._data[(2u * _322) + 1u].xyz;
+            _457 = Moments_1._data[2u * _322].xyz;
         }
         else
         {
-            _872 = float3(0.0);
-            _871 = float3(0.0);
+            _458 = float3(0.0);
+            _457 = float3(0.0);
         }
-        ChunkDirection[gl_LocalInvocationIndex] = _871;
-        ChunkEnergy[gl_LocalInvocationIndex] = _872;
+        ChunkEnergy[gl_LocalInvocationIndex] = _457;
+        ChunkDirection[gl_LocalInvocationIndex] = _458;
         threadgroup_barrier(mem_flags::mem_threadgroup);
-        _881 = _865;
-        float3 _890;
-        for (uint _873 = 0u; _873 < 64u; _881 = _890, _873++)
+        _462 = _456;
+        float3 _361;
+        for (uint _459 = 0u; _459 < 64u; _462 = _361, _459++)
         {
-            float _577 = dot(_676, ChunkDirection[_873]);
-            if (_577 > 0.0)
-            {
-                _890 = _881 + (ChunkEnergy[_873] * _577);
-            }
-            else
-            {
-                _890 = _881;
-            }
+            _361 = _462 + (ChunkEnergy[_459] * fast::max(dot(_449, ChunkDirection[_459]), 0.0));
         }
         threadgroup_barrier(mem_flags::mem_threadgroup);
     }
-    if (all(gl_GlobalInvocationID < _461))
+    if (all(gl_GlobalInvocationID < _293))
     {
-        Irradiance.write(float4(_865 * float3(0.3183098733425140380859375), 1.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Irradiance.write(float4(_456 * float3(0.3183098733425140380859375), 1.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
     }
 }
 

@@ -8,7 +8,9 @@
 // is convex, so every direction above a point escapes to the environment; in glass a refracted
 // path crosses the chord to the far side. At each vertex the environment is sampled by its
 // texels' luminance (next-event estimation) and so is the BSDF, the two combined by the power
-// heuristic; every light is added by the document's own terms, the sphere its only occluder.
+// heuristic; every light is added by the document's own terms, the sphere its only occluder. An
+// area light is also found by the BSDF's draws that meet it, the two weighted by the power
+// heuristic too, and it hides the environment behind it from both (lights do not hide each other).
 //
 // With SPLIT_SUM_MATERIAL defined, the material is Common/SplitSumMaterial.fxh's instead: the
 // document's BSDF with the split sum's k and diffuse weight, the lights' terms included.
@@ -323,13 +325,65 @@ float Visibility( SurfacePoint X, float3 L )
     return dot( X.Normal, L ) > 0.f ? 1.f : 0.f;
 }
 
-float3 LightsTerm( SurfacePoint X, float3 V, inout RandomState rng )
+AreaLight AreaLightAt( uint i )
 {
+    AreaLight light = { Lights[4u * i + 1u].xyz, Lights[4u * i + 2u].xyz, Lights[4u * i + 3u].xyz, Lights[4u * i].yzw };
+    return light;
+}
+
+// How far along L (unit) a ray from origin meets the area light's parallelogram, or 0 where it
+// misses it.
+float AreaLightDistance( AreaLight light, float3 origin, float3 L )
+{
+    float3 across = cross( light.EdgeU, light.EdgeV );
+    float facing = dot( across, L );
+    if ( facing == 0.f )
+        return 0.f;
+    float t = dot( across, light.Corner - origin ) / facing;
+    float3 p = origin + t * L - light.Corner;
+    float uu = dot( light.EdgeU, light.EdgeU ), uv = dot( light.EdgeU, light.EdgeV ), vv = dot( light.EdgeV, light.EdgeV );
+    float pu = dot( p, light.EdgeU ), pv = dot( p, light.EdgeV ), determinant = uu * vv - uv * uv;
+    float u = ( pu * vv - pv * uv ) / determinant, v = ( pv * uu - pu * uv ) / determinant;
+    return t > 0.f && u >= 0.f && u <= 1.f && v >= 0.f && v <= 1.f ? t : 0.f;
+}
+
+// The density, per solid angle, of SampleAreaLight's point seen along L from distance t:
+// t² / (|n' . L| Area).
+float AreaLightPdf( AreaLight light, float3 L, float t )
+{
+    float3 across = cross( light.EdgeU, light.EdgeV );
+    return t * t / abs( dot( across, L ) );
+}
+
+// The radiance an area light sends back along L, or 0 from its back.
+float3 AreaLightRadiance( AreaLight light, float3 L )
+{
+    return dot( cross( light.EdgeU, light.EdgeV ), L ) < 0.f ? light.Radiance : ( float3 )0.f;
+}
+
+// No return from inside the loop: legalization's merge-return turns one into a flag that
+// SPIRV-Cross declares without its initial false (GLSL, HLSL and MSL then read it uninitialized,
+// and the round-tripped forms differed from the SPIR-V by 2.8e2 in the consistency suite).
+bool HiddenByAreaLight( float3 origin, float3 L )
+{
+    bool hidden = false;
+    for ( uint i = 0u; i < LightCount; ++i )
+    {
+        if ( Lights[4u * i].x == 2.f && AreaLightDistance( AreaLightAt( i ), origin, L ) > 0.f )
+            hidden = true;
+    }
+    return hidden;
+}
+
+float3 LightsTerm( Vertex vertex, inout RandomState rng )
+{
+    SurfacePoint X = vertex.X;
+    float3 V = vertex.V;
     float3 sum = ( float3 )0.f;
     for ( uint i = 0u; i < LightCount; ++i )
     {
         float4 head = Lights[4u * i];
-        float3 a = Lights[4u * i + 1u].xyz, b = Lights[4u * i + 2u].xyz, c = Lights[4u * i + 3u].xyz;
+        float3 a = Lights[4u * i + 1u].xyz, b = Lights[4u * i + 2u].xyz;
         if ( head.x == 0.f )
         {
             DirectionalLight light = { a, b };
@@ -342,12 +396,40 @@ float3 LightsTerm( SurfacePoint X, float3 V, inout RandomState rng )
         }
         else
         {
-            AreaLight light = { a, b, c, head.yzw };
+            AreaLight light = AreaLightAt( i );
             float3 onLight = SampleAreaLight( light, rng );
-            sum += AreaLightTerm( X, V, light, onLight, Visibility( X, onLight - X.Position ) );
+            float3 toLight = onLight - X.Position;
+            float t = length( toLight );
+            float3 L = toLight / t;
+            float weight = PowerHeuristic( AreaLightPdf( light, L, t ), BsdfPdf( vertex, L ) );
+            sum += AreaLightTerm( X, V, light, onLight, Visibility( X, toLight ) ) * weight;
         }
     }
     return sum;
+}
+
+// What a BSDF draw leaving the sphere along L meets: every area light on its way, each weighted
+// against its own draws (lights do not hide each other, as next-event estimation has it), or
+// where there is none the environment, weighted against the environment's.
+float3 EscapingRadiance( float3 origin, float3 L, float bsdfPdf )
+{
+    float3 sum = ( float3 )0.f;
+    bool hidden = false;
+    for ( uint i = 0u; i < LightCount; ++i )
+    {
+        if ( Lights[4u * i].x != 2.f )
+            continue;
+        AreaLight light = AreaLightAt( i );
+        float t = AreaLightDistance( light, origin, L );
+        if ( t > 0.f )
+        {
+            sum += AreaLightRadiance( light, L ) * PowerHeuristic( bsdfPdf, AreaLightPdf( light, L, t ) );
+            hidden = true;
+        }
+    }
+    if ( hidden )
+        return sum;
+    return EnvironmentRadiance( L ) * PowerHeuristic( bsdfPdf, EnvironmentPdf( L ) );
 }
 
 // Next-event estimation of the environment, weighted against the BSDF's own draws.
@@ -355,7 +437,7 @@ float3 EnvironmentTerm( Vertex vertex, inout RandomState rng )
 {
     float pdf;
     float3 L = SampleEnvironment( rng, pdf );
-    if ( Visibility( vertex.X, L ) == 0.f || !( pdf > 0.f ) )
+    if ( Visibility( vertex.X, L ) == 0.f || !( pdf > 0.f ) || HiddenByAreaLight( vertex.X.Position, L ) )
         return ( float3 )0.f;
     float3 f = BSDF( vertex.X, L, vertex.V );
     if ( all( f == 0.f ) )
@@ -373,7 +455,7 @@ float3 TracePath( SphereHit hit, inout RandomState rng )
     for ( uint depth = 0u; depth < MAX_VERTICES; ++depth )
     {
         Vertex vertex = MakeVertex( position, V, hit.Material );
-        radiance += throughput * ( LightsTerm( vertex.X, V, rng ) + EnvironmentTerm( vertex, rng ) );
+        radiance += throughput * ( LightsTerm( vertex, rng ) + EnvironmentTerm( vertex, rng ) );
         float3 L;
         if ( !SampleBsdf( vertex, rng, L ) )
             break;
@@ -383,8 +465,7 @@ float3 TracePath( SphereHit hit, inout RandomState rng )
         throughput *= BSDF( vertex.X, L, V ) * abs( dot( vertex.X.Normal, L ) ) / pdf;
         if ( Visibility( vertex.X, L ) > 0.f )
         {
-            float weight = PowerHeuristic( pdf, EnvironmentPdf( L ) );
-            radiance += throughput * EnvironmentRadiance( L ) * weight;
+            radiance += throughput * EscapingRadiance( vertex.X.Position, L, pdf );
             break;
         }
         // Into the sphere: on to the far end of the chord.

@@ -193,8 +193,12 @@ json irradianceJson(const ManifestFacts& facts) {
             {"format", "R16G16B16A16_SFLOAT"},
             {"size", facts.settings->irradianceSize},
             {"texel", "E(n) / pi: multiply by albedo for Lambertian diffuse"},
-            {"of", facts.lights->empty() ? "the environment" : "the environment without its lights (shading.lights): add their diffuse"},
+            {"of", facts.lights->empty() ? "the environment"
+                                         : "the environment without its lights (shading.lights), plus at each texel the lights' "
+                                           "texels' exact irradiance less their disks': add their diffuse as a disk's (IblDiskLight)"},
             {"source_mip_size", irradiance.cubeSourceSize},
+            {"source", "per texel of the source mip, its radiance times solid angle and its luminance-weighted mean "
+                       "direction, summed on the host from the mip up to 8 times finer"},
             {"shader", "hlsl/IrradianceCubeCS.hlsl"},
             {"sh",
              {{"basis", "real spherical harmonics l <= 2 in the order (0,0) (1,-1) (1,0) (1,1) (2,-2) (2,-1) (2,0) "

@@ -144,7 +144,7 @@ TakenOutLights lightsOf(const vulkan::VulkanContext& context, BakeKernels& kerne
     const bool mapsToMake = (plan.specular && !cached.specular) || !cached.irradiance;
     if (mapsToMake || !cached.lights)
         return takeOutLights(context, sourceCube(), *recipe.lights, kernels.downsample(), progress);
-    return {*cached.lights, std::nullopt};
+    return {*cached.lights, std::nullopt, {}};
 }
 
 vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakePlan& plan,
@@ -154,6 +154,15 @@ vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKern
     auto* prefilter = kernels.specular();
     if (prefilter) prefilter->setWeighting(plan.recipe->weighting);
     return prefilterLevels(context, source, levels, prefilter, progress);
+}
+
+Irradiance irradianceWithLights(const vulkan::VulkanContext& context, BakeKernels& kernels, vulkan::Image& residual,
+                                const BakeSettings& settings, const BakePlan& plan, const TakenOutLights& taken,
+                                BakeProgress& progress) {
+    auto irradiance = computeIrradiance(context, kernels.irradiance(), residual, settings.irradianceSize, progress,
+                                        plan.irradiance, plan.recipe->irradianceSource);
+    if (plan.irradiance) addLightTexelsIrradiance(context, irradiance.cube, taken);
+    return irradiance;
 }
 
 DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
@@ -173,10 +182,8 @@ DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernel
     auto lut = !plan.lut      ? blankBrdfLut(context)
                : cached.lut ? uploaded(context, *cached.lut, "R32G32_SFLOAT")
                             : integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress);
-    auto irradiance = cached.irradiance
-                          ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
-                          : computeIrradiance(context, kernels.irradiance(), residualCube(), settings.irradianceSize, progress,
-                                              plan.irradiance, recipe.irradianceSource);
+    auto irradiance = cached.irradiance ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
+                                        : irradianceWithLights(context, kernels, residualCube(), settings, plan, taken, progress);
     return {std::move(specular), std::move(lut), std::move(irradiance), std::move(taken.lights), lightLevel};
 }
 

@@ -6,11 +6,14 @@
 #include "kernels/sampled_methods.hpp"
 #include "bake_settings.hpp"
 #include "buffer.hpp"
+#include "reference_irradiance.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 namespace iblkit::bake {
 namespace {
@@ -127,6 +130,14 @@ vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t si
     return lut;
 }
 
+std::vector<float> mipTexels(const vulkan::VulkanContext& context, const vulkan::Image& cube, uint32_t mip) {
+    const auto bytes = cube.downloadBytes(context);
+    const uint32_t width = cube.mipWidth(mip);
+    std::vector<float> values(size_t(6) * width * width * 4);
+    std::memcpy(values.data(), bytes.data() + cube.valueOffset(mip, 0) * sizeof(float), values.size() * sizeof(float));
+    return values;
+}
+
 IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
     : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
 
@@ -148,7 +159,14 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
         return result;
     }
     progress.advance(0.1, "cube");
-    kernels::runIrradianceCube(steps.cube, source, result.cube, mip);
+    const uint32_t momentSize = source.mipWidth(mip);
+    if (momentSize > kMaxMomentSize)
+        throw std::invalid_argument(fmt::format("irradiance source of {}² is past the most the irradiance cube sums, {}²",
+                                                momentSize, kMaxMomentSize));
+    const uint32_t fineMip = firstMipAtMost(source.desc().width, momentSize * kMomentRatio);
+    const auto moments = reference::irradianceMoments(mipTexels(context, source, fineMip), source.mipWidth(fineMip), momentSize);
+    const auto momentBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(moments)), "Moments");
+    kernels::runIrradianceCube(steps.cube, momentBuffer, momentSize, result.cube);
     report(steps.cube, progress);
     progress.end();
     return result;

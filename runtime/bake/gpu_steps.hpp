@@ -63,6 +63,14 @@ uint32_t firstMipAtMost(uint32_t size, uint32_t limit);
 // The source mip at most this size that the irradiance steps read.
 inline constexpr uint32_t kShSourceLimit = 64;
 inline constexpr uint32_t kIrradianceSourceLimit = 32;
+// The irradiance cube's moments are summed from the mip at most this many times finer, and its
+// moment cube is at most this size (IrradianceCubeCS's loop: 6 x 64² iterations within llvmpipe's
+// 65535 for the invocation).
+inline constexpr uint32_t kMomentRatio = 8;
+inline constexpr uint32_t kMaxMomentSize = 64;
+
+// One mip of an RGBA32F cube on the host: faces +X..-Z, row, column.
+std::vector<float> mipTexels(const vulkan::VulkanContext& context, const vulkan::Image& cube, uint32_t mip);
 
 // The two kernels of the irradiance step, compiled once for repeated runs or ahead of the step.
 struct IrradianceKernels {
@@ -71,7 +79,8 @@ struct IrradianceKernels {
 };
 
 // The SH projection always (the manifest's coefficients and the preview's exposure); the cube
-// only `withCube`, else it is zeros.
+// only `withCube`, else it is zeros. The cube sums the radiance moments of the mip at most
+// cubeSourceLimit across, each taken from the mip kMomentRatio times finer.
 Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
                              uint32_t size, BakeProgress& progress, bool withCube = true,
                              uint32_t cubeSourceLimit = kIrradianceSourceLimit);

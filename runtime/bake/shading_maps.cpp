@@ -1,29 +1,34 @@
 #include "shading_maps.hpp"
 
+#include "gpu_steps.hpp"
 #include "kernels/kernel_steps.hpp"
+#include "reference_irradiance.hpp"
+#include "shading/disk_light.hpp"
 #include "shading/sphere_transmission.hpp"
 #include "shading/transmission_table.hpp"
 
-#include <cstring>
+#include <algorithm>
 #include <map>
 #include <mutex>
 
 namespace iblkit::bake {
 
-std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube) {
-    const auto bytes = cube.downloadBytes(context);
-    std::vector<float> values(size_t(6) * cube.desc().width * cube.desc().width * 4);
-    std::memcpy(values.data(), bytes.data() + cube.valueOffset(0, 0) * sizeof(float), values.size() * sizeof(float));
-    return values;
-}
+std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube) { return mipTexels(context, cube, 0); }
 
 TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress) {
     progress.begin("lights");
     const uint32_t size = source.desc().width;
-    auto extraction = shading::extractLights(mipZero(context, source), size, settings);
-    TakenOutLights result{std::move(extraction.lights), std::nullopt};
+    const auto faces = mipZero(context, source);
+    auto extraction = shading::extractLights(faces, size, settings);
+    TakenOutLights result{std::move(extraction.lights), std::nullopt, {}};
     if (!result.lights.empty()) {
+        for (size_t texel = 0; texel < faces.size() / 4; ++texel) {
+            const size_t at = 4 * texel;
+            const glm::vec3 taken(faces[at] - extraction.residual[at], faces[at + 1] - extraction.residual[at + 1],
+                                  faces[at + 2] - extraction.residual[at + 2]);
+            if (taken != glm::vec3(0)) result.lightTexels.push_back({uint32_t(texel), taken});
+        }
         progress.advance(0.8, "residual");
         auto& residual = result.residual.emplace(
             context, vulkan::ImageDesc{"Residual", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 6,
@@ -35,6 +40,21 @@ TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan:
     }
     progress.end();
     return result;
+}
+
+void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Image& irradiance, const TakenOutLights& taken) {
+    if (taken.lights.empty()) return;
+    const uint32_t size = irradiance.desc().width;
+    const auto exact = reference::exactIrradianceCube(taken.lightTexels, taken.residual->desc().width, size);
+    auto values = irradiance.download(context);
+    for (size_t texel = 0; texel < exact.size(); ++texel) {
+        const auto face = uint32_t(texel / (size_t(size) * size));
+        const auto normal = reference::cubeTexelCentre(face, uint32_t(texel % size), uint32_t(texel / size % size), size);
+        glm::dvec3 difference = exact[texel];
+        for (const auto& light : taken.lights) difference -= shading::diskIrradianceOverPi(light, normal);
+        for (int c = 0; c < 3; ++c) values[4 * texel + size_t(c)] = float(std::max(0.0, values[4 * texel + size_t(c)] + difference[c]));
+    }
+    irradiance.upload(context, values);
 }
 
 // The table depends on the weighting alone: computed once per process (48 ms), not once per bake.

@@ -5,6 +5,7 @@
 #include "image.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_parameters.hpp"
+#include "reference_irradiance.hpp"
 #include "shading/shading_recipe.hpp"
 
 #include <optional>
@@ -20,9 +21,18 @@ std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::I
 struct TakenOutLights {
     std::vector<shading::EnvironmentLight> lights;
     std::optional<vulkan::Image> residual; // none where no source qualified
+    std::vector<reference::CubeTexelRadiance> lightTexels; // of mip 0: the source less the residual, where they differ
 };
 TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress);
+
+// IblDiskLight adds each light's diffuse as a disk's; the environment held it in the light's
+// texels, whose shape and spread the disk does not have (beside a normal's horizon the two differ
+// by percents of E). Adds to each texel of the irradiance cube, computed from the residual, its
+// normal's exact irradiance from the light texels less the disks', so that the cube plus the disks
+// is the whole environment's irradiance at the cube's texel centres. Where the disks would exceed
+// the rest, the texel is clamped at 0.
+void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Image& irradiance, const TakenOutLights& taken);
 
 // The lobe table of a weighting (shading::lobeTable), computed once per process, as an RGBA32F
 // image for the shading to read.

@@ -11,10 +11,8 @@
 namespace iblkit::bench {
 namespace {
 
-// The exact sum reads the source at most this size: 6·128² texels per irradiance texel keep the
-// reference to seconds. The cosine lobe is smooth, but its horizon is not: beside a low sun the
-// sum of texel centres is itself about 1.5 % off (reference::exactIrradianceCube, which the
-// shading bench uses, clips texels at the horizon), below the errors this table shows there.
+// The exact sum (Lambert's formula on the texels a normal's horizon cuts) reads the source at
+// most this size: 6·128² texels per irradiance texel keep the reference to seconds.
 constexpr uint32_t kReferenceSourceLimit = 128;
 
 } // namespace
@@ -24,10 +22,10 @@ BenchResult measureIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
     const uint32_t mip = bake::firstMipAtMost(cube.size, kReferenceSourceLimit);
     const uint32_t sourceSize = cube.size >> mip, size = options.irradianceSize;
     const auto texels = cube.mip(mip);
-    const auto key = ReferenceCache::key(fmt::format("exact irradiance v1 source {} output {}", sourceSize, size),
+    const auto key = ReferenceCache::key(fmt::format("exact irradiance v2 (Lambert's clipped texels) source {} output {}", sourceSize, size),
                                          std::as_bytes(texels));
     const auto reference = cache.getOrCompute(key, size_t(6) * size * size * 3, [&] {
-        return flatten(reference::irradianceCube(std::vector<float>(texels.begin(), texels.end()), sourceSize, size));
+        return flatten(reference::exactIrradianceCube(std::vector<float>(texels.begin(), texels.end()), sourceSize, size));
     });
     bake::IrradianceKernels steps(context);
     std::optional<bake::Irradiance> irradiance;

@@ -92,16 +92,18 @@ void addShOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
               });
 }
 
+// The moments of mip `mip`, each summed from its texels of the mip above (a 1² cube's from itself).
 void addIrradianceOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
-    const auto source = cube.mip(mip);
-    const std::vector<float> texels(source.begin(), source.end());
+    const uint32_t fineMip = mip > 0 ? mip - 1 : 0;
+    const auto source = cube.mip(fineMip);
     const uint32_t size = cube.mipSize(mip), outSize = run.options.irradianceSize;
-    const auto output = fmt::format("irradiance {}² from mip {} ({}²)", outSize, mip, size);
+    const auto moments = reference::irradianceMoments({source.begin(), source.end()}, cube.mipSize(fineMip), size);
+    const auto output = fmt::format("irradiance {}² from the moments of mip {} ({}²)", outSize, mip, size);
     addOutput(run, {"IrradianceCubeCS", output, irradianceBounds()},
-              {reference::irradianceCubeInFloat(texels, size, outSize),
-               rgbaWithAlphaOne(reference::irradianceCube(texels, size, outSize))},
-              [&](const PathProgram& program) { return gpuIrradianceCube(run.vulkan, program, cube, mip, outSize); },
-              [&](const OpenGlForm& form) { return glIrradianceCube(run.gl, form, cube, mip, outSize); });
+              {reference::irradianceCubeInFloat(moments, size, outSize),
+               rgbaWithAlphaOne(reference::irradianceFromMoments(moments, size, outSize))},
+              [&](const PathProgram& program) { return gpuIrradianceCube(run.vulkan, program, moments, size, outSize); },
+              [&](const OpenGlForm& form) { return glIrradianceCube(run.gl, form, moments, size, outSize); });
 }
 
 } // namespace

@@ -80,14 +80,14 @@ kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenG
     return kernels::sumShPartials(glpath::readBuffer(context, partials, size_t(groups) * 9 * 4), groups);
 }
 
-std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                    uint32_t mip, uint32_t outSize) {
+std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form,
+                                    const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize) {
     const auto program = glpath::program(context, form);
-    const auto source = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, cube.size, cube.mips, cube.texels);
-    glpath::bindTexture(context, form, "Source", source);
+    const auto bytes = std::as_bytes(std::span(moments));
+    const auto buffer = glpath::bindStorageBuffer(context, form, "Moments", bytes.size(), bytes);
     const auto irradiance = glpath::cubeTexture(context, GL_TEXTURE_2D_ARRAY, outSize, 1);
     glpath::bindLayeredImage(context, form, "Irradiance", irradiance, 0);
-    const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip}.members());
+    const auto parameters = glpath::bindParameters(context, form, kernels::IrradianceParameters{momentSize}.members());
     glpath::dispatch(context, program, form, {outSize, outSize, 6});
     return glpath::readTexture(context, irradiance, 0, GL_RGBA, cubeValues(outSize));
 }

@@ -21,8 +21,8 @@ std::vector<float> glEquirectToCube(const opengl::EglContext& context, const Ope
 std::vector<float> glDownsampleChain(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube);
 kernels::ShProjection glShProject(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
                                   uint32_t mip);
-std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
-                                    uint32_t mip, uint32_t outSize);
+std::vector<float> glIrradianceCube(const opengl::EglContext& context, const OpenGlForm& form,
+                                    const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize);
 // A prefilter that reads `cube`'s whole chain (PrefilterFilteredCS, PrefilterPyramidCS,
 // PrefilterRingCS), its cbuffer set to `parameters`.
 std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,

@@ -54,11 +54,11 @@ kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const P
 }
 
 std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
-                                     const MippedCube& cube, uint32_t mip, uint32_t outSize) {
+                                     const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize) {
     kernels::Kernel kernel(context, program);
-    auto source = uploadCube(context, "Source", cube);
+    const auto buffer = vulkan::storageBuffer(context, std::as_bytes(std::span(moments)), "Moments");
     vulkan::Image irradiance(context, {"Irradiance", &rgba32(), outSize, outSize, 6, 1, true, true});
-    kernels::runIrradianceCube(kernel, source, irradiance, mip);
+    kernels::runIrradianceCube(kernel, buffer, momentSize, irradiance);
     return irradiance.download(context);
 }
 

@@ -32,9 +32,9 @@ std::vector<float> gpuDownsampleChain(const vulkan::VulkanContext& context, cons
 kernels::ShProjection gpuShProject(const vulkan::VulkanContext& context, const PathProgram& program,
                                    const MippedCube& cube, uint32_t mip);
 
-// IrradianceCube: an outSize cube from one mip of `cube`.
+// IrradianceCube: an outSize cube from a momentSize cube of moments (reference::irradianceMoments).
 std::vector<float> gpuIrradianceCube(const vulkan::VulkanContext& context, const PathProgram& program,
-                                     const MippedCube& cube, uint32_t mip, uint32_t outSize);
+                                     const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize);
 
 // Prefilter of a method that reads the source's mips (PrefilterFilteredCS, PrefilterPyramidCS,
 // PrefilterRingCS): `cube` with its whole chain as EnvMap, read through a trilinear sampler,

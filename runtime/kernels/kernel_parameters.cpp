@@ -53,6 +53,8 @@ NamedValues SupersampleParameters::members() const { return {{"Supersample", {do
 
 NamedValues SourceMipParameters::members() const { return {{"SourceMip", {double(sourceMip)}}}; }
 
+NamedValues IrradianceParameters::members() const { return {{"MomentSize", {double(momentSize)}}}; }
+
 void IblRecipeParameters::addTo(NamedValues& values) const {
     values.insert({{"SpecularSize", {double(specularSize)}}, {"LodMapping", {double(lodMapping)}},
                    {"LodParameter", {lodParameter}},         {"Direction", {double(direction)}},

@@ -75,9 +75,15 @@ struct SupersampleParameters {
     NamedValues members() const;
 };
 
-// DownsampleCube, ShProject and IrradianceCube read one mip of their source.
+// DownsampleCube and ShProject read one mip of their source.
 struct SourceMipParameters {
     uint32_t sourceMip = 0;
+    NamedValues members() const;
+};
+
+// IrradianceCube: the face size of the moment cube it sums.
+struct IrradianceParameters {
+    uint32_t momentSize = 0;
     NamedValues members() const;
 };
 

@@ -168,10 +168,10 @@ ShProjection sumShPartials(std::span<const float> partials, uint32_t groups) {
     return projection;
 }
 
-void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& target, uint32_t sourceMip) {
-    kernel.program().bind("Source", source);
+void runIrradianceCube(Kernel& kernel, const vulkan::Buffer& moments, uint32_t momentSize, vulkan::Image& target) {
+    kernel.program().bind("Moments", moments);
     kernel.program().bind("Irradiance", target, 0);
-    kernel.setParameters(SourceMipParameters{sourceMip}.members());
+    kernel.setParameters(IrradianceParameters{momentSize}.members());
     kernel.run({target.desc().width, target.desc().width, 6});
 }
 

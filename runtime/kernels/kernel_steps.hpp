@@ -107,8 +107,9 @@ ShProjection sumShPartials(std::span<const float> partials, uint32_t groups);
 // ShProject: one mip of a cube projected on bands 0-2.
 ShProjection runShProject(const vulkan::VulkanContext& context, Kernel& kernel, vulkan::Image& source, uint32_t mip);
 
-// IrradianceCube: E(n) / pi into mip 0 of `target` from one mip of `source`.
-void runIrradianceCube(Kernel& kernel, vulkan::Image& source, vulkan::Image& target, uint32_t sourceMip);
+// IrradianceCube: E(n) / pi into mip 0 of `target` from a momentSize cube of radiance moments
+// (reference::irradianceMoments' layout).
+void runIrradianceCube(Kernel& kernel, const vulkan::Buffer& moments, uint32_t momentSize, vulkan::Image& target);
 
 // Preview: shaded spheres and the mip strip into `image`.
 struct PreviewResources {

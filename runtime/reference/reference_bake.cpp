@@ -134,23 +134,18 @@ ShSums projectOnShInFloat(const std::vector<float>& texels, uint32_t size) {
     return sums;
 }
 
-std::vector<float> irradianceCubeInFloat(const std::vector<float>& texels, uint32_t size, uint32_t outSize) {
+std::vector<float> irradianceCubeInFloat(const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize) {
+    const size_t texels = size_t(6) * momentSize * momentSize;
     std::vector<float> result(size_t(6) * outSize * outSize * 4);
     forEachRow(6 * outSize, [&](uint32_t faceRow) {
         const uint32_t face = faceRow / outSize, y = faceRow % outSize;
         for (uint32_t x = 0; x < outSize; ++x) {
             const auto normal = CubeFaceDirection<float>(face, (glm::vec2(float(x), float(y)) + 0.5f) / float(outSize));
             glm::vec3 sum(0.f);
-            for (uint32_t sourceFace = 0; sourceFace < 6; ++sourceFace)
-                for (uint32_t row = 0; row < size; ++row)
-                    for (uint32_t column = 0; column < size; ++column) {
-                        const auto uv = (glm::vec2(float(column), float(row)) + 0.5f) / float(size);
-                        const float cosine = glm::dot(normal, CubeFaceDirection<float>(sourceFace, uv));
-                        // The shader's order: radiance times solid angle per source texel, then the cosine.
-                        if (cosine > 0.f)
-                            sum += texelRgb(texels, texelIndex(sourceFace, row, column, size)) *
-                                   CubeTexelSolidAngle<float>(column, row, size) * cosine;
-                    }
+            for (size_t t = 0; t < texels; ++t) {
+                const float* m = &moments[t * 8];
+                sum += glm::vec3(m[0], m[1], m[2]) * std::max(glm::dot(normal, glm::vec3(m[4], m[5], m[6])), 0.f);
+            }
             const glm::vec3 irradiance = sum / PI<float>;
             const size_t at = texelIndex(face, y, x, outSize);
             result[at] = irradiance.r;

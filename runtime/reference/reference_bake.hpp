@@ -40,8 +40,8 @@ struct ShSums {
 };
 ShSums projectOnShInFloat(const std::vector<float>& texels, uint32_t size);
 
-// IrradianceCubeCS in float: E(n) / pi per texel of an outSize cube, summed over the source
-// texels in the shader's order; RGBA with alpha 1.
-std::vector<float> irradianceCubeInFloat(const std::vector<float>& texels, uint32_t size, uint32_t outSize);
+// IrradianceCubeCS in float: E(n) / pi per texel of an outSize cube, summed over the moments
+// (reference::irradianceMoments) in the shader's order; RGBA with alpha 1.
+std::vector<float> irradianceCubeInFloat(const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize);
 
 } // namespace iblkit::reference

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <thread>
 
 namespace iblkit::reference {
@@ -61,26 +62,24 @@ struct SourceTexel {
     double reach; // sine of the largest angle from the centre to a corner
 };
 
-std::vector<SourceTexel> sourceTexels(const std::vector<float>& texels, uint32_t size) {
+std::vector<SourceTexel> sourceTexels(std::span<const CubeTexelRadiance> texels, uint32_t size) {
     std::vector<SourceTexel> result;
-    size_t texel = 0;
-    for (uint32_t face = 0; face < 6; ++face)
-        for (uint32_t row = 0; row < size; ++row)
-            for (uint32_t column = 0; column < size; ++column, ++texel) {
-                SourceTexel t;
-                t.centre = cubeTexelCentre(face, column, row, size);
-                t.radiance = texelRadiance(texels, texel);
-                double reach = 0;
-                for (int corner = 0; corner < 4; ++corner) {
-                    const double u = double(column + (corner == 1 || corner == 2)) / size;
-                    const double v = double(row + (corner >= 2)) / size;
-                    t.corners[size_t(corner)] = CubeFaceDirection<double>(face, glm::dvec2(u, v));
-                    reach = std::max(reach, glm::length(glm::cross(t.centre, t.corners[size_t(corner)])));
-                }
-                t.reach = reach;
-                t.vector = polygonVector(t.corners, t.centre);
-                result.push_back(t);
-            }
+    for (const auto& texel : texels) {
+        const uint32_t face = texel.index / (size * size), row = texel.index / size % size, column = texel.index % size;
+        SourceTexel t;
+        t.radiance = glm::dvec3(texel.radiance);
+        t.centre = cubeTexelCentre(face, column, row, size);
+        double reach = 0;
+        for (int corner = 0; corner < 4; ++corner) {
+            const double u = double(column + (corner == 1 || corner == 2)) / size;
+            const double v = double(row + (corner >= 2)) / size;
+            t.corners[size_t(corner)] = CubeFaceDirection<double>(face, glm::dvec2(u, v));
+            reach = std::max(reach, glm::length(glm::cross(t.centre, t.corners[size_t(corner)])));
+        }
+        t.reach = reach;
+        t.vector = polygonVector(t.corners, t.centre);
+        result.push_back(t);
+    }
     return result;
 }
 
@@ -163,6 +162,53 @@ std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_
     return result;
 }
 
+std::vector<float> irradianceMoments(const std::vector<float>& texels, uint32_t size, uint32_t momentSize) {
+    const uint32_t ratio = size / momentSize;
+    std::vector<double> solidAngles(size_t(size) * size); // the same on every face
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) solidAngles[size_t(y) * size + x] = cubeTexelSolidAngle(x, y, size);
+    std::vector<float> moments(size_t(6) * momentSize * momentSize * 8, 0.f);
+    forEachOutputTexel(size_t(6) * momentSize * momentSize, [&](size_t out) {
+        const uint32_t face = uint32_t(out / (size_t(momentSize) * momentSize));
+        const uint32_t row = uint32_t(out / momentSize % momentSize), column = uint32_t(out % momentSize);
+        glm::dvec3 energy(0), direction(0);
+        double weight = 0;
+        for (uint32_t y = row * ratio; y < (row + 1) * ratio; ++y)
+            for (uint32_t x = column * ratio; x < (column + 1) * ratio; ++x) {
+                const double solidAngle = solidAngles[size_t(y) * size + x];
+                const glm::dvec3 radiance = texelRadiance(texels, (size_t(face) * size + y) * size + x) * solidAngle;
+                const double luminance = 0.2126 * radiance.r + 0.7152 * radiance.g + 0.0722 * radiance.b;
+                energy += radiance;
+                direction += luminance * cubeTexelCentre(face, x, y, size);
+                weight += luminance;
+            }
+        if (weight > 0) direction /= weight;
+        else direction = glm::dvec3(0);
+        float* at = &moments[out * 8];
+        for (int axis = 0; axis < 3; ++axis) {
+            at[axis] = float(energy[axis]);
+            at[4 + axis] = float(direction[axis]);
+        }
+    });
+    return moments;
+}
+
+std::vector<glm::dvec3> irradianceFromMoments(const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize) {
+    const size_t texels = size_t(6) * momentSize * momentSize;
+    std::vector<glm::dvec3> result(size_t(6) * outSize * outSize);
+    forEachOutputTexel(result.size(), [&](size_t out) {
+        const uint32_t face = uint32_t(out / (size_t(outSize) * outSize));
+        const glm::dvec3 n = cubeTexelCentre(face, uint32_t(out % outSize), uint32_t(out / outSize % outSize), outSize);
+        glm::dvec3 sum(0);
+        for (size_t t = 0; t < texels; ++t) {
+            const float* m = &moments[t * 8];
+            sum += glm::dvec3(m[0], m[1], m[2]) * std::max(0.0, glm::dot(n, glm::dvec3(m[4], m[5], m[6])));
+        }
+        result[out] = sum / std::numbers::pi;
+    });
+    return result;
+}
+
 glm::dvec3 shIrradiance(const std::array<glm::dvec3, 9>& radiance, glm::dvec3 normal) {
     const auto basis = shBasis(glm::normalize(normal));
     glm::dvec3 sum(0);
@@ -170,7 +216,20 @@ glm::dvec3 shIrradiance(const std::array<glm::dvec3, 9>& radiance, glm::dvec3 no
     return sum;
 }
 
+std::vector<CubeTexelRadiance> litTexels(const std::vector<float>& texels) {
+    std::vector<CubeTexelRadiance> lit;
+    for (size_t texel = 0; texel < texels.size() / 4; ++texel) {
+        const glm::vec3 radiance(texels[4 * texel], texels[4 * texel + 1], texels[4 * texel + 2]);
+        if (radiance != glm::vec3(0)) lit.push_back({uint32_t(texel), radiance});
+    }
+    return lit;
+}
+
 std::vector<glm::dvec3> exactIrradianceCube(const std::vector<float>& texels, uint32_t size, uint32_t outSize) {
+    return exactIrradianceCube(litTexels(texels), size, outSize);
+}
+
+std::vector<glm::dvec3> exactIrradianceCube(std::span<const CubeTexelRadiance> texels, uint32_t size, uint32_t outSize) {
     const auto sources = sourceTexels(texels, size);
     std::vector<glm::dvec3> result(size_t(6) * outSize * outSize);
     forEachOutputTexel(result.size(), [&](size_t out) {

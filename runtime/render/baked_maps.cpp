@@ -31,6 +31,7 @@ BakedMaps bakeMaps(const vulkan::VulkanContext& context, const bake::Environment
     auto lut = bake::integrateBrdfLut(context, defaults.lutSize, *kernels.lut(), progress);
     auto irradiance = bake::computeIrradiance(context, kernels.irradiance(), residual ? *residual : source,
                                               defaults.irradianceSize, progress, true, recipe.irradianceSource);
+    bake::addLightTexelsIrradiance(context, irradiance.cube, taken);
     auto lightBuffer = bake::environmentLightBuffer(context, lights);
     return {std::move(source),
             std::move(specular),

@@ -125,9 +125,10 @@ uint32_t pathsWithinLoopBudget(uint32_t distributionSize, size_t lightCount) {
     constexpr uint64_t kLoopBudget = 65535, kVertices = 4;
     // The environment draw's binary search takes ceil(log2(texels)) steps; each loop's entry may
     // cost one iteration more than its trips: the depth loop's, and per vertex the search's and
-    // the lights'.
+    // three over the lights (their terms, whether one hides the environment's draw, and what the
+    // BSDF's draw meets when it leaves).
     const uint64_t searchSteps = std::bit_width(uint64_t(6) * distributionSize * distributionSize - 1);
-    const uint64_t perVertex = 1 + (searchSteps + 1) + (lightCount + 1);
+    const uint64_t perVertex = 1 + (searchSteps + 1) + 3 * (lightCount + 1);
     const uint64_t perPath = 2 + kVertices * perVertex;
     return uint32_t(std::bit_floor(std::clamp<uint64_t>(kLoopBudget / perPath, 1, kMaxBatchSamples)));
 }

@@ -320,8 +320,9 @@ void writeShadingReport(const ShadingReportOptions& options, const ShadingBenchO
             "sphere's mean error above noise (glass: its mean error), for the recipe with the least.\n\n";
     writeFrontier(page, results);
     page << fmt::format("\n## Irradiance against the exact sum\n\nWhat the diffuse reads — the irradiance map (the "
-                        "source's 32² mip summed exactly, of the environment without its lights where the recipe takes "
-                        "them out) plus each light's E / π as IblDiskLight adds it (the exact cosine integral of its cap) — "
+                        "moments of the source's 32² mip summed, of the environment without its lights where the recipe "
+                        "takes them out, plus the lights' texels' exact irradiance less their caps') plus each light's "
+                        "E / π as IblDiskLight adds it (the exact cosine integral of its cap) — "
                         "against the exact integral over the source cube's texels (Lambert's formula where a normal's "
                         "horizon cuts one), at every texel of the 32² map: RMS / max relative error of "
                         "luminance, in bold past the target ({:g} % everywhere). One column per way of taking lights "

@@ -41,13 +41,14 @@ ProbeArguments pbrArguments() {
     return arguments;
 }
 
-// (N.L, N.V, roughness, azimuth of V): both cosines and the roughness at their edges, V beside L and
-// opposite it.
+// (N.L, N.V, roughness, azimuth of V): both cosines and the roughness at their edges, the render's
+// smallest roughness among them, V beside L and opposite it.
+constexpr float kRenderRoughnesses[] = {0.f, kDenormal, 1e-4f, 0.01f, 0.02f, 0.05f, 0.5f, 1.f};
 ProbeArguments bsdfArguments() {
     ProbeArguments arguments;
     for (const float cosL : kCosines)
         for (const float cosV : kCosines)
-            for (const float roughness : kRoughnesses)
+            for (const float roughness : kRenderRoughnesses)
                 for (const float phi : {0.f, 3.14159265f}) arguments.values.emplace_back(cosL, cosV, roughness, phi);
     return arguments;
 }
@@ -68,9 +69,15 @@ const float kSmallestMipRoughness = bake::roughnessOfMip(1, uint32_t(std::bit_wi
 bool lutDomain(const glm::vec4& argument) { return argument.x >= kSmallestLutArgument && argument.y >= kSmallestLutArgument; }
 bool anywhere(const glm::vec4&) { return true; }
 bool prefilterDomain(const glm::vec4& argument) { return argument.y >= kSmallestMipRoughness; }
-// The path tracer's functions: only iblkit render calls them, and no bound is set for its domain yet
-// (roughness from 0.05, N.L and N.V above 0): reported, not judged.
-bool noBake(const glm::vec4&) { return false; }
+// The path tracer's functions, where iblkit render calls them: N.L and N.V above 0 (from the
+// smallest normal float: GPUs flush denormals to 0) at the sphere grid's roughness. Its least,
+// 0.02, is left out: there alpha² = 1.6e-7 is below float's spacing at 1, and D's
+// (N.H)²(alpha² - 1) + 1 cancels across the lobe's core (docs/stability-notes.md).
+constexpr float kSmallestJudgedRenderRoughness = 0.05f;
+bool renderDomain(const glm::vec4& argument) {
+    constexpr float smallest = std::numeric_limits<float>::min();
+    return argument.x >= smallest && argument.y >= smallest && argument.z >= kSmallestJudgedRenderRoughness;
+}
 // The sample's roughness is the LUT's (the smaller); xi comes from Hammersley, whose xi.y < 1.
 bool sampleDomain(const glm::vec4& argument) { return argument.y >= kSmallestLutArgument && argument.w < 1.f; }
 
@@ -122,20 +129,22 @@ const ProbeFunction kFunctions[] = {
     {"Hammersley", Probe::Pbr, 12, 2, false, 4e-8, anywhere, ofHammersley},
     {"IntegrateBRDF (1024 samples)", Probe::Pbr, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
     {"IntegrateBrdfQuadrature (the kit's LUT)", Probe::Lut, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
-    // The path tracer's: no bound is set for iblkit render's domain yet; the sweep finds their singular
-    // points and any NaN/Inf a path makes where the references are finite.
-    {"BRDF", Probe::Bsdf, 0, 3, true, 0, noBake, ofDirections},
-    {"D", Probe::Bsdf, 3, 1, true, 0, noBake, ofDirections},
-    {"BTDF", Probe::Bsdf, 4, 3, true, 0, noBake, ofDirections},
-    {"G (direct light)", Probe::Bsdf, 7, 1, false, 0, noBake, ofDirections},
-    {"BSDF", Probe::Bsdf, 8, 4, true, 0, noBake, ofDirections},
-    {"SampleCosineHemisphere", Probe::Bsdf, 12, 3, false, 0, noBake, ofDirections},
-    {"CosineHemispherePdf", Probe::Bsdf, 15, 1, false, 0, noBake, ofDirections},
-    {"SampleGGX", Probe::Bsdf, 16, 3, false, 0, noBake, ofDirections},
-    {"GgxHalfVectorPdf", Probe::Bsdf, 19, 1, true, 0, noBake, ofDirections},
-    {"PointLightTerm", Probe::Bsdf, 20, 3, true, 0, noBake, ofDirections},
-    {"Random", Probe::Bsdf, 23, 1, false, 0, noBake, ofDirections},
-    {"AreaLightTerm, DirectionalLightTerm", Probe::Bsdf, 24, 4, true, 0, noBake, ofDirections},
+    // The path tracer's, judged where iblkit render calls them (renderDomain). D's cancellation as
+    // N.H nears 1 at roughness 0.05 (6e-2 on OpenGL, 2e-2 on Vulkan, 6e-2 in the float reference)
+    // reaches the BRDF, the BSDF and every term that evaluates them; the BTDF and the GGX density
+    // carry the float reference's 2.7e-3 where N.V is 1e-7.
+    {"BRDF", Probe::Bsdf, 0, 3, true, 0.13, renderDomain, ofDirections},
+    {"D", Probe::Bsdf, 3, 1, true, 0.13, renderDomain, ofDirections},
+    {"BTDF", Probe::Bsdf, 4, 3, true, 6e-3, renderDomain, ofDirections},
+    {"G (direct light)", Probe::Bsdf, 7, 1, false, 2e-7, renderDomain, ofDirections},
+    {"BSDF", Probe::Bsdf, 8, 4, true, 0.13, renderDomain, ofDirections},
+    {"SampleCosineHemisphere", Probe::Bsdf, 12, 3, false, 6e-7, renderDomain, ofDirections},
+    {"CosineHemispherePdf", Probe::Bsdf, 15, 1, false, 3e-8, renderDomain, ofDirections},
+    {"SampleGGX", Probe::Bsdf, 16, 3, false, 2.1e-4, renderDomain, ofDirections},
+    {"GgxHalfVectorPdf", Probe::Bsdf, 19, 1, true, 6e-3, renderDomain, ofDirections},
+    {"PointLightTerm", Probe::Bsdf, 20, 3, true, 5e-5, renderDomain, ofDirections},
+    {"Random", Probe::Bsdf, 23, 1, false, 0, anywhere, ofDirections}, // integer hashing, exact
+    {"AreaLightTerm, DirectionalLightTerm", Probe::Bsdf, 24, 4, true, 6e-4, renderDomain, ofDirections},
 };
 
 const char* finiteness(double value) {

@@ -20,12 +20,14 @@ std::string probeTable(const ProbeSweep& sweep) {
         "Hammersley at (i, n) for n from 1 to 2³² − 1. LutProbeCS evaluates the kit's LUT function at the {} (N·V, "
         "roughness) pairs. BsdfProbeCS evaluates the path tracer's functions (`document/Common/Bsdf.fxh`, "
         "`Sampling.fxh`, `Lights.fxh`, `Random.fxh`) at {} arguments: N·L and N·V in the set above, roughness in "
-        "the set above, V beside L and opposite it, metalness 0, 0.5 and 1; only `iblkit render` calls them (at "
-        "roughness from 0.05, N·L and N·V above 0), and no bound is set there yet: their errors are reported, not "
-        "judged. A value is *singular in the math* where the C++ double is NaN/Inf, *singular in float* "
+        "the set above and 0.02 and 0.05, V beside L and opposite it, metalness 0, 0.5 and 1; `iblkit render` calls "
+        "them, and they are judged where it does: N·L and N·V from the smallest normal float (GPUs flush denormals), "
+        "at the sphere grid's roughness from 0.05; its 0.02, where α² = 1.6e-7 is below float's spacing at 1 and D "
+        "cancels across the lobe's core, is reported, not judged (docs/stability-notes.md). A value is *singular in "
+        "the math* where the C++ double is NaN/Inf, *singular in float* "
         "where the C++ float (the shader's arithmetic) is and the double is not; the paths' values there are listed "
         "below, not judged. Everywhere else a path must have no NaN/Inf, and its error against the double, where a "
-        "bake calls the function, must be within the bound.\n\n",
+        "bake (for the path tracer's, the render) calls the function, must be within the bound.\n\n",
         sweep.pbrArguments, sweep.lutArguments, sweep.bsdfArguments);
     text += "| kernel | function | path | values | singular in the math | singular in float | NaN/Inf elsewhere | max "
             "error vs double where a bake calls it | bound | at the other arguments | |\n"
@@ -39,7 +41,9 @@ std::string probeTable(const ProbeSweep& sweep) {
         "\nWhere a bake calls each function: the documents' LUT kernels at texel centres, N·V and roughness ≥ "
         "0.5 / {} (the largest LUT); the prefilter kernels that call D (PrefilterFilteredCS, PrefilterConvolutionCS) at "
         "the roughness of mip 1 or above, ≥ {:.4g} for the largest cube (tests/bake/document_inputs_test.cpp checks "
-        "both). Every singular point, and whether a bake reaches it (it must not):\n\n"
+        "both); the render calls the path tracer's at roughness ≥ 0.02, N·L and N·V > 0 (judged from 0.05). Every "
+        "singular point, and "
+        "whether a bake or the render reaches it (it must not):\n\n"
         "| function | arguments | double | float | called by a bake |\n|---|---|---|---|---|\n",
         bake::kMaxLutSize, bake::roughnessOfMip(1, 15));
     for (const auto& point : sweep.singular)

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 namespace iblkit::bench {
 namespace {
 
@@ -78,9 +80,13 @@ TEST_F(Bench, MeasuresEveryOutputAndErrorsFallWithSamples) {
     EXPECT_LT(gridMany.errorMax, lutMany.errorMax);
     EXPECT_LT(gridMany.errorMax, gridFew.errorMax / 10);
     EXPECT_GT(lutMany.halfSteps, 1u);
-    // The exact sum over a 32² source, read at 32² by the GPU: only the rounding of 6144 float
-    // terms summed in order remains. Measured 4.8e-5; bound 1e-4.
-    EXPECT_LT(find(run, BenchOutput::Irradiance, "sky", 0).errorMax, 1e-4);
+    // Against the exact integral over the 32² source (Lambert's formula where a normal's horizon
+    // cuts a texel): with no finer mip, each moment is its texel at its centre, which misses only
+    // where a normal's horizon cuts the sun's texel. Measured max 2.7e-2, RMS 3.7e-3; bounds twice those.
+    const auto& irradiance = find(run, BenchOutput::Irradiance, "sky", 0);
+    std::printf("[ measured ] irradiance against the exact sum: max %.2e, RMS %.2e\n", irradiance.errorMax, irradiance.errorRms);
+    EXPECT_LT(irradiance.errorMax, 5.4e-2);
+    EXPECT_LT(irradiance.errorRms, 7.5e-3);
 }
 
 TEST_F(Bench, AWhiteFurnaceIsExactForEveryCount) {

@@ -118,6 +118,13 @@ TEST_F(Cli, MissingSourceFile) {
     expectFailure({"compile", "hlsl/NoSuchShader.hlsl", "-o", at("x.spv")}, "hlsl/NoSuchShader.hlsl: error: no such file");
 }
 
+// The suite's sampled kernels loop over the samples in one dispatch: past 65535 llvmpipe would end
+// the loop early and the report would compare truncated sums.
+TEST_F(Cli, ConsistencySamplesPastTheLoopLimitAreRefused) {
+    expectFailure({"consistency", "--samples", "65536"}, "--samples 65536 is out of range (1 to 65535)");
+    expectFailure({"consistency", "--samples", "0"}, "--samples 0 is out of range (1 to 65535)");
+}
+
 TEST_F(Cli, UnknownFlag) {
     expectFailure({"compile", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o", at("x.spv"), "--fast-math"}, "iblkit: error:");
 }

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <stdexcept>
 
 namespace iblkit::cli {
 
@@ -20,8 +21,12 @@ void addConsistencyCommand(CLI::App& app) {
     auto* command = app.add_subcommand("consistency", "Run every kernel of hlsl/shaders.json in every form and compare with the C++ reference");
     command->add_option("--out", arguments->out, "Write the report (Markdown) to this file");
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
-    command->add_option("--samples", arguments->samples, "Samples per texel (default 1024, the documents')");
+    // The suite runs the sampled kernels in one dispatch each, one loop over the samples: past
+    // 65535 llvmpipe would end that loop early (the bake splits such counts; the suite does not).
+    command->add_option("--samples", arguments->samples, "Samples per texel, 1 to 65535 (default 1024, the documents')");
     command->callback([arguments] {
+        if (arguments->samples < 1 || arguments->samples > 65535)
+            throw std::invalid_argument(fmt::format("--samples {} is out of range (1 to 65535)", arguments->samples));
         auto log = std::make_shared<vulkan::ValidationLog>();
         const vulkan::VulkanContext context({arguments->device, false, log});
         const auto options = consistency::defaultSuiteOptions("hlsl/shaders.json", arguments->samples);
