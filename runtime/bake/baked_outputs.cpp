@@ -144,7 +144,7 @@ TakenOutLights lightsOf(const vulkan::VulkanContext& context, BakeKernels& kerne
     const bool mapsToMake = (plan.specular && !cached.specular) || !cached.irradiance;
     if (mapsToMake || !cached.lights)
         return takeOutLights(context, sourceCube(), *recipe.lights, kernels.downsample(), progress);
-    return {*cached.lights, std::nullopt, {}};
+    return {*cached.lights, std::nullopt, {}, {}};
 }
 
 vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakePlan& plan,
@@ -159,7 +159,7 @@ vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKern
 Irradiance irradianceWithLights(const vulkan::VulkanContext& context, BakeKernels& kernels, vulkan::Image& residual,
                                 const BakeSettings& settings, const BakePlan& plan, const TakenOutLights& taken,
                                 BakeProgress& progress) {
-    auto irradiance = computeIrradiance(context, kernels.irradiance(), residual, settings.irradianceSize, progress,
+    auto irradiance = computeIrradiance(context, kernels.irradiance(), {residual, taken.restMipZero}, settings.irradianceSize, progress,
                                         plan.irradiance, plan.recipe->irradianceSource);
     if (plan.irradiance) addLightTexelsIrradiance(context, irradiance.cube, taken);
     return irradiance;

@@ -6,13 +6,13 @@
 #include "kernels/sampled_methods.hpp"
 #include "bake_settings.hpp"
 #include "buffer.hpp"
+#include "image_transfer.hpp"
 #include "reference_irradiance.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 namespace iblkit::bake {
@@ -130,19 +130,12 @@ vulkan::Image integrateBrdfLut(const vulkan::VulkanContext& context, uint32_t si
     return lut;
 }
 
-std::vector<float> mipTexels(const vulkan::VulkanContext& context, const vulkan::Image& cube, uint32_t mip) {
-    const auto bytes = cube.downloadBytes(context);
-    const uint32_t width = cube.mipWidth(mip);
-    std::vector<float> values(size_t(6) * width * width * 4);
-    std::memcpy(values.data(), bytes.data() + cube.valueOffset(mip, 0) * sizeof(float), values.size() * sizeof(float));
-    return values;
-}
-
 IrradianceKernels::IrradianceKernels(const vulkan::VulkanContext& context)
     : project(makeKernel(context, KernelRole::ShProject)), cube(makeKernel(context, KernelRole::IrradianceCube)) {}
 
-Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
+Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, const IrradianceSource& from,
                              uint32_t size, BakeProgress& progress, bool withCube, uint32_t cubeSourceLimit) {
+    auto& source = from.cube;
     progress.begin("irradiance");
     Irradiance result{makeCube(context, "Irradiance", size, 1), {}};
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
@@ -164,7 +157,10 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
         throw std::invalid_argument(fmt::format("irradiance source of {}² is past the most the irradiance cube sums, {}²",
                                                 momentSize, kMaxMomentSize));
     const uint32_t fineMip = firstMipAtMost(source.desc().width, momentSize * kMomentRatio);
-    const auto moments = reference::irradianceMoments(mipTexels(context, source, fineMip), source.mipWidth(fineMip), momentSize);
+    std::vector<float> downloaded;
+    std::span<const float> fine = from.mipZero;
+    if (fineMip != 0 || fine.empty()) fine = downloaded = vulkan::downloadMip(context, source, fineMip);
+    const auto moments = reference::irradianceMoments(fine, source.mipWidth(fineMip), momentSize);
     const auto momentBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(moments)), "Moments");
     kernels::runIrradianceCube(steps.cube, momentBuffer, momentSize, result.cube);
     report(steps.cube, progress);

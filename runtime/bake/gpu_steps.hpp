@@ -69,19 +69,24 @@ inline constexpr uint32_t kIrradianceSourceLimit = 32;
 inline constexpr uint32_t kMomentRatio = 8;
 inline constexpr uint32_t kMaxMomentSize = 64;
 
-// One mip of an RGBA32F cube on the host: faces +X..-Z, row, column.
-std::vector<float> mipTexels(const vulkan::VulkanContext& context, const vulkan::Image& cube, uint32_t mip);
-
 // The two kernels of the irradiance step, compiled once for repeated runs or ahead of the step.
 struct IrradianceKernels {
     explicit IrradianceKernels(const vulkan::VulkanContext& context);
     kernels::Kernel project, cube;
 };
 
+// The cube the irradiance is summed from, with its mip 0's texels where the host holds them
+// already (takeOutLights' restMipZero); else the step reads back the mip it needs.
+struct IrradianceSource {
+    IrradianceSource(vulkan::Image& cube, std::span<const float> mipZero = {}) : cube(cube), mipZero(mipZero) {}
+    vulkan::Image& cube;
+    std::span<const float> mipZero;
+};
+
 // The SH projection always (the manifest's coefficients and the preview's exposure); the cube
 // only `withCube`, else it is zeros. The cube sums the radiance moments of the mip at most
 // cubeSourceLimit across, each taken from the mip kMomentRatio times finer.
-Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, vulkan::Image& source,
+Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKernels& steps, const IrradianceSource& source,
                              uint32_t size, BakeProgress& progress, bool withCube = true,
                              uint32_t cubeSourceLimit = kIrradianceSourceLimit);
 

@@ -1,6 +1,7 @@
 #include "shading_maps.hpp"
 
 #include "gpu_steps.hpp"
+#include "image_transfer.hpp"
 #include "kernels/kernel_steps.hpp"
 #include "reference_irradiance.hpp"
 #include "shading/disk_light.hpp"
@@ -13,31 +14,54 @@
 
 namespace iblkit::bake {
 
-std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube) { return mipTexels(context, cube, 0); }
+namespace {
+
+// The source's texels that the extraction changed, as light texels and as the residual's values.
+struct ChangedTexels {
+    std::vector<reference::CubeTexelRadiance> light;
+    std::vector<vulkan::TexelAt> where;
+    std::vector<float> residual;
+};
+
+ChangedTexels changedTexels(const std::vector<float>& source, const std::vector<float>& residual, uint32_t size) {
+    ChangedTexels changed;
+    for (size_t texel = 0; texel < source.size() / 4; ++texel) {
+        const float* before = &source[4 * texel];
+        const float* after = &residual[4 * texel];
+        const glm::vec3 taken(before[0] - after[0], before[1] - after[1], before[2] - after[2]);
+        if (taken == glm::vec3(0)) continue;
+        changed.light.push_back({uint32_t(texel), taken});
+        changed.where.push_back({uint32_t(texel / (size_t(size) * size)), uint32_t(texel / size % size), uint32_t(texel % size)});
+        changed.residual.insert(changed.residual.end(), after, after + 4);
+    }
+    return changed;
+}
+
+} // namespace
 
 TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress) {
     progress.begin("lights");
     const uint32_t size = source.desc().width;
-    const auto faces = mipZero(context, source);
+    auto faces = vulkan::downloadMip(context, source, 0);
     auto extraction = shading::extractLights(faces, size, settings);
-    TakenOutLights result{std::move(extraction.lights), std::nullopt, {}};
-    if (!result.lights.empty()) {
-        for (size_t texel = 0; texel < faces.size() / 4; ++texel) {
-            const size_t at = 4 * texel;
-            const glm::vec3 taken(faces[at] - extraction.residual[at], faces[at + 1] - extraction.residual[at + 1],
-                                  faces[at + 2] - extraction.residual[at + 2]);
-            if (taken != glm::vec3(0)) result.lightTexels.push_back({uint32_t(texel), taken});
-        }
-        progress.advance(0.8, "residual");
-        auto& residual = result.residual.emplace(
-            context, vulkan::ImageDesc{"Residual", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 6,
-                                       vulkan::fullMipCount(size, size), true, true});
-        extraction.residual.resize(residual.valueCount(), 0.f); // mip 0; the chain below is the kernel's
-        residual.upload(context, extraction.residual);
-        kernels::runDownsampleChain(downsample, residual);
-        progress.addDeviceTime(downsample.takeTotals().deviceMilliseconds);
+    TakenOutLights result{std::move(extraction.lights), std::nullopt, {}, {}};
+    if (result.lights.empty()) {
+        result.restMipZero = std::move(faces);
+        progress.end();
+        return result;
     }
+    progress.advance(0.8, "residual");
+    auto changed = changedTexels(faces, extraction.residual, size);
+    result.lightTexels = std::move(changed.light);
+    // The residual is the source but for the lights' few texels: copied on the device, those written over it.
+    auto& residual = result.residual.emplace(
+        context, vulkan::ImageDesc{"Residual", source.desc().format, size, size, 6, vulkan::fullMipCount(size, size), true, true});
+    progress.addDeviceTime(std::max(0.0, residual.copyMipFrom(context, source, 0).deviceMilliseconds));
+    vulkan::writeTexels(context, residual, 0, changed.where, changed.residual);
+    kernels::runDownsampleChain(downsample, residual);
+    progress.addDeviceTime(downsample.takeTotals().deviceMilliseconds);
+    result.restMipZero = std::move(extraction.residual);
     progress.end();
     return result;
 }

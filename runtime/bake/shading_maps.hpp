@@ -13,15 +13,13 @@
 
 namespace iblkit::bake {
 
-// Mip 0 of an RGBA32F cube, as floats (face, row, column, channel).
-std::vector<float> mipZero(const vulkan::VulkanContext& context, const vulkan::Image& cube);
-
 // What a recipe with lights makes of the source cube: the lights, and the environment without
 // them (RGBA32F with its mips), which the maps are prefiltered from.
 struct TakenOutLights {
     std::vector<shading::EnvironmentLight> lights;
     std::optional<vulkan::Image> residual; // none where no source qualified
     std::vector<reference::CubeTexelRadiance> lightTexels; // of mip 0: the source less the residual, where they differ
+    std::vector<float> restMipZero; // mip 0 of the residual, or of the source where no light qualified, on the host
 };
 TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan::Image& source,
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress);

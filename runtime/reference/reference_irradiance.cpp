@@ -16,7 +16,7 @@ namespace {
 
 double areaElement(double x, double y) { return std::atan2(x * y, std::sqrt(x * x + y * y + 1)); }
 
-glm::dvec3 texelRadiance(const std::vector<float>& texels, size_t texel) {
+glm::dvec3 texelRadiance(std::span<const float> texels, size_t texel) {
     return {texels[texel * 4], texels[texel * 4 + 1], texels[texel * 4 + 2]};
 }
 
@@ -162,7 +162,7 @@ std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_
     return result;
 }
 
-std::vector<float> irradianceMoments(const std::vector<float>& texels, uint32_t size, uint32_t momentSize) {
+std::vector<float> irradianceMoments(std::span<const float> texels, uint32_t size, uint32_t momentSize) {
     const uint32_t ratio = size / momentSize;
     std::vector<double> solidAngles(size_t(size) * size); // the same on every face
     for (uint32_t y = 0; y < size; ++y)

@@ -48,7 +48,7 @@ std::vector<glm::dvec3> irradianceCube(const std::vector<float>& texels, uint32_
 // n · c), Y the luminance of ∫ L dω, is the texel's luminance's cosine integral wherever its light
 // sits inside it, as long as n's horizon does not cut it. RGBA floats, 2 per texel (the radiance
 // with w = 0, then c with w = 0), in the texels' order. `size` a multiple of momentSize.
-std::vector<float> irradianceMoments(const std::vector<float>& texels, uint32_t size, uint32_t momentSize);
+std::vector<float> irradianceMoments(std::span<const float> texels, uint32_t size, uint32_t momentSize);
 
 // IrradianceCubeCS in double: E(n) / pi = Σ over moment texels of ∫ L dω max(0, n · c) / pi.
 std::vector<glm::dvec3> irradianceFromMoments(const std::vector<float>& moments, uint32_t momentSize, uint32_t outSize);

@@ -29,7 +29,7 @@ BakedMaps bakeMaps(const vulkan::VulkanContext& context, const bake::Environment
     prefilter.setWeighting(recipe.weighting);
     auto specular = bake::prefilterLevels(context, source, levels, &prefilter, progress);
     auto lut = bake::integrateBrdfLut(context, defaults.lutSize, *kernels.lut(), progress);
-    auto irradiance = bake::computeIrradiance(context, kernels.irradiance(), residual ? *residual : source,
+    auto irradiance = bake::computeIrradiance(context, kernels.irradiance(), {residual ? *residual : source, taken.restMipZero},
                                               defaults.irradianceSize, progress, true, recipe.irradianceSource);
     bake::addLightTexelsIrradiance(context, irradiance.cube, taken);
     auto lightBuffer = bake::environmentLightBuffer(context, lights);

@@ -1,5 +1,6 @@
 #include "render/irradiance_error.hpp"
 
+#include "image_transfer.hpp"
 #include "measurements.hpp"
 #include "shading_maps.hpp"
 #include "reference_cache.hpp"
@@ -13,7 +14,7 @@ namespace iblkit::render {
 std::vector<glm::dvec3> exactIrradiance(const vulkan::VulkanContext& context, const vulkan::Image& source, uint32_t size,
                                         const std::filesystem::path& cache) {
     const uint32_t sourceSize = source.desc().width;
-    const auto texels = bake::mipZero(context, source);
+    const auto texels = vulkan::downloadMip(context, source, 0);
     const auto key = bench::ReferenceCache::key(fmt::format("exact irradiance v2 (Lambert's clipped texels) source {} output {}", sourceSize, size),
                                                 std::as_bytes(std::span(texels)));
     return bench::unflatten(bench::ReferenceCache(cache).getOrCompute(key, size_t(6) * size * size * 3, [&] {

@@ -105,12 +105,15 @@ void fillFromSurroundings(std::vector<float>& residual, const Region& hole, uint
 } // namespace
 
 Extraction extractLights(std::span<const float> faces, uint32_t size, const ExtractionSettings& settings) {
-    const size_t texels = size_t(6) * size * size;
+    const size_t texels = size_t(6) * size * size, perFace = size_t(size) * size;
+    std::vector<double> faceSolidAngle(perFace); // the same on every face: computed once, not six times
+    for (size_t texel = 0; texel < perFace; ++texel)
+        faceSolidAngle[texel] = CubeTexelSolidAngle<double>(uint32_t(texel % size), uint32_t(texel / size), size);
     std::vector<double> luminance(texels), solidAngle(texels);
     double total = 0;
     for (size_t texel = 0; texel < texels; ++texel) {
         luminance[texel] = std::max(luminanceOf(&faces[4 * texel]), 0.0);
-        solidAngle[texel] = CubeTexelSolidAngle<double>(uint32_t(texel % size), uint32_t(texel / size % size), size);
+        solidAngle[texel] = faceSolidAngle[texel % perFace];
         total += luminance[texel] * solidAngle[texel];
     }
     Extraction result{{}, std::vector<float>(faces.begin(), faces.end())};

@@ -22,6 +22,8 @@ public:
 
     void write(std::span<const std::byte> bytes, vk::DeviceSize offset = 0);
     std::vector<std::byte> read() const;
+    // The mapped bytes, read in place: a readback decoded from here needs no copy.
+    std::span<const std::byte> contents() const { return {static_cast<const std::byte*>(mapped_), size_t(size_)}; }
 
 private:
     std::string name_;

@@ -1,6 +1,7 @@
 #include "image.hpp"
 
 #include "buffer.hpp"
+#include "image_layout.hpp"
 #include "device_memory.hpp"
 #include "vulkan_error.hpp"
 
@@ -61,15 +62,7 @@ vk::ImageSubresourceRange wholeImage(const ImageDesc& desc) {
     return {vk::ImageAspectFlagBits::eColor, 0, desc.mips, 0, desc.layers};
 }
 
-struct LayoutUse {
-    vk::ImageLayout layout;
-    vk::AccessFlags access;
-    vk::PipelineStageFlags stages;
-};
-
-// Between copies the image rests in GENERAL, where shaders sample and write it.
-const LayoutUse kResting{vk::ImageLayout::eGeneral, vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite,
-                         vk::PipelineStageFlagBits::eComputeShader};
+} // namespace
 
 void transition(const vk::raii::CommandBuffer& commands, const Image& image, const LayoutUse& from, const LayoutUse& to) {
     const vk::ImageMemoryBarrier barrier(from.access, to.access, from.layout, to.layout, VK_QUEUE_FAMILY_IGNORED,
@@ -77,7 +70,17 @@ void transition(const vk::raii::CommandBuffer& commands, const Image& image, con
     commands.pipelineBarrier(from.stages, to.stages, {}, {}, {}, barrier);
 }
 
-} // namespace
+Buffer readback(const VulkanContext& context, const Image& image, std::span<const vk::BufferImageCopy> regions, size_t bytes) {
+    Buffer staging(context, bytes, vk::BufferUsageFlagBits::eTransferDst, image.desc().name + " (readback)");
+    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
+        transition(commands, image, kResting, kCopyingFrom);
+        commands.copyImageToBuffer(image.handle(), kCopyingFrom.layout, staging.handle(), regions);
+        transition(commands, image, kCopyingFrom, kResting);
+        const vk::MemoryBarrier toHost(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead);
+        commands.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {}, toHost, {}, {});
+    });
+    return staging;
+}
 
 uint32_t fullMipCount(uint32_t width, uint32_t height) {
     return static_cast<uint32_t>(std::bit_width(std::max(width, height)));
@@ -146,29 +149,15 @@ void Image::uploadBytes(const VulkanContext& context, std::span<const std::byte>
                           std::to_string(bytes.size()));
     Buffer staging(context, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc, desc_.name + " (staging)");
     staging.write(bytes);
-    const LayoutUse copying{vk::ImageLayout::eTransferDstOptimal, vk::AccessFlagBits::eTransferWrite,
-                            vk::PipelineStageFlagBits::eTransfer};
     context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        transition(commands, *this, kResting, copying);
-        commands.copyBufferToImage(staging.handle(), *image_, vk::ImageLayout::eTransferDstOptimal, copyRegions(*this));
-        transition(commands, *this, copying, kResting);
+        transition(commands, *this, kResting, kCopyingTo);
+        commands.copyBufferToImage(staging.handle(), *image_, kCopyingTo.layout, copyRegions(*this));
+        transition(commands, *this, kCopyingTo, kResting);
     });
 }
 
 std::vector<std::byte> Image::downloadBytes(const VulkanContext& context) const {
-    Buffer staging(context, valueCount() * desc_.format->bytesPerChannel, vk::BufferUsageFlagBits::eTransferDst,
-                   desc_.name + " (readback)");
-    const LayoutUse copying{vk::ImageLayout::eTransferSrcOptimal, vk::AccessFlagBits::eTransferRead,
-                            vk::PipelineStageFlagBits::eTransfer};
-    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        transition(commands, *this, kResting, copying);
-        commands.copyImageToBuffer(*image_, vk::ImageLayout::eTransferSrcOptimal, staging.handle(), copyRegions(*this));
-        transition(commands, *this, copying, kResting);
-        const vk::MemoryBarrier toHost(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead);
-        commands.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {}, toHost, {},
-                                 {});
-    });
-    return staging.read();
+    return readback(context, *this, copyRegions(*this), valueCount() * desc_.format->bytesPerChannel).read();
 }
 
 SubmissionTiming Image::copyMipFrom(const VulkanContext& context, const Image& source, uint32_t mip) {
@@ -179,29 +168,25 @@ SubmissionTiming Image::copyMipFrom(const VulkanContext& context, const Image& s
                           "' differs in format, size or layers");
     const vk::ImageSubresourceLayers layers(vk::ImageAspectFlagBits::eColor, mip, 0, desc_.layers);
     const vk::ImageCopy region(layers, {}, layers, {}, vk::Extent3D(mipWidth(mip), mipHeight(mip), 1));
-    const LayoutUse reading{vk::ImageLayout::eTransferSrcOptimal, vk::AccessFlagBits::eTransferRead,
-                            vk::PipelineStageFlagBits::eTransfer};
-    const LayoutUse writing{vk::ImageLayout::eTransferDstOptimal, vk::AccessFlagBits::eTransferWrite,
-                            vk::PipelineStageFlagBits::eTransfer};
     return submitTimed(
         context,
         [&](const vk::raii::CommandBuffer& commands) {
-            transition(commands, source, kResting, reading);
-            transition(commands, *this, kResting, writing);
+            transition(commands, source, kResting, kCopyingFrom);
+            transition(commands, *this, kResting, kCopyingTo);
         },
         [&](const vk::raii::CommandBuffer& commands) {
-            commands.copyImage(source.handle(), reading.layout, *image_, writing.layout, region);
+            commands.copyImage(source.handle(), kCopyingFrom.layout, *image_, kCopyingTo.layout, region);
         },
         [&](const vk::raii::CommandBuffer& commands) {
-            transition(commands, source, reading, kResting);
-            transition(commands, *this, writing, kResting);
+            transition(commands, source, kCopyingFrom, kResting);
+            transition(commands, *this, kCopyingTo, kResting);
         });
 }
 
 std::vector<float> Image::download(const VulkanContext& context) const {
-    const auto bytes = downloadBytes(context);
+    const auto staging = readback(context, *this, copyRegions(*this), valueCount() * desc_.format->bytesPerChannel);
     std::vector<float> values(valueCount());
-    decodeTexels(*desc_.format, bytes, values);
+    decodeTexels(*desc_.format, staging.contents(), values);
     return values;
 }
 
