@@ -1,7 +1,7 @@
 #version 450
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-float _5278;
+float _5119;
 
 layout(binding = 0, std430) readonly buffer Spheres
 {
@@ -22,7 +22,7 @@ layout(binding = 0, std140) uniform SplitSumParameter
     uint LightLevel;
     uint GlassTransmission;
     float GlassRoughnessScale;
-} _1526;
+} _1830;
 
 layout(binding = 1, std430) readonly buffer Lights
 {
@@ -32,9 +32,9 @@ layout(binding = 1, std430) readonly buffer Lights
 layout(binding = 0, rgba32f) uniform writeonly image2D SplitSum;
 layout(binding = 7) uniform sampler2D SphereTransmissionTable;
 layout(binding = 6) uniform sampler2D SphereTransmissionTable_LinearClamp;
-layout(binding = 0) uniform samplerCube Specular_LinearClamp;
 layout(binding = 5) uniform sampler2D TransmissionTable;
 layout(binding = 4) uniform sampler2D TransmissionTable_LinearClamp;
+layout(binding = 0) uniform samplerCube Specular_LinearClamp;
 layout(binding = 3) uniform sampler2D LobeTable_LinearClamp;
 layout(binding = 2) uniform sampler2D BrdfLut_LinearClamp;
 layout(binding = 1) uniform samplerCube IrradianceMap_LinearClamp;
@@ -43,456 +43,427 @@ void main()
 {
     do
     {
-        uvec2 _2040 = uvec2(0u);
-        uvec2 _2041 = uvec2(imageSize(SplitSum));
-        _2040.x = _2041.x;
-        _2040.y = _2041.y;
-        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _2040)))
+        uvec2 _2181 = uvec2(0u);
+        uvec2 _2182 = uvec2(imageSize(SplitSum));
+        _2181.x = _2182.x;
+        _2181.y = _2182.y;
+        if (any(greaterThanEqual(gl_GlobalInvocationID.xy, _2181)))
         {
             break;
         }
-        vec2 _2215 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1526.CellSize)) + vec2(0.5)) / vec2(float(_1526.CellSize))) * 2.0) - vec2(1.0);
-        _2215.y = -_2215.y;
-        float _2246 = dot(_2215, _2215);
-        bool _2249 = (_2246 * 1.2345678806304931640625) < 1.0;
-        float _2257 = sqrt(max(fma(-_2246, 1.2345678806304931640625, 1.0), 0.0));
-        vec3 _2260 = vec3(_2215 * vec2(1.111111164093017578125), _2257);
-        uvec2 _2218 = gl_GlobalInvocationID.xy / uvec2(_1526.CellSize);
-        uint _2280 = 2u * ((_2218.y * _1526.Columns) + _2218.x);
-        vec4 _2268 = Spheres_1._data[_2280];
-        vec4 _2269 = Spheres_1._data[_2280 + 1u];
-        vec3 _5243;
-        if (_2249 && (_2269.y > 0.0))
+        vec2 _2356 = (((vec2(gl_GlobalInvocationID.xy % uvec2(_1830.CellSize)) + vec2(0.5)) / vec2(float(_1830.CellSize))) * 2.0) - vec2(1.0);
+        _2356.y = -_2356.y;
+        float _2387 = dot(_2356, _2356);
+        bool _2390 = (_2387 * 1.2345678806304931640625) < 1.0;
+        float _2398 = sqrt(max(fma(-_2387, 1.2345678806304931640625, 1.0), 0.0));
+        vec3 _2401 = vec3(_2356 * vec2(1.111111164093017578125), _2398);
+        uvec2 _2359 = gl_GlobalInvocationID.xy / uvec2(_1830.CellSize);
+        uint _2421 = 2u * ((_2359.y * _1830.Columns) + _2359.x);
+        vec4 _2409 = Spheres_1._data[_2421];
+        vec4 _2410 = Spheres_1._data[_2421 + 1u];
+        vec3 _5084;
+        if (_2390 && (_2410.y > 0.0))
         {
-            vec3 _5242;
+            float _5078;
+            float _5079;
+            vec3 _5080;
             do
             {
-                float _2346 = clamp(_2257, 0.0, 1.0);
-                if (_1526.GlassTransmission == 2u)
+                if (_1830.GlassTransmission == 2u)
                 {
-                    uvec2 _2474 = uvec2(textureSize(SphereTransmissionTable, 0));
-                    float _2524 = float(_2474.y / _2474.x);
-                    float _2530 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _2524 - 1.0);
-                    float _2532 = floor(_2530);
-                    float _2535 = 0.5 / float(_2474.x);
-                    float _2540 = clamp(_2268.w, _2535, 1.0 - _2535);
-                    vec3 _2307 = mix(textureLod(SphereTransmissionTable_LinearClamp, vec2(_2346, (_2532 + _2540) / _2524), 0.0).xyz, textureLod(SphereTransmissionTable_LinearClamp, vec2(_2346, (min(_2532 + 1.0, _2524 - 1.0) + _2540) / _2524), 0.0).xyz, vec3(_2530 - _2532));
-                    vec3 _2361 = _2260 - (vec3(0.0, 0.0, 1.0) * _2346);
-                    float _2364 = dot(_2361, _2361);
-                    vec3 _2385 = normalize((vec3(0.0, 0.0, 1.0) * (-cos(_2307.y))) + (mix(vec3(0.0), _2361 * inversesqrt(_2364), bvec3(_2364 > 9.9999999600419720025001879548654e-13)) * sin(_2307.y)));
-                    float _5239;
-                    do
-                    {
-                        float _2686 = float(_1526.SpecularMips - 1u);
-                        float _2688 = clamp(_2307.z, 0.0, 1.0);
-                        if (_1526.LodMapping == 1u)
-                        {
-                            _5239 = (_2688 * (2.0 - _2688)) * _2686;
-                            break;
-                        }
-                        if (_1526.LodMapping == 2u)
-                        {
-                            _5239 = pow(_2688, _1526.LodParameter) * _2686;
-                            break;
-                        }
-                        if (_1526.LodMapping == 3u)
-                        {
-                            _5239 = (_2688 > 0.0) ? clamp(0.800000011920928955078125 * log2((_2688 * _2688) * float(_1526.SpecularSize)), 0.0, _2686) : 0.0;
-                            break;
-                        }
-                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
-                        {
-                            float _2747 = float(_1526.SpecularSize);
-                            _5239 = (_2688 > 0.0) ? clamp(fma((_2686 - 1.0) / log2(_2747 / _1526.LodParameter), log2((_2688 * _2688) * _2747) - log2(_2747), _2686), 0.0, _2686) : 0.0;
-                            break;
-                        }
-                        _5239 = _2688 * _2686;
-                        break;
-                    } while(false);
-                    float _2839 = (_1526.LightCount > 0u) ? clamp((_5239 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                    float _2596 = max(_2307.z * _2307.z, 1.0000000116860974230803549289703e-07);
-                    vec3 _5241;
-                    _5241 = textureLod(Specular_LinearClamp, _2385, _5239).xyz;
-                    vec3 _2621;
-                    for (uint _5240 = 0u; _5240 < _1526.LightCount; _5241 = _2621, _5240++)
-                    {
-                        uint _2613 = 2u * _5240;
-                        vec4 _2577 = Lights_1._data[_2613];
-                        float _2857 = tan(min(0.5 * acos(clamp(dot(_2385, Lights_1._data[_2613].xyz), -1.0, 1.0)), 1.5));
-                        float _2867 = (0.5 * _2577.w) * pow(fma(_2857, _2857, 1.0), 0.75);
-                        float _2882 = (_2867 * _2867) / (_2596 * _2596);
-                        float _2889 = (_2857 * _2857) / (_2596 * _2596);
-                        float _2893 = (_2882 + 1.0) - _2889;
-                        _2621 = _5241 + ((Lights_1._data[(2u * _5240) + 1u].xyz * _2839) * clamp(0.5 + (((_2882 - 1.0) - _2889) / (2.0 * sqrt(fma(_2893, _2893, 4.0 * _2889)))), 0.0, 1.0));
-                    }
-                    _5242 = _5241 * _2307.x;
+                    float _2572 = clamp(_2398, 0.0, 1.0);
+                    uvec2 _2618 = uvec2(textureSize(SphereTransmissionTable, 0));
+                    float _2668 = float(_2618.y / _2618.x);
+                    float _2674 = clamp((_2410.z - 1.10000002384185791015625) * 5.0, 0.0, _2668 - 1.0);
+                    float _2676 = floor(_2674);
+                    float _2679 = 0.5 / float(_2618.x);
+                    float _2684 = clamp(_2409.w, _2679, 1.0 - _2679);
+                    vec3 _2558 = mix(textureLod(SphereTransmissionTable_LinearClamp, vec2(_2572, (_2676 + _2684) / _2668), 0.0).xyz, textureLod(SphereTransmissionTable_LinearClamp, vec2(_2572, (min(_2676 + 1.0, _2668 - 1.0) + _2684) / _2668), 0.0).xyz, vec3(_2674 - _2676));
+                    vec3 _2583 = _2401 - (vec3(0.0, 0.0, 1.0) * _2572);
+                    float _2586 = dot(_2583, _2583);
+                    _5080 = normalize((vec3(0.0, 0.0, 1.0) * (-cos(_2558.y))) + (mix(vec3(0.0), _2583 * inversesqrt(_2586), bvec3(_2586 > 9.9999999600419720025001879548654e-13)) * sin(_2558.y)));
+                    _5079 = _2558.z;
+                    _5078 = _2558.x;
                     break;
                 }
-                float _2398 = (1.0 - _2269.z) / (1.0 + _2269.z);
-                vec3 _2407 = refract(vec3(-0.0, -0.0, -1.0), _2260, 1.0 / _2269.z);
-                vec3 _2416 = normalize(_2260 - (_2407 * (2.0 * dot(_2260, _2407))));
-                vec3 _2421 = refract(_2407, -_2416, _2269.z);
-                if (dot(_2421, _2421) == 0.0)
-                {
-                    _5242 = vec3(0.0);
-                    break;
-                }
-                float _5238;
-                if (_1526.GlassTransmission == 1u)
-                {
-                    uvec2 _2911 = uvec2(textureSize(TransmissionTable, 0));
-                    float _2965 = float(_2911.y / _2911.x);
-                    float _2971 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _2965 - 1.0);
-                    float _2973 = floor(_2971);
-                    float _2976 = 0.5 / float(_2911.x);
-                    float _2981 = clamp(_2268.w, _2976, 1.0 - _2976);
-                    float _2441 = dot(_2416, _2407);
-                    uvec2 _3009 = uvec2(textureSize(TransmissionTable, 0));
-                    float _3063 = float(_3009.y / _3009.x);
-                    float _3069 = clamp((_2269.z - 1.10000002384185791015625) * 5.0, 0.0, _3063 - 1.0);
-                    float _3071 = floor(_3069);
-                    float _3074 = 0.5 / float(_3009.x);
-                    float _3079 = clamp(_2268.w, _3074, 1.0 - _3074);
-                    _5238 = mix(vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2346, (_2973 + _2981) / _2965), 0.0).x, _5278), vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2346, (min(_2973 + 1.0, _2965 - 1.0) + _2981) / _2965), 0.0).x, _5278), vec2(_2971 - _2973)).x * mix(vec2(_5278, textureLod(TransmissionTable_LinearClamp, vec2(_2441, (_3071 + _3079) / _3063), 0.0).y), vec2(_5278, textureLod(TransmissionTable_LinearClamp, vec2(_2441, (min(_3071 + 1.0, _3063 - 1.0) + _3079) / _3063), 0.0).y), vec2(_3069 - _3071)).y;
-                }
-                else
-                {
-                    _5238 = (1.0 - fma(_2398, _2398, fma(-_2398, _2398, 1.0) * pow(1.0 - clamp(_2257, 0.0, 1.0), 5.0))) * (1.0 - fma(_2398, _2398, fma(-_2398, _2398, 1.0) * pow(1.0 - clamp(dot(_2416, _2421), 0.0, 1.0), 5.0)));
-                }
-                float _2465 = _2268.w * _1526.GlassRoughnessScale;
-                float _5233;
+                float _2765;
+                float _5075;
+                vec3 _5077;
                 do
                 {
-                    float _3249 = float(_1526.SpecularMips - 1u);
-                    float _3251 = clamp(_2465, 0.0, 1.0);
-                    if (_1526.LodMapping == 1u)
+                    float _2739 = (1.0 - _2410.z) / (1.0 + _2410.z);
+                    vec3 _2748 = refract(vec3(-0.0, -0.0, -1.0), _2401, 1.0 / _2410.z);
+                    vec3 _2757 = normalize(_2401 - (_2748 * (2.0 * dot(_2401, _2748))));
+                    vec3 _2762 = refract(_2748, -_2757, _2410.z);
+                    _2765 = _2409.w * _1830.GlassRoughnessScale;
+                    if (dot(_2762, _2762) == 0.0)
                     {
-                        _5233 = (_3251 * (2.0 - _3251)) * _3249;
+                        _5077 = vec3(-0.0, -0.0, -1.0);
+                        _5075 = 0.0;
                         break;
                     }
-                    if (_1526.LodMapping == 2u)
+                    float _5073;
+                    if (_1830.GlassTransmission == 1u)
                     {
-                        _5233 = pow(_3251, _1526.LodParameter) * _3249;
-                        break;
+                        float _2786 = clamp(_2398, 0.0, 1.0);
+                        uvec2 _2823 = uvec2(textureSize(TransmissionTable, 0));
+                        float _2877 = float(_2823.y / _2823.x);
+                        float _2883 = clamp((_2410.z - 1.10000002384185791015625) * 5.0, 0.0, _2877 - 1.0);
+                        float _2885 = floor(_2883);
+                        float _2888 = 0.5 / float(_2823.x);
+                        float _2893 = clamp(_2409.w, _2888, 1.0 - _2888);
+                        float _2795 = dot(_2757, _2748);
+                        uvec2 _2921 = uvec2(textureSize(TransmissionTable, 0));
+                        float _2975 = float(_2921.y / _2921.x);
+                        float _2981 = clamp((_2410.z - 1.10000002384185791015625) * 5.0, 0.0, _2975 - 1.0);
+                        float _2983 = floor(_2981);
+                        float _2986 = 0.5 / float(_2921.x);
+                        float _2991 = clamp(_2409.w, _2986, 1.0 - _2986);
+                        _5073 = mix(vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2786, (_2885 + _2893) / _2877), 0.0).x, _5119), vec2(textureLod(TransmissionTable_LinearClamp, vec2(_2786, (min(_2885 + 1.0, _2877 - 1.0) + _2893) / _2877), 0.0).x, _5119), vec2(_2883 - _2885)).x * mix(vec2(_5119, textureLod(TransmissionTable_LinearClamp, vec2(_2795, (_2983 + _2991) / _2975), 0.0).y), vec2(_5119, textureLod(TransmissionTable_LinearClamp, vec2(_2795, (min(_2983 + 1.0, _2975 - 1.0) + _2991) / _2975), 0.0).y), vec2(_2981 - _2983)).y;
                     }
-                    if (_1526.LodMapping == 3u)
+                    else
                     {
-                        _5233 = (_3251 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3251 * _3251) * float(_1526.SpecularSize)), 0.0, _3249) : 0.0;
-                        break;
+                        _5073 = (1.0 - fma(_2739, _2739, fma(-_2739, _2739, 1.0) * pow(1.0 - clamp(_2398, 0.0, 1.0), 5.0))) * (1.0 - fma(_2739, _2739, fma(-_2739, _2739, 1.0) * pow(1.0 - clamp(dot(_2757, _2762), 0.0, 1.0), 5.0)));
                     }
-                    if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
-                    {
-                        float _3310 = float(_1526.SpecularSize);
-                        _5233 = (_3251 > 0.0) ? clamp(fma((_3249 - 1.0) / log2(_3310 / _1526.LodParameter), log2((_3251 * _3251) * _3310) - log2(_3310), _3249), 0.0, _3249) : 0.0;
-                        break;
-                    }
-                    _5233 = _3251 * _3249;
+                    _5077 = _2762;
+                    _5075 = _5073;
                     break;
                 } while(false);
-                float _3402 = (_1526.LightCount > 0u) ? clamp((_5233 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                float _3159 = max(_2465 * _2465, 1.0000000116860974230803549289703e-07);
-                vec3 _5235;
-                _5235 = textureLod(Specular_LinearClamp, _2421, _5233).xyz;
-                vec3 _3184;
-                for (uint _5234 = 0u; _5234 < _1526.LightCount; _5235 = _3184, _5234++)
-                {
-                    uint _3176 = 2u * _5234;
-                    vec4 _3140 = Lights_1._data[_3176];
-                    float _3420 = tan(min(0.5 * acos(clamp(dot(_2421, Lights_1._data[_3176].xyz), -1.0, 1.0)), 1.5));
-                    float _3430 = (0.5 * _3140.w) * pow(fma(_3420, _3420, 1.0), 0.75);
-                    float _3445 = (_3430 * _3430) / (_3159 * _3159);
-                    float _3452 = (_3420 * _3420) / (_3159 * _3159);
-                    float _3456 = (_3445 + 1.0) - _3452;
-                    _3184 = _5235 + ((Lights_1._data[(2u * _5234) + 1u].xyz * _3402) * clamp(0.5 + (((_3445 - 1.0) - _3452) / (2.0 * sqrt(fma(_3456, _3456, 4.0 * _3452)))), 0.0, 1.0));
-                }
-                _5242 = _5235 * _5238;
+                _5080 = _5077;
+                _5079 = _2765;
+                _5078 = _5075;
                 break;
             } while(false);
-            _5243 = _5242;
+            float _5081;
+            do
+            {
+                float _3122 = float(_1830.SpecularMips - 1u);
+                float _3124 = clamp(_5079, 0.0, 1.0);
+                if (_1830.LodMapping == 1u)
+                {
+                    _5081 = (_3124 * (2.0 - _3124)) * _3122;
+                    break;
+                }
+                if (_1830.LodMapping == 2u)
+                {
+                    _5081 = pow(_3124, _1830.LodParameter) * _3122;
+                    break;
+                }
+                if (_1830.LodMapping == 3u)
+                {
+                    _5081 = (_3124 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3124 * _3124) * float(_1830.SpecularSize)), 0.0, _3122) : 0.0;
+                    break;
+                }
+                if (((_1830.LodMapping == 4u) && (_1830.SpecularMips >= 3u)) && (float(_1830.SpecularSize) > _1830.LodParameter))
+                {
+                    float _3183 = float(_1830.SpecularSize);
+                    _5081 = (_3124 > 0.0) ? clamp(fma((_3122 - 1.0) / log2(_3183 / _1830.LodParameter), log2((_3124 * _3124) * _3183) - log2(_3183), _3122), 0.0, _3122) : 0.0;
+                    break;
+                }
+                _5081 = _3124 * _3122;
+                break;
+            } while(false);
+            float _3228 = (_1830.LightCount > 0u) ? clamp((_5081 - float(_1830.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+            vec3 _5083;
+            _5083 = textureLod(Specular_LinearClamp, _5080, _5081).xyz;
+            vec3 _2507;
+            for (uint _5082 = 0u; _5082 < _1830.LightCount; _5083 = _2507, _5082++)
+            {
+                uint _2495 = 2u * _5082;
+                float _3240 = max(_5079 * _5079, 1.0000000116860974230803549289703e-07);
+                vec4 _3232 = Lights_1._data[_2495];
+                float _3268 = tan(min(0.5 * acos(clamp(dot(_5080, Lights_1._data[_2495].xyz), -1.0, 1.0)), 1.5));
+                float _3278 = (0.5 * _3232.w) * pow(fma(_3268, _3268, 1.0), 0.75);
+                float _3293 = (_3278 * _3278) / (_3240 * _3240);
+                float _3300 = (_3268 * _3268) / (_3240 * _3240);
+                float _3304 = (_3293 + 1.0) - _3300;
+                _2507 = _5083 + ((Lights_1._data[(2u * _5082) + 1u].xyz * _3228) * clamp(0.5 + (((_3293 - 1.0) - _3300) / (2.0 * sqrt(fma(_3304, _3304, 4.0 * _3300)))), 0.0, 1.0));
+            }
+            _5084 = _5083 * _5078;
         }
         else
         {
-            vec3 _5244;
-            if (_2249)
+            vec3 _5085;
+            if (_2390)
             {
-                vec3 _5214;
-                float _5215;
+                vec3 _5054;
+                float _5055;
                 do
                 {
-                    vec3 _3640 = reflect(vec3(-0.0, -0.0, -1.0), _2260);
-                    vec4 _3586 = textureLod(LobeTable_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0);
-                    vec3 _5203;
+                    vec3 _3488 = reflect(vec3(-0.0, -0.0, -1.0), _2401);
+                    vec4 _3434 = textureLod(LobeTable_LinearClamp, vec2(clamp(_2398, 0.0, 1.0), _2409.w), 0.0);
+                    vec3 _5043;
                     do
                     {
-                        float _3762 = _2268.w * _2268.w;
-                        if (_1526.Direction == 1u)
+                        float _3610 = _2409.w * _2409.w;
+                        if (_1830.Direction == 1u)
                         {
-                            float _3768 = clamp(fma(-_2268.w, _2268.w, 1.0), 0.0, 1.0);
-                            _5203 = normalize(mix(_2260, _3640, vec3(_3768 * fma(_2268.w, _2268.w, sqrt(_3768)))));
+                            float _3616 = clamp(fma(-_2409.w, _2409.w, 1.0), 0.0, 1.0);
+                            _5043 = normalize(mix(_2401, _3488, vec3(_3616 * fma(_2409.w, _2409.w, sqrt(_3616)))));
                             break;
                         }
-                        if (_1526.Direction == 2u)
+                        if (_1830.Direction == 2u)
                         {
-                            _5203 = normalize(mix(_3640, _2260, vec3(_3762 * _3762)));
+                            _5043 = normalize(mix(_3488, _2401, vec3(_3610 * _3610)));
                             break;
                         }
-                        if (_1526.Direction == 3u)
+                        if (_1830.Direction == 3u)
                         {
-                            vec3 _5202;
+                            vec3 _5042;
                             do
                             {
-                                float _3817 = acos(clamp(dot(_2260, _3640), -1.0, 1.0));
-                                if (_3817 < 9.9999997473787516355514526367188e-05)
+                                float _3665 = acos(clamp(dot(_2401, _3488), -1.0, 1.0));
+                                if (_3665 < 9.9999997473787516355514526367188e-05)
                                 {
-                                    _5202 = _3640;
+                                    _5042 = _3488;
                                     break;
                                 }
-                                _5202 = ((_2260 * sin((1.0 - _3586.x) * _3817)) + (_3640 * sin(_3586.x * _3817))) / vec3(sin(_3817));
+                                _5042 = ((_2401 * sin((1.0 - _3434.x) * _3665)) + (_3488 * sin(_3434.x * _3665))) / vec3(sin(_3665));
                                 break;
                             } while(false);
-                            _5203 = _5202;
+                            _5043 = _5042;
                             break;
                         }
-                        _5203 = _3640;
+                        _5043 = _3488;
                         break;
                     } while(false);
-                    if (_1526.Lookup == 0u)
+                    if (_1830.Lookup == 0u)
                     {
-                        float _5212;
+                        float _5052;
                         do
                         {
-                            float _3882 = float(_1526.SpecularMips - 1u);
-                            float _3884 = clamp(_2268.w, 0.0, 1.0);
-                            if (_1526.LodMapping == 1u)
+                            float _3730 = float(_1830.SpecularMips - 1u);
+                            float _3732 = clamp(_2409.w, 0.0, 1.0);
+                            if (_1830.LodMapping == 1u)
                             {
-                                _5212 = (_3884 * (2.0 - _3884)) * _3882;
+                                _5052 = (_3732 * (2.0 - _3732)) * _3730;
                                 break;
                             }
-                            if (_1526.LodMapping == 2u)
+                            if (_1830.LodMapping == 2u)
                             {
-                                _5212 = pow(_3884, _1526.LodParameter) * _3882;
+                                _5052 = pow(_3732, _1830.LodParameter) * _3730;
                                 break;
                             }
-                            if (_1526.LodMapping == 3u)
+                            if (_1830.LodMapping == 3u)
                             {
-                                _5212 = (_3884 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3884 * _3884) * float(_1526.SpecularSize)), 0.0, _3882) : 0.0;
+                                _5052 = (_3732 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3732 * _3732) * float(_1830.SpecularSize)), 0.0, _3730) : 0.0;
                                 break;
                             }
-                            if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
+                            if (((_1830.LodMapping == 4u) && (_1830.SpecularMips >= 3u)) && (float(_1830.SpecularSize) > _1830.LodParameter))
                             {
-                                float _3943 = float(_1526.SpecularSize);
-                                _5212 = (_3884 > 0.0) ? clamp(fma((_3882 - 1.0) / log2(_3943 / _1526.LodParameter), log2((_3884 * _3884) * _3943) - log2(_3943), _3882), 0.0, _3882) : 0.0;
+                                float _3791 = float(_1830.SpecularSize);
+                                _5052 = (_3732 > 0.0) ? clamp(fma((_3730 - 1.0) / log2(_3791 / _1830.LodParameter), log2((_3732 * _3732) * _3791) - log2(_3791), _3730), 0.0, _3730) : 0.0;
                                 break;
                             }
-                            _5212 = _3884 * _3882;
+                            _5052 = _3732 * _3730;
                             break;
                         } while(false);
-                        _5215 = (_1526.LightCount > 0u) ? clamp((_5212 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _5214 = textureLod(Specular_LinearClamp, _5203, _5212).xyz * 1.0;
+                        _5055 = (_1830.LightCount > 0u) ? clamp((_5052 - float(_1830.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _5054 = textureLod(Specular_LinearClamp, _5043, _5052).xyz * 1.0;
                         break;
                     }
-                    if (_1526.Lookup == 1u)
+                    if (_1830.Lookup == 1u)
                     {
-                        float _5210;
+                        float _5050;
                         do
                         {
-                            float _4027 = float(_1526.SpecularMips - 1u);
-                            float _4029 = clamp(_3586.y, 0.0, 1.0);
-                            if (_1526.LodMapping == 1u)
+                            float _3875 = float(_1830.SpecularMips - 1u);
+                            float _3877 = clamp(_3434.y, 0.0, 1.0);
+                            if (_1830.LodMapping == 1u)
                             {
-                                _5210 = (_4029 * (2.0 - _4029)) * _4027;
+                                _5050 = (_3877 * (2.0 - _3877)) * _3875;
                                 break;
                             }
-                            if (_1526.LodMapping == 2u)
+                            if (_1830.LodMapping == 2u)
                             {
-                                _5210 = pow(_4029, _1526.LodParameter) * _4027;
+                                _5050 = pow(_3877, _1830.LodParameter) * _3875;
                                 break;
                             }
-                            if (_1526.LodMapping == 3u)
+                            if (_1830.LodMapping == 3u)
                             {
-                                _5210 = (_4029 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4029 * _4029) * float(_1526.SpecularSize)), 0.0, _4027) : 0.0;
+                                _5050 = (_3877 > 0.0) ? clamp(0.800000011920928955078125 * log2((_3877 * _3877) * float(_1830.SpecularSize)), 0.0, _3875) : 0.0;
                                 break;
                             }
-                            if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
+                            if (((_1830.LodMapping == 4u) && (_1830.SpecularMips >= 3u)) && (float(_1830.SpecularSize) > _1830.LodParameter))
                             {
-                                float _4088 = float(_1526.SpecularSize);
-                                _5210 = (_4029 > 0.0) ? clamp(fma((_4027 - 1.0) / log2(_4088 / _1526.LodParameter), log2((_4029 * _4029) * _4088) - log2(_4088), _4027), 0.0, _4027) : 0.0;
+                                float _3936 = float(_1830.SpecularSize);
+                                _5050 = (_3877 > 0.0) ? clamp(fma((_3875 - 1.0) / log2(_3936 / _1830.LodParameter), log2((_3877 * _3877) * _3936) - log2(_3936), _3875), 0.0, _3875) : 0.0;
                                 break;
                             }
-                            _5210 = _4029 * _4027;
+                            _5050 = _3877 * _3875;
                             break;
                         } while(false);
-                        _5215 = (_1526.LightCount > 0u) ? clamp((_5210 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
-                        _5214 = textureLod(Specular_LinearClamp, _5203, _5210).xyz * 1.0;
+                        _5055 = (_1830.LightCount > 0u) ? clamp((_5050 - float(_1830.LightLevel)) + 1.0, 0.0, 1.0) : 0.0;
+                        _5054 = textureLod(Specular_LinearClamp, _5043, _5050).xyz * 1.0;
                         break;
                     }
-                    vec3 _3683 = cross(_2260, vec3(0.0, 0.0, 1.0));
-                    float _3685 = length(_3683);
-                    vec3 _3695 = mix(vec3(0.0), cross(_3683 / vec3(_3685), _5203), bvec3(_3685 > 9.9999999747524270787835121154785e-07));
-                    float _5206;
+                    vec3 _3531 = cross(_2401, vec3(0.0, 0.0, 1.0));
+                    float _3533 = length(_3531);
+                    vec3 _3543 = mix(vec3(0.0), cross(_3531 / vec3(_3533), _5043), bvec3(_3533 > 9.9999999747524270787835121154785e-07));
+                    float _5046;
                     do
                     {
-                        float _4172 = float(_1526.SpecularMips - 1u);
-                        float _4174 = clamp(_3586.z, 0.0, 1.0);
-                        if (_1526.LodMapping == 1u)
+                        float _4020 = float(_1830.SpecularMips - 1u);
+                        float _4022 = clamp(_3434.z, 0.0, 1.0);
+                        if (_1830.LodMapping == 1u)
                         {
-                            _5206 = (_4174 * (2.0 - _4174)) * _4172;
+                            _5046 = (_4022 * (2.0 - _4022)) * _4020;
                             break;
                         }
-                        if (_1526.LodMapping == 2u)
+                        if (_1830.LodMapping == 2u)
                         {
-                            _5206 = pow(_4174, _1526.LodParameter) * _4172;
+                            _5046 = pow(_4022, _1830.LodParameter) * _4020;
                             break;
                         }
-                        if (_1526.LodMapping == 3u)
+                        if (_1830.LodMapping == 3u)
                         {
-                            _5206 = (_4174 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4174 * _4174) * float(_1526.SpecularSize)), 0.0, _4172) : 0.0;
+                            _5046 = (_4022 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4022 * _4022) * float(_1830.SpecularSize)), 0.0, _4020) : 0.0;
                             break;
                         }
-                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
+                        if (((_1830.LodMapping == 4u) && (_1830.SpecularMips >= 3u)) && (float(_1830.SpecularSize) > _1830.LodParameter))
                         {
-                            float _4233 = float(_1526.SpecularSize);
-                            _5206 = (_4174 > 0.0) ? clamp(fma((_4172 - 1.0) / log2(_4233 / _1526.LodParameter), log2((_4174 * _4174) * _4233) - log2(_4233), _4172), 0.0, _4172) : 0.0;
+                            float _4081 = float(_1830.SpecularSize);
+                            _5046 = (_4022 > 0.0) ? clamp(fma((_4020 - 1.0) / log2(_4081 / _1830.LodParameter), log2((_4022 * _4022) * _4081) - log2(_4081), _4020), 0.0, _4020) : 0.0;
                             break;
                         }
-                        _5206 = _4174 * _4172;
+                        _5046 = _4022 * _4020;
                         break;
                     } while(false);
-                    float _5208;
+                    float _5048;
                     do
                     {
-                        float _4317 = float(_1526.SpecularMips - 1u);
-                        float _4319 = clamp(_3586.z, 0.0, 1.0);
-                        if (_1526.LodMapping == 1u)
+                        float _4165 = float(_1830.SpecularMips - 1u);
+                        float _4167 = clamp(_3434.z, 0.0, 1.0);
+                        if (_1830.LodMapping == 1u)
                         {
-                            _5208 = (_4319 * (2.0 - _4319)) * _4317;
+                            _5048 = (_4167 * (2.0 - _4167)) * _4165;
                             break;
                         }
-                        if (_1526.LodMapping == 2u)
+                        if (_1830.LodMapping == 2u)
                         {
-                            _5208 = pow(_4319, _1526.LodParameter) * _4317;
+                            _5048 = pow(_4167, _1830.LodParameter) * _4165;
                             break;
                         }
-                        if (_1526.LodMapping == 3u)
+                        if (_1830.LodMapping == 3u)
                         {
-                            _5208 = (_4319 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4319 * _4319) * float(_1526.SpecularSize)), 0.0, _4317) : 0.0;
+                            _5048 = (_4167 > 0.0) ? clamp(0.800000011920928955078125 * log2((_4167 * _4167) * float(_1830.SpecularSize)), 0.0, _4165) : 0.0;
                             break;
                         }
-                        if (((_1526.LodMapping == 4u) && (_1526.SpecularMips >= 3u)) && (float(_1526.SpecularSize) > _1526.LodParameter))
+                        if (((_1830.LodMapping == 4u) && (_1830.SpecularMips >= 3u)) && (float(_1830.SpecularSize) > _1830.LodParameter))
                         {
-                            float _4378 = float(_1526.SpecularSize);
-                            _5208 = (_4319 > 0.0) ? clamp(fma((_4317 - 1.0) / log2(_4378 / _1526.LodParameter), log2((_4319 * _4319) * _4378) - log2(_4378), _4317), 0.0, _4317) : 0.0;
+                            float _4226 = float(_1830.SpecularSize);
+                            _5048 = (_4167 > 0.0) ? clamp(fma((_4165 - 1.0) / log2(_4226 / _1830.LodParameter), log2((_4167 * _4167) * _4226) - log2(_4226), _4165), 0.0, _4165) : 0.0;
                             break;
                         }
-                        _5208 = _4319 * _4317;
+                        _5048 = _4167 * _4165;
                         break;
                     } while(false);
-                    _5215 = fma(0.5, (_1526.LightCount > 0u) ? clamp((_5206 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1526.LightCount > 0u) ? clamp((_5208 - float(_1526.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
-                    _5214 = (textureLod(Specular_LinearClamp, normalize((_5203 * cos(_3586.w)) + (_3695 * sin(_3586.w))), _5206).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_5203 * cos(_3586.w)) - (_3695 * sin(_3586.w))), _5208).xyz * 0.5);
+                    _5055 = fma(0.5, (_1830.LightCount > 0u) ? clamp((_5046 - float(_1830.LightLevel)) + 1.0, 0.0, 1.0) : 0.0, 0.5 * ((_1830.LightCount > 0u) ? clamp((_5048 - float(_1830.LightLevel)) + 1.0, 0.0, 1.0) : 0.0));
+                    _5054 = (textureLod(Specular_LinearClamp, normalize((_5043 * cos(_3434.w)) + (_3543 * sin(_3434.w))), _5046).xyz * 0.5) + (textureLod(Specular_LinearClamp, normalize((_5043 * cos(_3434.w)) - (_3543 * sin(_3434.w))), _5048).xyz * 0.5);
                     break;
                 } while(false);
-                vec2 _3530 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0).xy);
-                vec3 _2152 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2280].xyz, vec3(_2269.x));
-                vec2 _4424 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2257, 0.0, 1.0), _2268.w), 0.0).xy);
-                vec3 _4447 = (_2152 * _4424.x) + vec3(_4424.y);
-                vec3 _5223;
-                _5223 = fma(_5214, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2280].xyz, vec3(_2269.x)) * _3530.x) + vec3(_3530.y), (textureLod(IrradianceMap_LinearClamp, _2260, 0.0).xyz * Spheres_1._data[_2280].xyz) * (1.0 - _2269.x));
-                vec3 _2194;
-                for (uint _5216 = 0u; _5216 < _1526.LightCount; _5223 = _2194, _5216++)
+                vec2 _3378 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2398, 0.0, 1.0), _2409.w), 0.0).xy);
+                vec3 _2293 = mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2421].xyz, vec3(_2410.x));
+                vec2 _4272 = vec2(textureLod(BrdfLut_LinearClamp, vec2(clamp(_2398, 0.0, 1.0), _2409.w), 0.0).xy);
+                vec3 _4295 = (_2293 * _4272.x) + vec3(_4272.y);
+                vec3 _5063;
+                _5063 = fma(_5054, (mix(vec3(0.039999999105930328369140625), Spheres_1._data[_2421].xyz, vec3(_2410.x)) * _3378.x) + vec3(_3378.y), (textureLod(IrradianceMap_LinearClamp, _2401, 0.0).xyz * Spheres_1._data[_2421].xyz) * (1.0 - _2410.x));
+                vec3 _2335;
+                for (uint _5056 = 0u; _5056 < _1830.LightCount; _5063 = _2335, _5056++)
                 {
-                    uint _2176 = 2u * _5216;
-                    uint _2179 = (2u * _5216) + 1u;
-                    vec4 _2082 = Lights_1._data[_2176];
-                    vec4 _2083 = Lights_1._data[_2179];
-                    vec3 _4448 = Lights_1._data[_2176].xyz;
-                    vec3 _4488 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_4448.z) < 0.999000012874603271484375)), Lights_1._data[_2176].xyz));
-                    vec3 _4491 = cross(Lights_1._data[_2176].xyz, _4488);
-                    float _4494 = tan(_2082.w);
-                    vec3 _5218;
-                    _5218 = vec3(0.0);
-                    vec3 _5245;
-                    for (uint _5217 = 0u; _5217 < 19u; _5218 = _5245, _5217++)
+                    uint _2317 = 2u * _5056;
+                    uint _2320 = (2u * _5056) + 1u;
+                    vec4 _2223 = Lights_1._data[_2317];
+                    vec4 _2224 = Lights_1._data[_2320];
+                    vec3 _4296 = Lights_1._data[_2317].xyz;
+                    vec3 _4336 = normalize(cross(mix(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), bvec3(abs(_4296.z) < 0.999000012874603271484375)), Lights_1._data[_2317].xyz));
+                    vec3 _4339 = cross(Lights_1._data[_2317].xyz, _4336);
+                    float _4342 = tan(_2223.w);
+                    vec3 _5058;
+                    _5058 = vec3(0.0);
+                    vec3 _5086;
+                    for (uint _5057 = 0u; _5057 < 19u; _5058 = _5086, _5057++)
                     {
-                        vec2 _5226;
+                        vec2 _5066;
                         do
                         {
-                            if (_5217 == 0u)
+                            if (_5057 == 0u)
                             {
-                                _5226 = vec2(0.0);
+                                _5066 = vec2(0.0);
                                 break;
                             }
-                            bool _4602 = _5217 <= 6u;
-                            float _4619 = _4602 ? (float(_5217 - 1u) * 1.0471975803375244140625) : ((float(_5217 - 7u) + 0.5) * 0.52359879016876220703125);
-                            _5226 = vec2(cos(_4619), sin(_4619)) * (_4602 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
+                            bool _4450 = _5057 <= 6u;
+                            float _4467 = _4450 ? (float(_5057 - 1u) * 1.0471975803375244140625) : ((float(_5057 - 7u) + 0.5) * 0.52359879016876220703125);
+                            _5066 = vec2(cos(_4467), sin(_4467)) * (_4450 ? 0.4588314592838287353515625 : 0.827170193195343017578125);
                             break;
                         } while(false);
-                        vec2 _4455 = _5226 * _4494;
-                        vec3 _4515 = normalize((Lights_1._data[_2176].xyz + (_4488 * _4455.x)) + (_4491 * _4455.y));
-                        if (dot(_2260, _4515) > 0.0)
+                        vec2 _4303 = _5066 * _4342;
+                        vec3 _4363 = normalize((Lights_1._data[_2317].xyz + (_4336 * _4303.x)) + (_4339 * _4303.y));
+                        if (dot(_2401, _4363) > 0.0)
                         {
-                            vec3 _5227;
+                            vec3 _5067;
                             do
                             {
-                                float _4649 = dot(_2260, _4515);
-                                float _4653 = clamp(_2257, 0.0, 1.0);
-                                if ((_4649 <= 0.0) || (_4653 <= 0.0))
+                                float _4497 = dot(_2401, _4363);
+                                float _4501 = clamp(_2398, 0.0, 1.0);
+                                if ((_4497 <= 0.0) || (_4501 <= 0.0))
                                 {
-                                    _5227 = vec3(0.0);
+                                    _5067 = vec3(0.0);
                                     break;
                                 }
-                                vec3 _4664 = normalize(_4515 + vec3(0.0, 0.0, 1.0));
-                                float _4738 = _2268.w * _2268.w;
-                                float _4759 = _2268.w * _2268.w;
-                                float _4681 = clamp(dot(_2260, _4664), 0.0, 1.0);
-                                float _4780 = _2268.w * _2268.w;
-                                float _4792 = fma(_4681 * _4681, fma(_4780, _4780, -1.0), 1.0);
-                                _5227 = (_2152 + ((vec3(1.0) - _2152) * pow(clamp(1.0 - clamp(_4664.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_4649 / fma(_4649, fma(-_4738, 0.5, 1.0), _4738 * 0.5)) * (_4653 / fma(_4653, fma(-_4759, 0.5, 1.0), _4759 * 0.5))) * ((_4780 * _4780) / ((3.1415927410125732421875 * _4792) * _4792))) / (4.0 * _4653));
+                                vec3 _4512 = normalize(_4363 + vec3(0.0, 0.0, 1.0));
+                                float _4586 = _2409.w * _2409.w;
+                                float _4607 = _2409.w * _2409.w;
+                                float _4529 = clamp(dot(_2401, _4512), 0.0, 1.0);
+                                float _4628 = _2409.w * _2409.w;
+                                float _4640 = fma(_4529 * _4529, fma(_4628, _4628, -1.0), 1.0);
+                                _5067 = (_2293 + ((vec3(1.0) - _2293) * pow(clamp(1.0 - clamp(_4512.z, 0.0, 1.0), 0.0, 1.0), 5.0))) * ((((_4497 / fma(_4497, fma(-_4586, 0.5, 1.0), _4586 * 0.5)) * (_4501 / fma(_4501, fma(-_4607, 0.5, 1.0), _4607 * 0.5))) * ((_4628 * _4628) / ((3.1415927410125732421875 * _4640) * _4640))) / (4.0 * _4501));
                                 break;
                             } while(false);
-                            _5245 = _5218 + _5227;
+                            _5086 = _5058 + _5067;
                         }
                         else
                         {
-                            _5245 = _5218;
+                            _5086 = _5058;
                         }
                     }
-                    float _4543 = clamp((((2.0 * _2268.w) * _2268.w) / max(_2082.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
-                    vec4 _4470 = Lights_1._data[_2176];
-                    float _4820 = 0.5 * _4470.w;
-                    float _4822 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _2260), Lights_1._data[_2176].xyz), -1.0, 1.0));
-                    float _4826 = max(_2268.w * _2268.w, 1.0000000116860974230803549289703e-07);
-                    float _4840 = (_4820 * _4820) / (_4826 * _4826);
-                    float _4847 = (_4822 * _4822) / (_4826 * _4826);
-                    float _4851 = (_4840 + 1.0) - _4847;
-                    float _4567 = sin(_2082.w);
-                    float _4571 = dot(_2260, Lights_1._data[_2176].xyz);
-                    float _4574 = _4567 * _4567;
-                    float _5219;
+                    float _4391 = clamp((((2.0 * _2409.w) * _2409.w) / max(_2223.w, 9.9999999747524270787835121154785e-07)) - 1.0, 0.0, 1.0);
+                    vec4 _4318 = Lights_1._data[_2317];
+                    float _4668 = 0.5 * _4318.w;
+                    float _4670 = 0.5 * acos(clamp(dot(reflect(vec3(-0.0, -0.0, -1.0), _2401), Lights_1._data[_2317].xyz), -1.0, 1.0));
+                    float _4674 = max(_2409.w * _2409.w, 1.0000000116860974230803549289703e-07);
+                    float _4688 = (_4668 * _4668) / (_4674 * _4674);
+                    float _4695 = (_4670 * _4670) / (_4674 * _4674);
+                    float _4699 = (_4688 + 1.0) - _4695;
+                    float _4415 = sin(_2223.w);
+                    float _4419 = dot(_2401, Lights_1._data[_2317].xyz);
+                    float _4422 = _4415 * _4415;
+                    float _5059;
                     do
                     {
-                        if (((_4571 * _4571) > _4574) || (_4574 <= 0.0))
+                        if (((_4419 * _4419) > _4422) || (_4422 <= 0.0))
                         {
-                            _5219 = (3.1415927410125732421875 * _4574) * clamp(_4571, 0.0, 1.0);
+                            _5059 = (3.1415927410125732421875 * _4422) * clamp(_4419, 0.0, 1.0);
                             break;
                         }
-                        float _4896 = sqrt(clamp(fma(-_4571, _4571, 1.0), 0.0, 1.0));
-                        float _4900 = sqrt((1.0 / _4574) - 1.0);
-                        float _4906 = (-_4900) * (_4571 / _4896);
-                        float _4914 = _4896 * sqrt(clamp(fma(-_4906, _4906, 1.0), 0.0, 1.0));
-                        _5219 = max(fma(fma(_4571, acos(clamp(_4906, -1.0, 1.0)), -(_4900 * _4914)), _4574, atan(_4914 / _4900)), 0.0);
+                        float _4744 = sqrt(clamp(fma(-_4419, _4419, 1.0), 0.0, 1.0));
+                        float _4748 = sqrt((1.0 / _4422) - 1.0);
+                        float _4754 = (-_4748) * (_4419 / _4744);
+                        float _4762 = _4744 * sqrt(clamp(fma(-_4754, _4754, 1.0), 0.0, 1.0));
+                        _5059 = max(fma(fma(_4419, acos(clamp(_4754, -1.0, 1.0)), -(_4748 * _4762)), _4422, atan(_4762 / _4748)), 0.0);
                         break;
                     } while(false);
-                    _2194 = fma(((mix(mix(vec3(0.0), (_4447 * clamp(0.5 + (((_4840 - 1.0) - _4847) / (2.0 * sqrt(fma(_4851, _4851, 4.0 * _4847)))), 0.0, 1.0)) / vec3(_2083.w), bvec3(_4543 < 1.0)), _5218 * 0.052631579339504241943359375, vec3(_4543)) * _5215) * _2083.w) + ((Spheres_1._data[_2280].xyz * (1.0 - _2269.x)) * (_5219 * 0.3183098733425140380859375)), Lights_1._data[_2179].xyz, _5223);
+                    _2335 = fma(((mix(mix(vec3(0.0), (_4295 * clamp(0.5 + (((_4688 - 1.0) - _4695) / (2.0 * sqrt(fma(_4699, _4699, 4.0 * _4695)))), 0.0, 1.0)) / vec3(_2224.w), bvec3(_4391 < 1.0)), _5058 * 0.052631579339504241943359375, vec3(_4391)) * _5055) * _2224.w) + ((Spheres_1._data[_2421].xyz * (1.0 - _2410.x)) * (_5059 * 0.3183098733425140380859375)), Lights_1._data[_2320].xyz, _5063);
                 }
-                _5244 = _5223;
+                _5085 = _5063;
             }
             else
             {
-                _5244 = vec3(0.0);
+                _5085 = vec3(0.0);
             }
-            _5243 = _5244;
+            _5084 = _5085;
         }
-        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_5243, float(_2249)));
+        imageStore(SplitSum, ivec2(gl_GlobalInvocationID.xy), vec4(_5084, float(_2390)));
         break;
     } while(false);
 }

@@ -2,16 +2,8 @@
 // in linear radiance, for the host to hold against RenderReferenceCS's Monte Carlo reference.
 // Opaque spheres take the recipe's shading (Common/ImageBasedLighting.fxh's IblShadeOpaque; the
 // documents' combine is the recipe of linear lods, R and one lookup at the surface's roughness,
-// no lights). Glass takes one of three analogues of the split sum for transmission through a
-// solid sphere, each a prefiltered lookup times the share of light that comes out, with the lights
-// the bake took out added through the lookup's kernel (IblKernelDiskShare):
-//   - GLASS_SCHLICK, engines' solid-sphere refraction (Filament's), here with the sphere's exact
-//     chord: the lookup along the direction a smooth sphere sends the view ray out, at the
-//     roughness's mip scaled by GlassRoughnessScale, times Schlick's 1 - F at the way in and out;
-//   - GLASS_TABULATED: the same lookup, times the transmission table's shares of the rough
-//     interface at each crossing;
-//   - GLASS_SPHERE: the sphere transmission table's fit of the rough sphere's exiting light (its
-//     energy, mean direction and spread as a kernel roughness).
+// no lights); glass the transmission GlassTransmission names (IblGlassReadOf), each with the
+// lights the bake took out added as the fxh's functions say.
 #include "Common/ImageBasedLighting.fxh"
 #include "Common/SphereGrid.fxh"
 
@@ -31,10 +23,6 @@ cbuffer SplitSumParameter : register( b0 )
     float GlassRoughnessScale;
 };
 
-static const uint GLASS_SCHLICK = 0u;
-static const uint GLASS_TABULATED = 1u;
-static const uint GLASS_SPHERE = 2u;
-
 TextureCube Specular;
 TextureCube IrradianceMap;
 Texture2D<float2> BrdfLut;
@@ -51,50 +39,15 @@ IblRecipe Recipe()
     return IblRecipeOf( LodMapping, LodParameter, SpecularMips, SpecularSize, Direction, Lookup, LightCount, LightLevel );
 }
 
-float SchlickTransmission( float cosine, float f0 )
-{
-    return 1.f - ( f0 + ( 1.f - f0 ) * pow( 1.f - saturate( cosine ), 5.f ) );
-}
-
-// The prefiltered radiance about `direction` at a lookup roughness, with the lights the bake
-// took out seen through the same kernel where the lookup's mips lack them.
-float3 GlassLookup( float3 direction, float lookupRoughness )
-{
-    float lod = IblLodOfRoughness( lookupRoughness, Recipe() );
-    float3 radiance = Specular.SampleLevel( LinearClamp, direction, lod ).rgb;
-    float residualShare = IblResidualShare( lod, Recipe() );
-    float alpha = max( lookupRoughness * lookupRoughness, 1e-7f );
-    for ( uint i = 0u; i < LightCount; ++i )
-        radiance += residualShare * Lights[2u * i + 1u].rgb * IblKernelDiskShare( direction, alpha, Lights[2u * i] );
-    return radiance;
-}
-
 float3 GlassSplitSum( float3 normal, float3 viewDirection, float roughness, float eta )
 {
-    float ndotv = saturate( dot( normal, viewDirection ) );
-    if ( GlassTransmission == GLASS_SPHERE )
-    {
-        float3 fit = IblSphereTransmission( ndotv, roughness, eta, SphereTransmissionTable, LinearClamp );
-        float3 towardsNormal = normal - ndotv * viewDirection;
-        float length2 = dot( towardsNormal, towardsNormal );
-        towardsNormal = length2 > 1e-12f ? towardsNormal * rsqrt( length2 ) : ( float3 )0.f;
-        float3 direction = normalize( -cos( fit.y ) * viewDirection + sin( fit.y ) * towardsNormal );
-        return GlassLookup( direction, fit.z ) * fit.x;
-    }
-    float dielectric = ( 1.f - eta ) / ( 1.f + eta );
-    float f0 = dielectric * dielectric;
-    float3 inside = refract( -viewDirection, normal, 1.f / eta );
-    float3 exitPoint = normalize( normal - 2.f * dot( normal, inside ) * inside );
-    float3 outside = refract( inside, -exitPoint, eta );
-    if ( dot( outside, outside ) == 0.f )
-        return ( float3 )0.f; // a smooth sphere refracts every ray out: only float rounding lands here
-    float transmission;
-    if ( GlassTransmission == GLASS_TABULATED )
-        transmission = IblTransmittedShares( ndotv, roughness, eta, TransmissionTable, LinearClamp ).x *
-                       IblTransmittedShares( dot( exitPoint, inside ), roughness, eta, TransmissionTable, LinearClamp ).y;
-    else
-        transmission = SchlickTransmission( dot( normal, viewDirection ), f0 ) * SchlickTransmission( dot( exitPoint, outside ), f0 );
-    return GlassLookup( outside, roughness * GlassRoughnessScale ) * transmission;
+    IblGlassRead read = IblGlassReadOf( GlassTransmission, normal, viewDirection, roughness, eta, GlassRoughnessScale,
+                                        TransmissionTable, SphereTransmissionTable, LinearClamp );
+    float residualShare;
+    float3 radiance = IblGlassRadiance( read, Recipe(), Specular, LinearClamp, residualShare );
+    for ( uint i = 0u; i < LightCount; ++i )
+        radiance += IblGlassLight( read, residualShare, Lights[2u * i], Lights[2u * i + 1u] );
+    return radiance * read.Weight;
 }
 
 [numthreads(8, 8, 1)]

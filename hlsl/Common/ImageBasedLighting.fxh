@@ -357,4 +357,99 @@ float3 IblSphereTransmission( float ndotv, float roughness, float eta, Texture2D
                  read.Blend );
 }
 
+// ---------------------------------------------------------------------------------------------
+// Glass: a solid sphere of rough glass shaded as one prefiltered lookup times the share of the
+// light that comes out, the lights the bake took out seen through the lookup's kernel. Three
+// analogues, measured against the Monte Carlo reference in docs/shading.md:
+static const uint IBL_GLASS_SCHLICK = 0;   // engines' solid-sphere refraction (Filament's) with the sphere's exact
+                                           // chord, at the roughness's mip scaled by a factor, times Schlick's 1 - F
+                                           // at the way in and out
+static const uint IBL_GLASS_TABULATED = 1; // the same lookup, times the transmission table's shares of the rough
+                                           // interface at each crossing
+static const uint IBL_GLASS_SPHERE = 2;    // the sphere transmission table's fit of the rough sphere's exiting light:
+                                           // its energy, mean direction and spread as a kernel roughness (the kit's)
+
+// Where glass reads the prefiltered map, at which kernel roughness, and the share of light that
+// comes out along V.
+struct IblGlassRead
+{
+    float3 Direction;
+    float Roughness;
+    float Weight;
+};
+
+float IblSchlickTransmission( float cosine, float f0 )
+{
+    return 1.f - ( f0 + ( 1.f - f0 ) * pow( 1.f - saturate( cosine ), 5.f ) );
+}
+
+IblGlassRead IblSphereGlassRead( float3 normal, float3 viewDirection, float roughness, float eta,
+                                 Texture2D<float4> sphereTable, SamplerState linearSampler )
+{
+    float ndotv = saturate( dot( normal, viewDirection ) );
+    float3 fit = IblSphereTransmission( ndotv, roughness, eta, sphereTable, linearSampler );
+    float3 towardsNormal = normal - ndotv * viewDirection;
+    float length2 = dot( towardsNormal, towardsNormal );
+    towardsNormal = length2 > 1e-12f ? towardsNormal * rsqrt( length2 ) : ( float3 )0.f;
+    IblGlassRead read;
+    read.Direction = normalize( -cos( fit.y ) * viewDirection + sin( fit.y ) * towardsNormal );
+    read.Roughness = fit.z;
+    read.Weight = fit.x;
+    return read;
+}
+
+// The refracted read of IBL_GLASS_SCHLICK and IBL_GLASS_TABULATED: along the direction a smooth
+// sphere sends the view ray out.
+IblGlassRead IblRefractedGlassRead( uint mode, float3 normal, float3 viewDirection, float roughness, float eta,
+                                    float roughnessScale, Texture2D<float2> transmissionTable, SamplerState linearSampler )
+{
+    float dielectric = ( 1.f - eta ) / ( 1.f + eta );
+    float f0 = dielectric * dielectric;
+    float3 inside = refract( -viewDirection, normal, 1.f / eta );
+    float3 exitPoint = normalize( normal - 2.f * dot( normal, inside ) * inside );
+    float3 outside = refract( inside, -exitPoint, eta );
+    IblGlassRead read;
+    read.Roughness = roughness * roughnessScale;
+    read.Direction = -viewDirection;
+    read.Weight = 0.f;
+    if ( dot( outside, outside ) == 0.f )
+        return read; // a smooth sphere refracts every ray out: only float rounding lands here
+    read.Direction = outside;
+    if ( mode == IBL_GLASS_TABULATED )
+        read.Weight = IblTransmittedShares( saturate( dot( normal, viewDirection ) ), roughness, eta, transmissionTable,
+                                            linearSampler ).x *
+                      IblTransmittedShares( dot( exitPoint, inside ), roughness, eta, transmissionTable, linearSampler ).y;
+    else
+        read.Weight = IblSchlickTransmission( dot( normal, viewDirection ), f0 ) *
+                      IblSchlickTransmission( dot( exitPoint, outside ), f0 );
+    return read;
+}
+
+IblGlassRead IblGlassReadOf( uint mode, float3 normal, float3 viewDirection, float roughness, float eta,
+                             float roughnessScale, Texture2D<float2> transmissionTable, Texture2D<float4> sphereTable,
+                             SamplerState linearSampler )
+{
+    if ( mode == IBL_GLASS_SPHERE )
+        return IblSphereGlassRead( normal, viewDirection, roughness, eta, sphereTable, linearSampler );
+    return IblRefractedGlassRead( mode, normal, viewDirection, roughness, eta, roughnessScale, transmissionTable,
+                                  linearSampler );
+}
+
+// The prefiltered radiance of a glass read, before its weight; residualShare as IblShadeOpaque's.
+// The caller adds IblGlassLight for each light, then multiplies the sum by read.Weight.
+float3 IblGlassRadiance( IblGlassRead read, IblRecipe recipe, TextureCube prefiltered, SamplerState linearSampler,
+                         out float residualShare )
+{
+    float lod = IblLodOfRoughness( read.Roughness, recipe );
+    residualShare = IblResidualShare( lod, recipe );
+    return prefiltered.SampleLevel( linearSampler, read.Direction, lod ).rgb;
+}
+
+// A light the bake took out, seen through a glass read's kernel (head, body: as IblDiskLight's).
+float3 IblGlassLight( IblGlassRead read, float residualShare, float4 head, float4 body )
+{
+    float alpha = max( read.Roughness * read.Roughness, 1e-7f );
+    return residualShare * body.rgb * IblKernelDiskShare( read.Direction, alpha, head );
+}
+
 #endif // COMMON_IMAGE_BASED_LIGHTING_FXH

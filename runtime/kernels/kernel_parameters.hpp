@@ -119,7 +119,7 @@ struct RenderReferenceParameters {
 struct RenderSplitSumParameters {
     uint32_t columns = 0, cellSize = 0, specularMips = 0;
     IblRecipeParameters recipe;
-    uint32_t glassTransmission = 0; // GLASS_SCHLICK, GLASS_TABULATED, GLASS_SPHERE
+    uint32_t glassTransmission = 0; // IBL_GLASS_SCHLICK, IBL_GLASS_TABULATED, IBL_GLASS_SPHERE
     float glassRoughnessScale = 1;
     NamedValues members() const;
 };

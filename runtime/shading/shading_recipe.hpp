@@ -20,9 +20,9 @@ enum class LookupLobe : uint32_t { Roughness = 0, Fitted = 1, Pair = 2 };
 std::string_view nameOf(LookupDirection direction);
 std::string_view nameOf(LookupLobe lookup);
 
-// How glass reads the maps (hlsl/SplitSumSpheresCS.hlsl's GlassSplitSum): along the smooth
-// sphere's refraction, at the surface's roughness times roughnessScale, passing Schlick's 1 - F
-// at each crossing or the transmission table's share of the rough interface
+// How glass reads the maps (hlsl/Common/ImageBasedLighting.fxh's IBL_GLASS_*, IblGlassReadOf):
+// along the smooth sphere's refraction, at the surface's roughness times roughnessScale, passing
+// Schlick's 1 - F at each crossing or the transmission table's share of the rough interface
 // (shading/transmission_table.hpp); or as the sphere transmission table's fit of the rough
 // sphere's exiting light (shading/sphere_transmission.hpp), where roughnessScale plays no part.
 enum class GlassTransmission : uint32_t { Schlick = 0, Tabulated = 1, Sphere = 2 };
