@@ -82,6 +82,17 @@ Buffer readback(const VulkanContext& context, const Image& image, std::span<cons
     return staging;
 }
 
+void writeRegions(const VulkanContext& context, Image& image, std::span<const vk::BufferImageCopy> regions,
+                  std::span<const std::byte> bytes, const std::string& stagingName) {
+    Buffer staging(context, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc, stagingName);
+    staging.write(bytes);
+    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
+        transition(commands, image, kResting, kCopyingTo);
+        commands.copyBufferToImage(staging.handle(), image.handle(), kCopyingTo.layout, regions);
+        transition(commands, image, kCopyingTo, kResting);
+    });
+}
+
 uint32_t fullMipCount(uint32_t width, uint32_t height) {
     return static_cast<uint32_t>(std::bit_width(std::max(width, height)));
 }
@@ -147,13 +158,7 @@ void Image::uploadBytes(const VulkanContext& context, std::span<const std::byte>
     if (bytes.size() != expected)
         throw VulkanError("image '" + desc_.name + "' holds " + std::to_string(expected) + " bytes, not " +
                           std::to_string(bytes.size()));
-    Buffer staging(context, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc, desc_.name + " (staging)");
-    staging.write(bytes);
-    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        transition(commands, *this, kResting, kCopyingTo);
-        commands.copyBufferToImage(staging.handle(), *image_, kCopyingTo.layout, copyRegions(*this));
-        transition(commands, *this, kCopyingTo, kResting);
-    });
+    writeRegions(context, *this, copyRegions(*this), bytes, desc_.name + " (staging)");
 }
 
 std::vector<std::byte> Image::downloadBytes(const VulkanContext& context) const {

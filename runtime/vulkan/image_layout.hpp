@@ -4,6 +4,7 @@
 #include "image.hpp"
 
 #include <span>
+#include <string>
 
 namespace iblkit::vulkan {
 
@@ -26,5 +27,9 @@ void transition(const vk::raii::CommandBuffer& commands, const Image& image, con
 
 // The regions of an image copied into a new host-visible buffer of `bytes`, for the host to read.
 Buffer readback(const VulkanContext& context, const Image& image, std::span<const vk::BufferImageCopy> regions, size_t bytes);
+
+// The other way: `bytes` through a new staging buffer into the regions of an image.
+void writeRegions(const VulkanContext& context, Image& image, std::span<const vk::BufferImageCopy> regions,
+                  std::span<const std::byte> bytes, const std::string& stagingName);
 
 } // namespace iblkit::vulkan

@@ -1,6 +1,5 @@
 #include "image_transfer.hpp"
 
-#include "buffer.hpp"
 #include "image_layout.hpp"
 #include "vulkan_error.hpp"
 
@@ -43,13 +42,7 @@ void writeTexels(const VulkanContext& context, Image& image, uint32_t mip, std::
     }
     std::vector<std::byte> bytes(values.size() * desc.format->bytesPerChannel);
     encodeTexels(*desc.format, values, bytes);
-    Buffer staging(context, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc, desc.name + " (texel upload)");
-    staging.write(bytes);
-    context.submitAndWait([&](const vk::raii::CommandBuffer& commands) {
-        transition(commands, image, kResting, kCopyingTo);
-        commands.copyBufferToImage(staging.handle(), image.handle(), kCopyingTo.layout, regions);
-        transition(commands, image, kCopyingTo, kResting);
-    });
+    writeRegions(context, image, regions, bytes, desc.name + " (texel upload)");
 }
 
 } // namespace iblkit::vulkan
