@@ -38,6 +38,21 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -q --no-install-recommends $missing
 }
 
+# The engine tests' Node.js (Debian's, where the machine has none) and npm packages, exactly as
+# tests/engines/package-lock.json pins them; the browser is Debian's chromium, never one npm fetches.
+install_engine_test_packages() {
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    IBLKIT_PACKAGES=(nodejs npm)
+    install_missing_packages
+  fi
+  local engines=tests/engines
+  if [ ! -f "$engines/node_modules/.package-lock.json" ] || [ "$engines/package-lock.json" -nt "$engines/node_modules/.package-lock.json" ]; then
+    echo "iblkit: installing the engine tests' npm packages" >&2
+    PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix "$engines" --no-audit --no-fund --loglevel=error
+  fi
+  cmake --preset "$IBLKIT_PRESET" >/dev/null # the engine tests register once their packages are there
+}
+
 build_iblkit() {
   cmake --preset "$IBLKIT_PRESET"
   cmake --build --preset "$IBLKIT_PRESET"

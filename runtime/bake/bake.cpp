@@ -9,6 +9,7 @@
 #include "lights_gltf.hpp"
 #include "shading_maps.hpp"
 #include "content_store.hpp"
+#include "profiles/cube_frame.hpp"
 
 #include <fmt/core.h>
 
@@ -47,6 +48,10 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture) textures.push_back(std::move(**texture));
+    const auto& profile = resolvedProfile(settings);
+    for (auto& texture : textures)
+        if (texture.faces == 6)
+            profiles::arrangeCube(profile.frame, texture.values, texture.size, texture.mips, image_io::channelCount(texture.format));
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));

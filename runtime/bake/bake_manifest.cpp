@@ -309,6 +309,30 @@ json shadingJson(const ManifestFacts& facts) {
                             {"LightLevel", facts.lightLevel}}}};
 }
 
+namespace {
+
+json profileJson(const profiles::EngineProfile& profile) {
+    using profiles::CubeFrame;
+    using profiles::DiffuseSource;
+    return {{"name", profile.name},
+            {"engine", profile.engine},
+            {"recipe", profile.recipe},
+            {"cube_frame", profile.frame == CubeFrame::Kit ? "the kit's: the texel at direction g holds the radiance from g"
+                                                           : "mirrored in x: the texel at direction g holds the radiance "
+                                                             "from (-g.x, g.y, g.z), for an engine that negates x"},
+            {"last_mip_size", profile.lastMipSize},
+            {"lod", profile.lodFormula},
+            {"lookup", profile.lookup},
+            {"diffuse", profile.diffuse == DiffuseSource::IrradianceMap ? "irradiance.ktx2 (E/pi) or the SH"
+                                                                        : "pi times the specular cube's last mip"},
+            {"brdf_lut", profile.readsKitLut ? "brdf_lut.ktx2" : "the engine's own (brdf_lut.ktx2 is the kit's)"},
+            {"sh", profile.shForm},
+            {"lights", profile.lightsForm},
+            {"loader", profile.loader}};
+}
+
+} // namespace
+
 json bakeManifest(const ManifestFacts& facts) {
     const auto& s = *facts.settings;
     const auto& plan = *facts.plan;
@@ -328,6 +352,7 @@ json bakeManifest(const ManifestFacts& facts) {
                      {"brdf_lut", plan.lut ? lutJson(s) : skippedJson("no material of the scene is lit")},
                      {"irradiance", irradiance},
                      {"shading", shadingJson(facts)},
+                     {"profile", profileJson(resolvedProfile(s))},
                      {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
                      {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
     if (plan.scene) manifest["plan"] = planJson(plan);

@@ -38,9 +38,8 @@ void requireLutMethod(const std::string& method) {
 }
 
 void requireRecipe(const BakeSettings& settings) {
-    if (!settings.recipe) return;
     try {
-        const auto& recipe = shading::recipeNamed(*settings.recipe);
+        const auto& recipe = resolvedRecipe(settings);
         if (recipe.weighting != shading::LobeWeighting::NdotL &&
             kernels::specularKindOf(settings.specularMethod) != kernels::SpecularKind::Convolution)
             throw BakeError(fmt::format("--recipe {} prefilters a lobe weighted by {}, which only --method convolution "
@@ -51,10 +50,34 @@ void requireRecipe(const BakeSettings& settings) {
     }
 }
 
+// An engine finds a mip by its own lod mapping: a recipe of another mapping would give it mips
+// prefiltered at roughnesses it does not ask for.
+void requireProfileMapping(const BakeSettings& settings) {
+    const auto& profile = resolvedProfile(settings);
+    if (profile.name == profiles::defaultProfile().name || !settings.recipe) return;
+    const auto& own = shading::recipeNamed(profile.recipe);
+    const auto& asked = shading::recipeNamed(*settings.recipe);
+    if (asked.mapping != own.mapping || asked.mappingParameter != own.mappingParameter)
+        throw BakeError(fmt::format("--recipe {} maps roughness to lod by {}, but --profile {} reads mips by {} "
+                                    "(its recipe {})",
+                                    asked.name, shading::nameOf(asked.mapping), profile.name,
+                                    shading::nameOf(own.mapping), own.name));
+}
+
 } // namespace
+
+const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings) {
+    try {
+        return profiles::profileNamed(settings.profile);
+    } catch (const std::invalid_argument& error) {
+        throw BakeError(fmt::format("--profile: {}", error.what()));
+    }
+}
 
 const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings) {
     if (settings.recipe) return shading::recipeNamed(*settings.recipe);
+    if (const auto& profile = resolvedProfile(settings); profile.name != profiles::defaultProfile().name)
+        return shading::recipeNamed(profile.recipe);
     return kernels::specularKindOf(settings.specularMethod) == kernels::SpecularKind::Convolution ? shading::defaultRecipe()
                                                                                                 : shading::documentRecipe();
 }
@@ -101,7 +124,7 @@ uint32_t resolvedMips(const BakeSettings& settings, uint32_t size) {
         requireRange("--mips", *settings.mips, 1, fullChain);
         return *settings.mips;
     }
-    const uint32_t floor = std::min(size, kSpecularFloor);
+    const uint32_t floor = std::min(size, resolvedProfile(settings).lastMipSize);
     return fullChain - static_cast<uint32_t>(std::bit_width(floor)) + 1;
 }
 
@@ -112,7 +135,9 @@ void validateSettings(const BakeSettings& settings) {
     }
     requireSpecularMethod(settings.specularMethod);
     if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
+    resolvedProfile(settings);
     requireRecipe(settings);
+    requireProfileMapping(settings);
     requireLutMethod(settings.lutMethod);
     if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, kernels::minLutSamplesOf(settings.lutMethod),
                      kernels::maxLutSamplesOf(settings.lutMethod));

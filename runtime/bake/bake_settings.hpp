@@ -1,6 +1,7 @@
 #pragma once
 
 #include "kernels/lut_methods.hpp"
+#include "profiles/engine_profile.hpp"
 #include "shading/shading_recipe.hpp"
 #include "kernels/sampled_methods.hpp"
 #include "vulkan_context.hpp"
@@ -36,13 +37,16 @@ struct BakeSettings {
     std::optional<std::filesystem::path> cache;       // a content store's folder (runtime/cache/); empty: no cache
     std::filesystem::path outputDir;
     std::optional<uint32_t> size;   // cube face size; default 256, or the input cube's own size
-    std::optional<uint32_t> mips;   // specular mips; default: down to kSpecularFloor
+    std::optional<uint32_t> mips;   // specular mips; default: down to the profile's last mip size (8 for the kit's)
     std::string specularMethod = kDefaultSpecularMethod; // a prefilter method of the kernel table
     std::optional<uint32_t> samples; // samples (budget of terms, for the convolution); default by method
     // The shading recipe the maps are made for (runtime/shading/shading_recipe.hpp): the lights
     // taken out, the prefilter's lobe, each mip's roughness. Default: the kit's for the
     // convolution, the documents' for every other method (they prefilter the documents' N·L lobe).
     std::optional<std::string> recipe;
+    // The engine whose conventions the files follow (runtime/profiles/engine_profile.hpp): its
+    // recipe unless --recipe names another of the same lod mapping, its cube frame, its chain.
+    std::string profile = "iblkit";
     uint32_t lutSize = 512;
     std::string lutMethod = kDefaultLutMethod; // a LUT method of the kernel table
     std::optional<uint32_t> lutSamples; // samples (nodes per panel, for the quadrature; per side, for its grid); default by method
@@ -60,8 +64,6 @@ struct BakeSettings {
 inline constexpr double kMinPreviewExposure = 1.0 / (1 << 30);
 inline constexpr double kMaxPreviewExposure = double(1 << 30);
 
-// Default specular chain: mips down to this face size, the last at roughness 1.
-inline constexpr uint32_t kSpecularFloor = 8;
 inline constexpr uint32_t kDefaultSize = 256;
 // Sizes past these are refused before any work: a 16384² cube with its chain is ~8.6 GB as floats.
 inline constexpr uint32_t kMaxCubeSize = 16384;
@@ -69,14 +71,17 @@ inline constexpr uint32_t kMaxLutSize = 16384;
 
 // The face size the bake uses for a source of `inputCubeSize` (0 when the input is a panorama).
 uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize);
-// The specular mip count for a face size: the setting, or the chain down to kSpecularFloor.
+// The specular mip count for a face size: the setting, or the chain down to the profile's last
+// mip size (8 for the kit's), the last at roughness 1.
 uint32_t resolvedMips(const BakeSettings& settings, uint32_t size);
 // The prefilter's sample count (budget of terms, for the convolution): the setting, or the
 // method's default.
 uint32_t resolvedSamples(const BakeSettings& settings);
 // The LUT method's count: the setting, or the method's default.
 uint32_t resolvedLutSamples(const BakeSettings& settings);
-// The recipe: the setting's, or the method's default.
+// The profile the setting names.
+const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings);
+// The recipe: the setting's, the profile's, or the method's default.
 const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings);
 // Throws BakeError naming the first setting out of range.
 void validateSettings(const BakeSettings& settings);

@@ -74,6 +74,9 @@ std::vector<ShadingRecipe> makeBenchRecipes() {
         glassBy(recipe("glass-tabulated-0.5", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip),
                 {GlassTransmission::Tabulated, 0.5}),
         glassBy(recipe("glass-schlick", G1, Logarithmic, D::Fitted, L::Pair, true, kBabylonFirstMip), {GlassTransmission::Schlick, 1}),
+        // What three.js r187 and Filament read (runtime/profiles/): lod = r (2 - r) n, lerp(R, N, α²),
+        // one lookup, the lights as the engine's own.
+        recipe("quadratic-lights", G1, Quadratic, D::Filament, L::Roughness, true),
     };
 }
 

@@ -29,6 +29,16 @@ TEST(BakeSettings, DefaultChainEndsAtEightByEightWithRoughnessOne) {
     EXPECT_FLOAT_EQ(roughnessOfMip(5, 6), 1.f);
 }
 
+TEST(BakeSettings, AProfileBringsItsRecipeAndChainAndTakesARecipeOfItsMapping) {
+    auto settings = settingsWithOutput();
+    settings.profile = "threejs";
+    EXPECT_EQ(resolvedRecipe(settings).name, "quadratic-lights");
+    EXPECT_EQ(resolvedMips(settings, 256), 6u); // three.js's PMREM ends at 8²
+    settings.recipe = "quadratic";              // the same lod mapping: the engine finds its mips
+    EXPECT_NO_THROW(validateSettings(settings));
+    EXPECT_EQ(resolvedRecipe(settings).name, "quadratic");
+}
+
 TEST(BakeSettings, InputCubeSetsTheSizeAndAConflictingSizeIsRefused) {
     auto settings = settingsWithOutput();
     EXPECT_EQ(resolvedSize(settings, 128), 128u);
@@ -89,6 +99,11 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature, fit, quadrature-grid)");
     refused([](BakeSettings& s) { s.lutMethod = "quadrature"; s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
+    refused([](BakeSettings& s) { s.profile = "nope"; }, "--profile: no profile named 'nope' (there are: iblkit, threejs)");
+    refused([](BakeSettings& s) { s.profile = "threejs"; s.recipe = "kit"; },
+            "--recipe kit maps roughness to lod by logarithmic, but --profile threejs reads mips by quadratic");
+    refused([](BakeSettings& s) { s.profile = "threejs"; s.specularMethod = "document"; },
+            "--recipe quadratic-lights prefilters a lobe weighted by G1, which only --method convolution computes");
     auto settings = settingsWithOutput();
     settings.specularMethod = "document";
     settings.samples = 65536;

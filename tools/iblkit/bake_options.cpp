@@ -1,6 +1,7 @@
 #include "bake_options.hpp"
 
 #include "kernels/lut_methods.hpp"
+#include "profiles/engine_profile.hpp"
 #include "shading/shading_recipe.hpp"
 
 #include <fmt/core.h>
@@ -22,6 +23,11 @@ void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string
                        fmt::format("Shading recipe the maps are made for (docs/shading.md): which bright sources become "
                                    "lights, the prefilter's lobe, each mip's roughness; one of {} (default: kit for the "
                                    "convolution, document for every other method)", recipes));
+    std::string profiles;
+    for (const auto& profile : profiles::engineProfiles()) profiles += (profiles.empty() ? "" : ", ") + std::string(profile.name);
+    command.add_option("--profile", s.profile,
+                       fmt::format("The engine whose conventions the files follow (docs/engines.md): its recipe, cube "
+                                   "frame and chain; one of {} (default: iblkit)", profiles));
     command.add_option("--samples", s.samples,
                         "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
                         "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "

@@ -1,0 +1,54 @@
+#include "profiles/engine_profile.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace iblkit::profiles {
+namespace {
+
+std::vector<EngineProfile> makeProfiles() {
+    EngineProfile kit{.name = "iblkit",
+                      .engine = "iblkit's IblShadeOpaque (hlsl/Common/ImageBasedLighting.fxh)",
+                      .recipe = "kit",
+                      .lodFormula = "the recipe's logarithmic mapping (manifest shading.mips)",
+                      .lookup = "the lobe table's fitted direction and lookup pair",
+                      .shForm = "radiance coefficients (manifest irradiance.sh)",
+                      .lightsForm = "lights.gltf (KHR_lights_punctual) with each light's angular radius",
+                      .loader = "docs/bake.md"};
+    // three.js r187: WebGLPrograms.js, envmap_common_pars_fragment.glsl.js, envmap_physical_pars_fragment.glsl.js,
+    // WebGLMaterials.js (the x-negating _m for a cube texture), PMREMGenerator.js (a chain down to 8²).
+    EngineProfile three{.name = "threejs",
+                        .engine = "three.js r187 (0.187.0), CompressedCubeTexture with isPMREMTexture",
+                        .recipe = "quadratic-lights",
+                        .frame = CubeFrame::MirroredX,
+                        .lastMipSize = 8,
+                        .diffuse = DiffuseSource::LastSpecularMip,
+                        .readsKitLut = false,
+                        .lodFormula = "lod = ENVMAP_MAX_LOD r (2 - r), ENVMAP_MAX_LOD = mips - 1",
+                        .lookup = "normalize(mix(R, N, r^4)), x negated",
+                        .shForm = "LightProbe: radiance coefficients in the same basis and order (not used "
+                                  "beside the map: three's diffuse is pi times the last mip)",
+                        .lightsForm = "DirectionalLight per light of lights.gltf, intensity its irradiance",
+                        .loader = "docs/engines.md#threejs"};
+    return {kit, three};
+}
+
+} // namespace
+
+const std::vector<EngineProfile>& engineProfiles() {
+    static const auto profiles = makeProfiles();
+    return profiles;
+}
+
+const EngineProfile& defaultProfile() { return engineProfiles().front(); }
+
+const EngineProfile& profileNamed(std::string_view name) {
+    std::string names;
+    for (const auto& profile : engineProfiles()) {
+        if (profile.name == name) return profile;
+        names += (names.empty() ? "" : ", ") + std::string(profile.name);
+    }
+    throw std::invalid_argument("no profile named '" + std::string(name) + "' (there are: " + names + ")");
+}
+
+} // namespace iblkit::profiles

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace iblkit::profiles {
+
+// How a file's cube relates to the kit's: the texel an engine samples at direction g holds the
+// kit's radiance at g, or at (-g.x, g.y, g.z) for an engine that negates x before every lookup
+// (three.js does for a cube that is not a render target).
+enum class CubeFrame { Kit, MirroredX };
+
+// Where the engine's diffuse light comes from.
+enum class DiffuseSource {
+    IrradianceMap,   // the kit's irradiance cube (E/π) or its SH
+    LastSpecularMip, // π × the roughest mip (three.js): no separate diffuse file
+};
+
+// One engine's conventions for a prefiltered cube: everything a profile changes in a bake is here,
+// and nowhere else is an engine's name tested.
+struct EngineProfile {
+    std::string_view name;      // --profile's value
+    std::string_view engine;    // the engine and version whose source the conventions were read from
+    std::string_view recipe;    // the shading recipe the maps are made for (runtime/shading/shading_recipe.hpp)
+    CubeFrame frame = CubeFrame::Kit;
+    uint32_t lastMipSize = 8;   // the chain ends at this face size (its roughest level at roughness 1)
+    DiffuseSource diffuse = DiffuseSource::IrradianceMap;
+    bool readsKitLut = true;    // false: the engine has its own DFG table and takes none
+    std::string_view lodFormula; // the engine's roughness → lod, as its shader writes it
+    std::string_view lookup;     // the engine's lookup direction, as its shader writes it
+    std::string_view shForm;     // how the engine takes the SH, if at all
+    std::string_view lightsForm; // how the engine takes the lights the bake took out
+    std::string_view loader;     // where its loader is documented
+};
+
+// Every profile; the first is the kit's own, the default.
+const std::vector<EngineProfile>& engineProfiles();
+const EngineProfile& defaultProfile();
+// Throws std::invalid_argument listing the names.
+const EngineProfile& profileNamed(std::string_view name);
+
+} // namespace iblkit::profiles

@@ -1,0 +1,22 @@
+// Runs `iblkit bake` for the engine tests: IBLKIT_EXECUTABLE names the program (ctest sets it).
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+
+export function iblkit() {
+  const program = process.env.IBLKIT_EXECUTABLE;
+  if (!program) throw new Error('IBLKIT_EXECUTABLE is not set (ctest sets it to build/tools/iblkit/iblkit)');
+  return program;
+}
+
+export function bake(environment, folder, ...flags) {
+  const args = ['bake', ...(environment ? [environment] : []), '-o', folder, '--no-cache', '-q', ...flags];
+  execFileSync(iblkit(), args, { stdio: ['ignore', 'ignore', 'inherit'], env: { XDG_RUNTIME_DIR: '/tmp', ...process.env } });
+  return folder;
+}
+
+export function scratchFolder(name) {
+  const folder = mkdtempSync(path.join(tmpdir(), `iblkit-${name}-`));
+  return { folder, remove: () => rmSync(folder, { recursive: true, force: true }) };
+}
