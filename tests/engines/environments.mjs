@@ -29,6 +29,21 @@ export function writeFurnace(folder) {
   return file;
 }
 
+// A panorama of 6 bands of latitude by 8 sectors of longitude, each patch its own colour between
+// 0.2 and 2: edges at every scale a prefiltered mip blurs, and no texel bright enough to be taken
+// out as a light, so that where a renderer reads the wrong mip its spheres show it.
+export function writePatches(folder) {
+  mkdirSync(folder, { recursive: true });
+  const file = path.join(folder, 'patches.hdr');
+  const width = 256, height = 128;
+  writeHdr(file, width, height, (column, row) => {
+    const band = Math.floor((row / height) * 6), sector = Math.floor((column / width) * 8);
+    const hue = (band * 8 + sector) * 0.6180339887;
+    return [0, 1, 2].map((channel) => 0.2 + 1.8 * (0.5 + 0.5 * Math.cos(2 * Math.PI * (hue + channel / 3))));
+  });
+  return file;
+}
+
 // Each face its own colour, and one texel 8 times as bright off the face's centre and off its
 // diagonals, so that a swapped face, a mirrored face or a turned face each move it.
 export const orientation = {

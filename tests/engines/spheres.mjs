@@ -2,13 +2,14 @@
 // the pages read them back: RGBA floats, the bottom row first.
 
 // Each covered pixel of the sphere in cell (column, row), row 0 at the top, whose centre lies within
-// `rim` of the sphere's centre: its normal, its mirror direction and its colour.
-export function spherePixels(image, cell, column, row = 0, rim = 0.97) {
+// `rim` of the sphere's centre: its normal, its mirror direction and its colour. A cell spans ±`span`
+// sphere radii (the pages' option of that name).
+export function spherePixels(image, cell, column, row = 0, { span = 1, rim = 0.97 } = {}) {
   const bottom = image.height - (row + 1) * cell;
   const pixels = [];
   for (let py = 0; py < cell; py++)
     for (let px = 0; px < cell; px++) {
-      const x = ((px + 0.5) / cell) * 2 - 1, y = ((py + 0.5) / cell) * 2 - 1;
+      const x = (((px + 0.5) / cell) * 2 - 1) * span, y = (((py + 0.5) / cell) * 2 - 1) * span;
       const r2 = x * x + y * y;
       if (r2 > rim * rim) continue;
       const normal = [x, y, Math.sqrt(1 - r2)];
