@@ -311,20 +311,34 @@ json shadingJson(const ManifestFacts& facts) {
 
 namespace {
 
+const char* frameJson(profiles::CubeFrame frame) {
+    switch (frame) {
+    case profiles::CubeFrame::Kit: return "the kit's: the texel at direction g holds the radiance from g";
+    case profiles::CubeFrame::MirroredX:
+        return "mirrored in x: the texel at direction g holds the radiance from (-g.x, g.y, g.z), for an engine that negates x";
+    case profiles::CubeFrame::MirroredZ:
+        return "mirrored in z: the texel at direction g holds the radiance from (g.x, g.y, -g.z), for an engine whose cubes are left-handed";
+    }
+    return "";
+}
+
+const char* diffuseJson(profiles::DiffuseSource source) {
+    switch (source) {
+    case profiles::DiffuseSource::IrradianceMap: return "irradiance.ktx2 (E/pi) or the SH";
+    case profiles::DiffuseSource::LastSpecularMip: return "pi times the specular cube's last mip";
+    }
+    return "";
+}
+
 json profileJson(const profiles::EngineProfile& profile) {
-    using profiles::CubeFrame;
-    using profiles::DiffuseSource;
     return {{"name", profile.name},
             {"engine", profile.engine},
             {"recipe", profile.recipe},
-            {"cube_frame", profile.frame == CubeFrame::Kit ? "the kit's: the texel at direction g holds the radiance from g"
-                                                           : "mirrored in x: the texel at direction g holds the radiance "
-                                                             "from (-g.x, g.y, g.z), for an engine that negates x"},
+            {"cube_frame", frameJson(profile.frame)},
             {"last_mip_size", profile.lastMipSize},
             {"lod", profile.lodFormula},
             {"lookup", profile.lookup},
-            {"diffuse", profile.diffuse == DiffuseSource::IrradianceMap ? "irradiance.ktx2 (E/pi) or the SH"
-                                                                        : "pi times the specular cube's last mip"},
+            {"diffuse", diffuseJson(profile.diffuse)},
             {"brdf_lut", profile.readsKitLut ? "brdf_lut.ktx2" : "the engine's own (brdf_lut.ktx2 is the kit's)"},
             {"sh", profile.shForm},
             {"lights", profile.lightsForm},

@@ -8,14 +8,16 @@ namespace iblkit::profiles {
 
 // How a file's cube relates to the kit's: the texel an engine samples at direction g holds the
 // kit's radiance at g, or at (-g.x, g.y, g.z) for an engine that negates x before every lookup
-// (three.js does for a cube that is not a render target).
-enum class CubeFrame { Kit, MirroredX };
+// (three.js does for a cube that is not a render target), or at (g.x, g.y, -g.z) for an engine
+// whose cubes are left-handed.
+enum class CubeFrame { Kit, MirroredX, MirroredZ };
 
 // Where the engine's diffuse light comes from.
 enum class DiffuseSource {
     IrradianceMap,   // the kit's irradiance cube (E/π) or its SH
     LastSpecularMip, // π × the roughest mip (three.js): no separate diffuse file
 };
+
 
 // One engine's conventions for a prefiltered cube: everything a profile changes in a bake is here,
 // and nowhere else is an engine's name tested.

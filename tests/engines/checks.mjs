@@ -1,0 +1,115 @@
+// The checks every engine's page passes, with that engine's bounds: the white furnace, the
+// orientation cube in a mirror sphere, and the comparison with the kit's own split sum.
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { Browser } from './browser.mjs';
+import { bake, kitRender, scratchFolder } from './bake.mjs';
+import { angleBetween, faceOf, marginOf } from './cube.mjs';
+import { orientation, writeFurnace, writeOrientationCube, writePatches } from './environments.mjs';
+import { kitSpan, opaqueSpheres, readKitRender } from './kit_render.mjs';
+import { luminance, spherePixels } from './spheres.mjs';
+
+export const white = [1, 1, 1];
+const roughnesses = [0, 0.25, 0.5, 0.75, 1];
+
+export class EngineSession {
+  constructor(page, profile, cell = 64) {
+    Object.assign(this, { page, profile, cell });
+  }
+
+  async open() {
+    this.scratch = scratchFolder(this.page);
+    this.browser = await Browser.open();
+  }
+
+  async close() {
+    await this.browser?.close();
+    this.scratch?.remove();
+  }
+
+  folder(name) { return path.join(this.scratch.folder, name); }
+
+  bake(environment, name, ...flags) { return bake(environment, this.folder(name), ...flags); }
+
+  async render(bakeFolder, spheres, options = {}) {
+    const page = await this.browser.openPage(this.page, { '/bake/': bakeFolder });
+    const image = await page.evaluate((request) => window.iblkitRender(request),
+                                      { bake: '/bake', spheres, cell: this.cell, ...options });
+    assert.deepEqual(page.errors, [], 'the page logged errors');
+    await page.close();
+    return image;
+  }
+
+  // The largest |pixel - 1| of white metal and white dielectric spheres at five roughnesses in
+  // a constant environment of 1, per sphere.
+  async furnaceDepartures() {
+    const environment = writeFurnace(this.folder('env'));
+    const folder = this.bake(environment, 'furnace', '--profile', this.profile, '--size', '32');
+    const spheres = [...roughnesses.map((roughness) => ({ color: white, metalness: 1, roughness })),
+                     ...roughnesses.map((roughness) => ({ color: white, metalness: 0, roughness }))];
+    const image = await this.render(folder, spheres);
+    return spheres.map((sphere, index) => {
+      let worst = 0;
+      for (const { colour } of spherePixels(image, this.cell, index))
+        worst = Math.max(worst, ...colour.map((c) => Math.abs(c - 1)));
+      return { ...sphere, worst };
+    });
+  }
+
+  // A mirror sphere in the orientation cube baked with `flags`: the share of pixels away from the
+  // faces' edges that show another face's colour than the kit has in their mirror direction, and
+  // per visible face the angle from its brightest pixel's mirror direction to its hot texel.
+  async orientation(name, ...flags) {
+    const environment = writeOrientationCube(this.folder('env'));
+    const image = await this.render(this.bake(environment, name, ...flags), [{ color: white, metalness: 1, roughness: 0 }],
+                                    { lights: false });
+    const pixels = spherePixels(image, this.cell, 0);
+    const wrong = pixels.filter((p) => marginOf(p.reflected) > 1.2 && nearestFace(p.colour) !== faceOf(p.reflected));
+    const hotTexels = [];
+    for (let face = 0; face < 6; face++) {
+      const hot = orientation.hotDirection(face);
+      if (hot[2] < -0.5) continue; // at the rim of a sphere seen from +Z
+      const onFace = pixels.filter((p) => faceOf(p.reflected) === face);
+      const brightest = onFace.reduce((a, b) => (luminance(b.colour) > luminance(a.colour) ? b : a));
+      hotTexels.push({ face, degrees: (angleBetween(brightest.reflected, hot) * 180) / Math.PI });
+    }
+    return { wrongShare: wrong.length / pixels.length, hotTexels };
+  }
+
+  // The kit's render grid's opaque spheres on a panorama of colour patches, rendered by the engine
+  // from a bake with `flags` and by the kit's split sum with `kitRecipe`. Per pixel, each
+  // renderer's value over its own in the white furnace, which takes out each one's BRDF scale (its
+  // DFG table, multiple scattering, diffuse source); per sphere, the median over its pixels of
+  // |engine / kit - 1|.
+  async departuresFromKit(name, kitRecipe, flags, options = {}) {
+    const patches = writePatches(this.folder('env'));
+    const furnace = writeFurnace(this.folder('env'));
+    const kit = readKitRender(kitRender(patches, this.folder(`kit-${name}`), kitRecipe, this.cell));
+    const kitFurnace = readKitRender(kitRender(furnace, this.folder('kit-furnace'), kitRecipe, this.cell));
+    const spheres = opaqueSpheres(kit.grid);
+    const engine = await this.render(this.bake(patches, `engine-${name}`, ...flags), spheres, { span: kitSpan, ...options });
+    const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
+                                            spheres, { span: kitSpan });
+    const values = (image, sphere) =>
+      spherePixels(image, this.cell, sphere.column, sphere.row, { span: kitSpan }).map((p) => luminance(p.colour));
+    return spheres.map((sphere) => {
+      const [e, ef, k, kf] = [engine, engineFurnace, kit.image, kitFurnace.image].map((image) => values(image, sphere));
+      const departures = e.map((value, i) => Math.abs(value / ef[i] / (k[i] / kf[i]) - 1)).sort((a, b) => a - b);
+      return { ...sphere, departure: departures[departures.length >> 1] };
+    });
+  }
+}
+
+function nearestFace(colour) {
+  const scale = Math.max(...colour);
+  let best = -1, bestDistance = Infinity;
+  orientation.colours.forEach((reference, face) => {
+    const distance = Math.hypot(...reference.map((c, i) => c - colour[i] / scale));
+    if (distance < bestDistance) [best, bestDistance] = [face, distance];
+  });
+  return best;
+}
+
+export function describe(sphere) {
+  return `${sphere.material ?? (sphere.metalness ? 'metal' : 'dielectric')} at roughness ${sphere.roughness.toFixed(2)}`;
+}
