@@ -326,6 +326,7 @@ const char* diffuseJson(profiles::DiffuseSource source) {
     switch (source) {
     case profiles::DiffuseSource::IrradianceMap: return "irradiance.ktx2 (E/pi) or the SH";
     case profiles::DiffuseSource::LastSpecularMip: return "pi times the specular cube's last mip";
+    case profiles::DiffuseSource::EngineSh: return "the engine's own SH, projected from the specular cube's mip 0";
     }
     return "";
 }
@@ -338,6 +339,7 @@ json profileJson(const profiles::EngineProfile& profile) {
             {"last_mip_size", profile.lastMipSize},
             {"lod", profile.lodFormula},
             {"lookup", profile.lookup},
+            {"specular_file", profile.file == profiles::SpecularFile::Dds ? "specular.dds" : "specular.ktx2"},
             {"diffuse", diffuseJson(profile.diffuse)},
             {"brdf_lut", profile.readsKitLut ? "brdf_lut.ktx2" : "the engine's own (brdf_lut.ktx2 is the kit's)"},
             {"sh", profile.shForm},

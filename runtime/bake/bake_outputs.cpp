@@ -126,7 +126,7 @@ std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture
     const auto gpuTexture =
         image_io::makeTexture(texture.format, texture.size, texture.size, texture.faces, texture.mips, texture.values);
     std::vector<WrittenFile> written{writeBytes(folder, texture.name + ".ktx2", image_io::encodeKtx2(gpuTexture, writer, texture.keyValues))};
-    if (settings.dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));
+    if (settings.dds || resolvedProfile(settings).file == profiles::SpecularFile::Dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));
     if (settings.exr)
         for (auto& file : writeExrFaces(folder, texture)) written.push_back(std::move(file));
     return written;

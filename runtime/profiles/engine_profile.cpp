@@ -30,7 +30,24 @@ std::vector<EngineProfile> makeProfiles() {
                                   "beside the map: three's diffuse is pi times the last mip)",
                         .lightsForm = "DirectionalLight per light of lights.gltf, intensity its irradiance",
                         .loader = "docs/engines.md#threejs"};
-    return {kit, three};
+    // Babylon.js 9: CubeTexture.CreateFromPrefilteredData and DDSTools (a DX10 float cube, face by
+    // face with its mips), pbrBlockReflection / pbrIBLFunctions (lod = log2(size alphaG) 0.8,
+    // alphaG = r² + 0.0005), materialHelper.functions (REFLECTIONMAP_OPPOSITEZ: z negated in a
+    // right-handed scene, the file's cube left-handed in either).
+    EngineProfile babylon{.name = "babylon",
+                          .engine = "Babylon.js 9 (@babylonjs/core 9.35.0), CubeTexture.CreateFromPrefilteredData",
+                          .recipe = "babylon-lights",
+                          .frame = CubeFrame::MirroredZ,
+                          .file = SpecularFile::Dds,
+                          .lastMipSize = 1,
+                          .diffuse = DiffuseSource::EngineSh,
+                          .readsKitLut = false,
+                          .lodFormula = "lod = 0.8 log2(size (r^2 + 0.0005)), the full chain to 1x1",
+                          .lookup = "reflect(-V, N); z negated in a right-handed scene",
+                          .shForm = "its own sphericalPolynomial, projected from specular.dds's mip 0 as it loads",
+                          .lightsForm = "DirectionalLight per light of lights.gltf, direction the light travels",
+                          .loader = "docs/engines.md#babylonjs"};
+    return {kit, three, babylon};
 }
 
 } // namespace

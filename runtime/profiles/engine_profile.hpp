@@ -9,15 +9,19 @@ namespace iblkit::profiles {
 // How a file's cube relates to the kit's: the texel an engine samples at direction g holds the
 // kit's radiance at g, or at (-g.x, g.y, g.z) for an engine that negates x before every lookup
 // (three.js does for a cube that is not a render target), or at (g.x, g.y, -g.z) for an engine
-// whose cubes are left-handed.
+// whose cubes are left-handed (Babylon.js, in either handedness of its scene).
 enum class CubeFrame { Kit, MirroredX, MirroredZ };
 
 // Where the engine's diffuse light comes from.
 enum class DiffuseSource {
     IrradianceMap,   // the kit's irradiance cube (E/π) or its SH
     LastSpecularMip, // π × the roughest mip (three.js): no separate diffuse file
+    EngineSh,        // SH the engine projects from the specular cube's mip 0 as it loads it (Babylon.js)
 };
 
+
+// The specular cube's file the engine loads.
+enum class SpecularFile { Ktx2, Dds };
 
 // One engine's conventions for a prefiltered cube: everything a profile changes in a bake is here,
 // and nowhere else is an engine's name tested.
@@ -26,6 +30,7 @@ struct EngineProfile {
     std::string_view engine;    // the engine and version whose source the conventions were read from
     std::string_view recipe;    // the shading recipe the maps are made for (runtime/shading/shading_recipe.hpp)
     CubeFrame frame = CubeFrame::Kit;
+    SpecularFile file = SpecularFile::Ktx2;
     uint32_t lastMipSize = 8;   // the chain ends at this face size (its roughest level at roughness 1)
     DiffuseSource diffuse = DiffuseSource::IrradianceMap;
     bool readsKitLut = true;    // false: the engine has its own DFG table and takes none

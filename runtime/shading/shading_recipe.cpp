@@ -77,6 +77,8 @@ std::vector<ShadingRecipe> makeBenchRecipes() {
         // What three.js r187 and Filament read (runtime/profiles/): lod = r (2 - r) n, lerp(R, N, α²),
         // one lookup, the lights as the engine's own.
         recipe("quadratic-lights", G1, Quadratic, D::Filament, L::Roughness, true),
+        // What Babylon.js 9 reads: lod = 0.8 log2(α size), R, one lookup.
+        recipe("babylon-lights", G1, Babylon, D::Reflected, L::Roughness, true),
     };
 }
 

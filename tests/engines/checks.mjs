@@ -81,13 +81,16 @@ export class EngineSession {
   // renderer's value over its own in the white furnace, which takes out each one's BRDF scale (its
   // DFG table, multiple scattering, diffuse source); per sphere, the median over its pixels of
   // |engine / kit - 1|.
-  async departuresFromKit(name, kitRecipe, flags, options = {}) {
+  // `prepare` may rewrite the bake's files before the engine reads them (the tests' mutations).
+  async departuresFromKit(name, kitRecipe, flags, options = {}, prepare = () => {}) {
     const patches = writePatches(this.folder('env'));
     const furnace = writeFurnace(this.folder('env'));
     const kit = readKitRender(kitRender(patches, this.folder(`kit-${name}`), kitRecipe, this.cell));
     const kitFurnace = readKitRender(kitRender(furnace, this.folder('kit-furnace'), kitRecipe, this.cell));
     const spheres = opaqueSpheres(kit.grid);
-    const engine = await this.render(this.bake(patches, `engine-${name}`, ...flags), spheres, { span: kitSpan, ...options });
+    const bakeFolder = this.bake(patches, `engine-${name}`, ...flags);
+    prepare(bakeFolder);
+    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, ...options });
     const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
                                             spheres, { span: kitSpan });
     const values = (image, sphere) =>
@@ -98,6 +101,15 @@ export class EngineSession {
       return { ...sphere, departure: departures[departures.length >> 1] };
     });
   }
+}
+
+// What an orientation result gets wrong. Measured for each engine: no pixel shows another face's
+// colour, each hot texel within 2.1° of where the kit has it (a texel spans 5.6° at 16²); a cube in
+// another frame gets a fifth of the pixels wrong and its hot texels 30-60° off.
+export function orientationFailures({ wrongShare, hotTexels }) {
+  const failures = hotTexels.filter((hot) => hot.degrees >= 4).map((hot) => `face ${hot.face}: hot texel ${hot.degrees.toFixed(1)}° off`);
+  if (wrongShare > 0.002) failures.push(`${(100 * wrongShare).toFixed(1)} % of the pixels show another face's colour`);
+  return failures;
 }
 
 function nearestFace(colour) {

@@ -1,7 +1,7 @@
 // three.js r187 reads `iblkit bake --profile threejs` and renders spheres in Debian's chromium.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { EngineSession, describe } from './checks.mjs';
+import { EngineSession, describe, orientationFailures } from './checks.mjs';
 
 const session = new EngineSession('three', 'threejs');
 before(() => session.open());
@@ -14,14 +14,7 @@ test('white furnace: every white sphere, metal or not, at every roughness, is 1'
     assert.ok(sphere.worst < 1e-5, `${describe(sphere)}: off 1 by ${sphere.worst}`);
 });
 
-// Measured: no pixel shows another face's colour, each hot texel within 2.1° of where the kit has
-// it (a texel spans 5.6° at 16², and three.js reads mip 0.5 at its least roughness, 0.0525).
-function orientationFailures({ wrongShare, hotTexels }) {
-  const failures = hotTexels.filter((hot) => hot.degrees >= 4).map((hot) => `face ${hot.face}: hot texel ${hot.degrees.toFixed(1)}° off`);
-  if (wrongShare > 0.002) failures.push(`${(100 * wrongShare).toFixed(1)} % of the pixels show another face's colour`);
-  return failures;
-}
-
+// Bounds and what they measured: orientationFailures (checks.mjs).
 test('orientation: a mirror sphere shows each face where the kit has it, its hot texel in place', async () => {
   assert.deepEqual(orientationFailures(await session.orientation('orientation', '--profile', 'threejs')), []);
 });

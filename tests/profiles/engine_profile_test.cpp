@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -32,12 +33,26 @@ TEST(EngineProfile, ThreeJsReadsMipsByItsRoughnessToMip) {
     EXPECT_EQ(profileNamed("threejs").frame, CubeFrame::MirroredX);
 }
 
+TEST(EngineProfile, BabylonReadsMipsByItsLodGenerationScaleOverTheFullChain) {
+    // Babylon.js 9, pbrIBLFunctions and pbrBlockReflection: log2(size alphaG) * 0.8, alphaG = r²
+    // (+ 0.0005, which the schedule leaves out), over every mip down to 1x1.
+    const auto& profile = profileNamed("babylon");
+    const auto& recipe = shading::recipeNamed(profile.recipe);
+    const auto schedule = shading::scheduleOf(recipe, 9, 256);
+    for (double r : {0.1, 0.25, 0.5, 0.75})
+        EXPECT_NEAR(schedule.lodOf(r), 0.8 * std::log2(256 * r * r), 1e-12) << r;
+    EXPECT_EQ(recipe.direction, shading::LookupDirection::Reflected);
+    EXPECT_EQ(profile.lastMipSize, 1u);
+    EXPECT_EQ(profile.frame, CubeFrame::MirroredZ);
+    EXPECT_EQ(profile.file, SpecularFile::Dds);
+}
+
 TEST(EngineProfile, AnUnknownNameIsRefusedWithTheNames) {
     try {
         profileNamed("unity");
         FAIL() << "accepted";
     } catch (const std::invalid_argument& error) {
-        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs)");
+        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs, babylon)");
     }
 }
 

@@ -1,0 +1,77 @@
+// Babylon.js 9 reads a bake made with --profile babylon (its DDS through its own loader) and
+// renders spheres into a float target, read back linear: no image processing.
+import * as BABYLON from '/node_modules/@babylonjs/core/index.js';
+
+// lights.gltf's directional lights (KHR_lights_punctual): Babylon.js's DirectionalLight takes the
+// direction the light travels, and its intensity as the illuminance (lux) of a PBR scene.
+async function addLights(bake, scene) {
+  const manifest = await (await fetch(`${bake}/manifest.json`)).json();
+  const file = manifest.shading.lights.file;
+  if (!file) return;
+  const gltf = await (await fetch(`${bake}/${file}`)).json();
+  gltf.extensions.KHR_lights_punctual.lights.forEach((light, index) => {
+    const towards = new BABYLON.Vector3(...light.extras.direction);
+    const sun = new BABYLON.DirectionalLight(`light${index}`, towards.scale(-1), scene);
+    sun.diffuse = new BABYLON.Color3(...light.color);
+    sun.specular = new BABYLON.Color3(...light.color);
+    sun.intensity = light.intensity;
+  });
+}
+
+// spheres: [{ color: [r, g, b], metalness, roughness, column, row }], radius 1, one per cell of
+// `cell` pixels spanning ±`span` about the sphere's centre (row 0 at the top), seen by an
+// orthographic camera looking down -Z in a right-handed scene.
+async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
+  const placed = spheres.map((sphere, index) => ({ column: index, row: 0, ...sphere }));
+  const columns = Math.max(...placed.map((s) => s.column)) + 1, rows = Math.max(...placed.map((s) => s.row)) + 1;
+  const width = cell * columns, height = cell * rows;
+  const canvas = document.getElementById('canvas');
+  const engine = new BABYLON.Engine(canvas, false, { preserveDrawingBuffer: true });
+  const scene = new BABYLON.Scene(engine);
+  scene.useRightHandedSystem = true;
+  scene.clearColor = new BABYLON.Color4(0, 0, 0, 0);
+  // Linear, unclamped values: image processing is left to a post-process, which a render target
+  // does not run (the material's own path would apply gamma and clamp to [0, 1]).
+  scene.imageProcessingConfiguration.applyByPostProcess = true;
+  scene.imageProcessingConfiguration.skipFinalColorClamp = true;
+  const environment = BABYLON.CubeTexture.CreateFromPrefilteredData(`${bake}/specular.dds`, scene);
+  scene.environmentTexture = environment;
+  await new Promise((resolve, reject) => {
+    environment.onLoadObservable.addOnce(resolve);
+    setTimeout(() => reject(new Error('specular.dds did not load')), 60000);
+  });
+  if (lights) await addLights(bake, scene);
+  // Babylon.js's PBR shading takes the view direction from the eye's position, orthographic camera
+  // or not: far away, every view direction is -Z within 0.1°.
+  const camera = new BABYLON.FreeCamera('camera', new BABYLON.Vector3(0, 0, 1e4), scene);
+  camera.setTarget(new BABYLON.Vector3(0, 0, 0));
+  camera.mode = BABYLON.Camera.ORTHOGRAPHIC_CAMERA;
+  [camera.orthoLeft, camera.orthoRight, camera.orthoTop, camera.orthoBottom] =
+    [-span, span * (2 * columns - 1), span, span * (1 - 2 * rows)];
+  camera.minZ = 1e4 - 10;
+  camera.maxZ = 1e4 + 10;
+  const meshes = placed.map((sphere, index) => {
+    const mesh = BABYLON.MeshBuilder.CreateSphere(`sphere${index}`, { diameter: 2, segments: 128 }, scene);
+    mesh.position.set(2 * span * sphere.column, -2 * span * sphere.row, 0);
+    const material = new BABYLON.PBRMaterial(`material${index}`, scene);
+    material.albedoColor = new BABYLON.Color3(...sphere.color);
+    material.metallic = sphere.metalness;
+    material.roughness = sphere.roughness;
+    mesh.material = material;
+    return mesh;
+  });
+  const target = new BABYLON.RenderTargetTexture('target', { width, height }, scene, false, true,
+                                                 BABYLON.Constants.TEXTURETYPE_FLOAT);
+  target.renderList = meshes;
+  target.activeCamera = camera;
+  target.clearColor = new BABYLON.Color4(0, 0, 0, 0);
+  scene.customRenderTargets.push(target);
+  await scene.whenReadyAsync();
+  scene.render();
+  const pixels = await target.readPixels();
+  engine.dispose();
+  return { width, height, pixels: Array.from(new Float32Array(pixels.buffer, pixels.byteOffset, width * height * 4)) };
+}
+
+window.iblkitRender = renderSpheres;
+window.iblkitReady = true;
