@@ -311,6 +311,26 @@ json shadingJson(const ManifestFacts& facts) {
 
 namespace {
 
+// E(n)/π = Σ c_i P_i(n) over the plain polynomials P = 1, y, z, x, xy, yz, 3z² - 1, xz, x² - y²:
+// each radiance coefficient times A_l/π (Ramamoorthi and Hanrahan) and its basis constant.
+std::array<glm::dvec3, 9> shaderCoefficients(const std::array<glm::dvec3, 9>& radiance) {
+    constexpr std::array<double, 9> basis = {0.282094791773878, 0.488602511902920, 0.488602511902920,
+                                             0.488602511902920, 1.092548430592079, 1.092548430592079,
+                                             0.315391565252520, 1.092548430592079, 0.546274215296040};
+    auto coefficients = irradianceCoefficients(radiance);
+    for (size_t i = 0; i < 9; ++i) coefficients[i] *= basis[i];
+    return coefficients;
+}
+
+const char* specularFileJson(profiles::SpecularFile file) {
+    switch (file) {
+    case profiles::SpecularFile::Ktx2: return "specular.ktx2";
+    case profiles::SpecularFile::Dds: return "specular.dds";
+    case profiles::SpecularFile::Ktx1: return "specular.ktx";
+    }
+    return "";
+}
+
 const char* frameJson(profiles::CubeFrame frame) {
     switch (frame) {
     case profiles::CubeFrame::Kit: return "the kit's: the texel at direction g holds the radiance from g";
@@ -339,7 +359,7 @@ json profileJson(const profiles::EngineProfile& profile) {
             {"last_mip_size", profile.lastMipSize},
             {"lod", profile.lodFormula},
             {"lookup", profile.lookup},
-            {"specular_file", profile.file == profiles::SpecularFile::Dds ? "specular.dds" : "specular.ktx2"},
+            {"specular_file", specularFileJson(profile.file)},
             {"diffuse", diffuseJson(profile.diffuse)},
             {"brdf_lut", profile.readsKitLut ? "brdf_lut.ktx2" : "the engine's own (brdf_lut.ktx2 is the kit's)"},
             {"sh", profile.shForm},
@@ -371,6 +391,8 @@ json bakeManifest(const ManifestFacts& facts) {
                      {"profile", profileJson(resolvedProfile(s))},
                      {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
                      {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
+    if (const auto& profile = resolvedProfile(s); profile.shCoefficients == profiles::ShForm::IrradianceShader)
+        manifest["profile"]["sh_coefficients"] = coefficientsJson(shaderCoefficients(facts.irradiance->shRadiance));
     if (plan.scene) manifest["plan"] = planJson(plan);
     return manifest;
 }

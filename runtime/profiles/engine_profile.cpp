@@ -47,7 +47,23 @@ std::vector<EngineProfile> makeProfiles() {
                           .shForm = "its own sphericalPolynomial, projected from specular.dds's mip 0 as it loads",
                           .lightsForm = "DirectionalLight per light of lights.gltf, direction the light travels",
                           .loader = "docs/engines.md#babylonjs"};
-    return {kit, three, babylon};
+    // Filament 1.53 (web): Engine.createTextureFromKtx1 (cmgen's KTX1), surface_light_indirect
+    // (lod = (levels - 1) r (2 - r), lerp(R, N, α²)), IndirectLight.irradianceSh (cmgen --sh-shader).
+    EngineProfile filament{.name = "filament",
+                           .engine = "Filament 1.53 (npm filament 1.53.4), Engine.createTextureFromKtx1 and IndirectLight",
+                           .recipe = "quadratic-lights",
+                           .frame = CubeFrame::Kit,
+                           .file = SpecularFile::Ktx1,
+                           .shCoefficients = ShForm::IrradianceShader,
+                           .lastMipSize = 8,
+                           .diffuse = DiffuseSource::IrradianceMap,
+                           .readsKitLut = false,
+                           .lodFormula = "lod = (levels - 1) r (2 - r)",
+                           .lookup = "lerp(R, N, alpha^2)",
+                           .shForm = "IndirectLight irradianceSh(3, ...): radiance coefficients times A_l / pi and the basis constants",
+                           .lightsForm = "a SUN light per light of lights.gltf, its angular radius in degrees",
+                           .loader = "docs/engines.md#filament"};
+    return {kit, three, babylon, filament};
 }
 
 } // namespace

@@ -20,8 +20,13 @@ enum class DiffuseSource {
 };
 
 
+// How the engine takes the diffuse SH: the kit's radiance coefficients, or coefficients of
+// E(n)/π over the plain polynomials 1, y, z, x, xy, yz, 3z² - 1, xz, x² - y² (the radiance's times
+// A_l/π and the basis constant: cmgen's --sh-shader, Filament's IndirectLight).
+enum class ShForm { Radiance, IrradianceShader };
+
 // The specular cube's file the engine loads.
-enum class SpecularFile { Ktx2, Dds };
+enum class SpecularFile { Ktx2, Dds, Ktx1 };
 
 // One engine's conventions for a prefiltered cube: everything a profile changes in a bake is here,
 // and nowhere else is an engine's name tested.
@@ -31,6 +36,7 @@ struct EngineProfile {
     std::string_view recipe;    // the shading recipe the maps are made for (runtime/shading/shading_recipe.hpp)
     CubeFrame frame = CubeFrame::Kit;
     SpecularFile file = SpecularFile::Ktx2;
+    ShForm shCoefficients = ShForm::Radiance;
     uint32_t lastMipSize = 8;   // the chain ends at this face size (its roughest level at roughness 1)
     DiffuseSource diffuse = DiffuseSource::IrradianceMap;
     bool readsKitLut = true;    // false: the engine has its own DFG table and takes none

@@ -13,8 +13,10 @@ export const white = [1, 1, 1];
 const roughnesses = [0, 0.25, 0.5, 0.75, 1];
 
 export class EngineSession {
-  constructor(page, profile, cell = 64) {
-    Object.assign(this, { page, profile, cell });
+  // exposures: per check, the light scale a page with an 8-bit canvas renders at (Filament's)
+  // to keep the brightest pixel within 1; the pages with float targets leave it.
+  constructor(page, profile, { cell = 64, exposures = {} } = {}) {
+    Object.assign(this, { page, profile, cell, exposures });
   }
 
   async open() {
@@ -47,7 +49,7 @@ export class EngineSession {
     const folder = this.bake(environment, 'furnace', '--profile', this.profile, '--size', '32');
     const spheres = [...roughnesses.map((roughness) => ({ color: white, metalness: 1, roughness })),
                      ...roughnesses.map((roughness) => ({ color: white, metalness: 0, roughness }))];
-    const image = await this.render(folder, spheres);
+    const image = await this.render(folder, spheres, { exposure: this.exposures.furnace });
     return spheres.map((sphere, index) => {
       let worst = 0;
       for (const { colour } of spherePixels(image, this.cell, index))
@@ -56,13 +58,15 @@ export class EngineSession {
     });
   }
 
-  // A mirror sphere in the orientation cube baked with `flags`: the share of pixels away from the
+  // A mirror sphere in the orientation cube baked with `flags` (`prepare` may rewrite the files): the share of pixels away from the
   // faces' edges that show another face's colour than the kit has in their mirror direction, and
   // per visible face the angle from its brightest pixel's mirror direction to its hot texel.
-  async orientation(name, ...flags) {
+  async orientation(name, flags, prepare = () => {}) {
     const environment = writeOrientationCube(this.folder('env'));
-    const image = await this.render(this.bake(environment, name, ...flags), [{ color: white, metalness: 1, roughness: 0 }],
-                                    { lights: false });
+    const bakeFolder = this.bake(environment, name, ...flags);
+    prepare(bakeFolder);
+    const image = await this.render(bakeFolder, [{ color: white, metalness: 1, roughness: 0 }],
+                                    { lights: false, exposure: this.exposures.orientation });
     const pixels = spherePixels(image, this.cell, 0);
     const wrong = pixels.filter((p) => marginOf(p.reflected) > 1.2 && nearestFace(p.colour) !== faceOf(p.reflected));
     const hotTexels = [];
@@ -90,9 +94,10 @@ export class EngineSession {
     const spheres = opaqueSpheres(kit.grid);
     const bakeFolder = this.bake(patches, `engine-${name}`, ...flags);
     prepare(bakeFolder);
-    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, ...options });
+    const exposure = this.exposures.comparison;
+    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, exposure, ...options });
     const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
-                                            spheres, { span: kitSpan });
+                                            spheres, { span: kitSpan, exposure });
     const values = (image, sphere) =>
       spherePixels(image, this.cell, sphere.column, sphere.row, { span: kitSpan }).map((p) => luminance(p.colour));
     return spheres.map((sphere) => {
@@ -120,6 +125,21 @@ function nearestFace(colour) {
     if (distance < bestDistance) [best, bestDistance] = [face, distance];
   });
   return best;
+}
+
+// bound: a fraction, or a function of the sphere giving one.
+const boundOf = (bound, sphere) => (typeof bound === 'function' ? bound(sphere) : bound);
+
+export function assertDeparturesWithin(spheres, bound) {
+  for (const sphere of spheres)
+    assert.ok(sphere.departure < boundOf(bound, sphere), `${describe(sphere)}: ${(100 * sphere.departure).toFixed(1)} % from the kit`);
+}
+
+// A mutation must fail: some sphere departs by its bound or more.
+export function assertSomeDepartureBeyond(spheres, bound) {
+  const worst = Math.max(...spheres.map((sphere) => sphere.departure));
+  assert.ok(spheres.some((sphere) => sphere.departure >= boundOf(bound, sphere)),
+            `every sphere is within the bound (the worst ${(100 * worst).toFixed(1)} %): the check cannot tell`);
 }
 
 export function describe(sphere) {

@@ -18,7 +18,7 @@ mkdirSync(out, { recursive: true });
 
 const sections = [];
 for (const engine of engines) {
-  const session = new EngineSession(engine.page, engine.profile, cell);
+  const session = new EngineSession(engine.page, engine.profile, { cell });
   await session.open();
   try {
     const bakeFolder = session.bake(null, 'sky', '--profile', engine.profile);

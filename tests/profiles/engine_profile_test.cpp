@@ -47,12 +47,22 @@ TEST(EngineProfile, BabylonReadsMipsByItsLodGenerationScaleOverTheFullChain) {
     EXPECT_EQ(profile.file, SpecularFile::Dds);
 }
 
+TEST(EngineProfile, FilamentReadsTheKitsFrameByThreeJsMappingWithItsShaderSh) {
+    // Filament 1.53: surface_light_indirect's lod = (levels - 1) r (2 - r) and lerp(R, N, α²),
+    // as three.js; cubes sampled as they are; IndirectLight takes cmgen's --sh-shader SH.
+    const auto& profile = profileNamed("filament");
+    EXPECT_EQ(profile.recipe, profileNamed("threejs").recipe);
+    EXPECT_EQ(profile.frame, CubeFrame::Kit);
+    EXPECT_EQ(profile.file, SpecularFile::Ktx1);
+    EXPECT_EQ(profile.shCoefficients, ShForm::IrradianceShader);
+}
+
 TEST(EngineProfile, AnUnknownNameIsRefusedWithTheNames) {
     try {
         profileNamed("unity");
         FAIL() << "accepted";
     } catch (const std::invalid_argument& error) {
-        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs, babylon)");
+        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs, babylon, filament)");
     }
 }
 

@@ -1,0 +1,71 @@
+// Filament 1.53 (web) reads `iblkit bake --profile filament` and renders spheres in Debian's chromium.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { read } from 'ktx-parse';
+import { EngineSession, assertDeparturesWithin, assertSomeDepartureBeyond, describe, orientationFailures } from './checks.mjs';
+
+// Filament's page reads an 8-bit canvas: each check scales the light to keep its brightest pixel
+// within 1 (the white furnace at half, the orientation cube's hot texels at 8 times its faces, the
+// patches at up to 2), so each pixel is quantized to 1 / (255 × that scale).
+const session = new EngineSession('filament', 'filament', { exposures: { furnace: 0.5, orientation: 0.1, comparison: 0.4 } });
+before(() => session.open());
+after(() => session.close());
+
+// The tests' mutations bake with another profile, whose files hold no KTX1: this puts the KTX2's
+// cube into the KTX1 file Filament's page reads, written here from the KTX 1.1 specification (each
+// level's imageSize, one face's bytes, then its six faces), independently of the kit's writer.
+function asFilamentFiles(folder) {
+  const container = read(readFileSync(path.join(folder, 'specular.ktx2')));
+  const header = Buffer.alloc(64);
+  Buffer.from([0xab, 0x4b, 0x54, 0x58, 0x20, 0x31, 0x31, 0xbb, 0x0d, 0x0a, 0x1a, 0x0a]).copy(header);
+  [0x04030201, 0x140b, 2, 0x1908, 0x881a, 0x1908, container.pixelWidth, container.pixelHeight, 0, 0, 6,
+   container.levels.length, 0].forEach((value, index) => header.writeUInt32LE(value, 12 + 4 * index));
+  const levels = container.levels.map(({ levelData }) => {
+    const imageSize = Buffer.alloc(4);
+    imageSize.writeUInt32LE(levelData.byteLength / 6);
+    return Buffer.concat([imageSize, Buffer.from(levelData)]);
+  });
+  writeFileSync(path.join(folder, 'specular.ktx'), Buffer.concat([header, ...levels]));
+  // And the SH as Filament's IndirectLight takes them: E(n)/π over the plain polynomials, the
+  // irradiance coefficients times each one's basis constant.
+  const manifestFile = path.join(folder, 'manifest.json');
+  const manifest = JSON.parse(readFileSync(manifestFile, 'utf8'));
+  const basis = [0.282095, 0.488603, 0.488603, 0.488603, 1.092548, 1.092548, 0.315392, 1.092548, 0.546274];
+  manifest.profile.sh_coefficients = manifest.irradiance.sh.irradiance_over_pi.map((c, i) => c.map((v) => v * basis[i]));
+  writeFileSync(manifestFile, JSON.stringify(manifest));
+}
+
+test('white furnace: every white sphere, metal or not, at every roughness, is 1', async () => {
+  // Measured: every pixel 128/255 at half the light, 1/255 from 1 (the canvas's quantization);
+  // Filament's shading conserves a white sphere's energy.
+  for (const sphere of await session.furnaceDepartures())
+    assert.ok(sphere.worst < 0.005, `${describe(sphere)}: off 1 by ${sphere.worst}`);
+});
+
+// Bounds and what they measured: orientationFailures (checks.mjs).
+test('orientation: a mirror sphere shows each face where the kit has it, its hot texel in place', async () => {
+  assert.deepEqual(orientationFailures(await session.orientation('orientation', ['--profile', 'filament'])), []);
+});
+
+test("mutation: the same maps mirrored in x (three.js's frame) fail the orientation check", async () => {
+  const failures = orientationFailures(await session.orientation('orientation-mirrored', ['--profile', 'threejs'], asFilamentFiles));
+  assert.ok(failures.length > 0, 'Filament showed a cube mirrored in x as if it were in its own frame');
+});
+
+// Measured: 4.4 % at most (gold and silver at roughness 0.02; plastic within 0.5 %, metals from
+// roughness 0.3 up within 0.6 %): Filament keeps roughness at 0.045 or more, and the canvas's 8
+// bits quantize each pixel by 1 %. Maps of the linear mapping depart by up to 14.8 %.
+const departureBound = 0.06;
+
+test("the engine against the kit: Filament and the kit's split sum of Filament's mapping read the same mips", async () => {
+  assertDeparturesWithin(await session.departuresFromKit('patches', 'quadratic-lights', ['--profile', 'filament']), departureBound);
+});
+
+test('mutation: maps of the linear mapping fail the comparison', async () => {
+  // The documents' linear spacing, in the kit's frame (Filament's too): only the mips' roughness differs.
+  const spheres = await session.departuresFromKit('patches-linear', 'quadratic-lights', ['--recipe', 'linear-lights-pair'], {},
+                                                  asFilamentFiles);
+  assertSomeDepartureBeyond(spheres, departureBound);
+});
