@@ -127,6 +127,14 @@ function nearestFace(colour) {
   return best;
 }
 
+// A bake manifest's SH as the engines' shaders take them (Filament's IndirectLight, Babylon.js's
+// preScaledHarmonics): E(n)/π over the plain polynomials 1, y, z, x, xy, yz, 3z² - 1, xz, x² - y²,
+// the irradiance coefficients times each basis function's constant; `signs` per term.
+export function shaderSh(manifest, signs = Array(9).fill(1)) {
+  const basis = [0.282095, 0.488603, 0.488603, 0.488603, 1.092548, 1.092548, 0.315392, 1.092548, 0.546274];
+  return manifest.irradiance.sh.irradiance_over_pi.map((c, i) => c.map((v) => v * basis[i] * signs[i]));
+}
+
 // bound: a fraction, or a function of the sphere giving one.
 const boundOf = (bound, sphere) => (typeof bound === 'function' ? bound(sphere) : bound);
 

@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { read } from 'ktx-parse';
-import { EngineSession, assertDeparturesWithin, assertSomeDepartureBeyond, describe, orientationFailures } from './checks.mjs';
+import { EngineSession, assertDeparturesWithin, assertSomeDepartureBeyond, describe, orientationFailures, shaderSh } from './checks.mjs';
 
 // Filament's page reads an 8-bit canvas: each check scales the light to keep its brightest pixel
 // within 1 (the white furnace at half, the orientation cube's hot texels at 8 times its faces, the
@@ -28,12 +28,10 @@ function asFilamentFiles(folder) {
     return Buffer.concat([imageSize, Buffer.from(levelData)]);
   });
   writeFileSync(path.join(folder, 'specular.ktx'), Buffer.concat([header, ...levels]));
-  // And the SH as Filament's IndirectLight takes them: E(n)/π over the plain polynomials, the
-  // irradiance coefficients times each one's basis constant.
+  // And the SH as Filament's IndirectLight takes them.
   const manifestFile = path.join(folder, 'manifest.json');
   const manifest = JSON.parse(readFileSync(manifestFile, 'utf8'));
-  const basis = [0.282095, 0.488603, 0.488603, 0.488603, 1.092548, 1.092548, 0.315392, 1.092548, 0.546274];
-  manifest.profile.sh_coefficients = manifest.irradiance.sh.irradiance_over_pi.map((c, i) => c.map((v) => v * basis[i]));
+  manifest.profile.sh_coefficients = shaderSh(manifest);
   writeFileSync(manifestFile, JSON.stringify(manifest));
 }
 

@@ -73,5 +73,19 @@ async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
   return { width, height, pixels: Array.from(new Float32Array(pixels.buffer, pixels.byteOffset, width * height * 4)) };
 }
 
+// The SH Babylon.js projects from the DDS's mip 0 as it loads it (CubeMapToSphericalPolynomialTools):
+// its preScaledHarmonics, in the order l00, l1-1, l10, l11, l2-2, l2-1, l20, l21, l22.
+async function sphericalHarmonics({ bake }) {
+  const engine = new BABYLON.Engine(document.getElementById('canvas'), false);
+  const scene = new BABYLON.Scene(engine);
+  const texture = BABYLON.CubeTexture.CreateFromPrefilteredData(`${bake}/specular.dds`, scene);
+  await new Promise((resolve) => texture.onLoadObservable.addOnce(resolve));
+  const harmonics = texture.sphericalPolynomial.preScaledHarmonics;
+  const coefficients = ['l00', 'l1_1', 'l10', 'l11', 'l2_2', 'l2_1', 'l20', 'l21', 'l22'].map((name) => harmonics[name].asArray());
+  engine.dispose();
+  return coefficients;
+}
+
 window.iblkitRender = renderSpheres;
+window.iblkitSphericalHarmonics = sphericalHarmonics;
 window.iblkitReady = true;
