@@ -127,9 +127,10 @@ std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture
     const auto gpuTexture =
         image_io::makeTexture(texture.format, texture.size, texture.size, texture.faces, texture.mips, texture.values);
     std::vector<WrittenFile> written{writeBytes(folder, texture.name + ".ktx2", image_io::encodeKtx2(gpuTexture, writer, texture.keyValues))};
-    if (resolvedProfile(settings).file == profiles::SpecularFile::Ktx1)
+    const auto engineFile = resolvedProfile(settings).file;
+    if (engineFile == profiles::SpecularFile::Ktx1)
         written.push_back(writeBytes(folder, texture.name + ".ktx", image_io::encodeKtx1(gpuTexture)));
-    if (settings.dds || resolvedProfile(settings).file == profiles::SpecularFile::Dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));
+    if (settings.dds || engineFile == profiles::SpecularFile::Dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));
     if (settings.exr)
         for (auto& file : writeExrFaces(folder, texture)) written.push_back(std::move(file));
     return written;

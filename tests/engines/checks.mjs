@@ -87,17 +87,10 @@ export class EngineSession {
   // |engine / kit - 1|.
   // `prepare` may rewrite the bake's files before the engine reads them (the tests' mutations).
   async departuresFromKit(name, kitRecipe, flags, options = {}, prepare = () => {}) {
-    const patches = writePatches(this.folder('env'));
-    const furnace = writeFurnace(this.folder('env'));
-    const kit = readKitRender(kitRender(patches, this.folder(`kit-${name}`), kitRecipe, this.cell));
-    const kitFurnace = readKitRender(kitRender(furnace, this.folder('kit-furnace'), kitRecipe, this.cell));
-    const spheres = opaqueSpheres(kit.grid);
+    const { patches, kit, kitFurnace, spheres, engineFurnace } = await this.comparisonBasis(kitRecipe);
     const bakeFolder = this.bake(patches, `engine-${name}`, ...flags);
     prepare(bakeFolder);
-    const exposure = this.exposures.comparison;
-    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, exposure, ...options });
-    const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
-                                            spheres, { span: kitSpan, exposure });
+    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, exposure: this.exposures.comparison, ...options });
     const values = (image, sphere) =>
       spherePixels(image, this.cell, sphere.column, sphere.row, { span: kitSpan }).map((p) => luminance(p.colour));
     return spheres.map((sphere) => {
@@ -105,6 +98,25 @@ export class EngineSession {
       const departures = e.map((value, i) => Math.abs(value / ef[i] / (k[i] / kf[i]) - 1)).sort((a, b) => a - b);
       return { ...sphere, departure: departures[departures.length >> 1] };
     });
+  }
+
+  // What every comparison with `kitRecipe` shares, made once a session: the patches, the kit's
+  // renders of them and of the furnace, and the engine's furnace from its own profile's bake.
+  comparisonBasis(kitRecipe) {
+    this.bases ??= new Map();
+    if (!this.bases.has(kitRecipe)) this.bases.set(kitRecipe, this.makeComparisonBasis(kitRecipe));
+    return this.bases.get(kitRecipe);
+  }
+
+  async makeComparisonBasis(kitRecipe) {
+    const patches = writePatches(this.folder('env'));
+    const furnace = writeFurnace(this.folder('env'));
+    const kit = readKitRender(kitRender(patches, this.folder(`kit-${kitRecipe}`), kitRecipe, this.cell));
+    const kitFurnace = readKitRender(kitRender(furnace, this.folder(`kit-furnace-${kitRecipe}`), kitRecipe, this.cell));
+    const spheres = opaqueSpheres(kit.grid);
+    const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
+                                            spheres, { span: kitSpan, exposure: this.exposures.comparison });
+    return { patches, kit, kitFurnace, spheres, engineFurnace };
   }
 }
 
