@@ -63,7 +63,23 @@ std::vector<EngineProfile> makeProfiles() {
                            .shForm = "IndirectLight irradianceSh(3, ...): radiance coefficients times A_l / pi and the basis constants",
                            .lightsForm = "a SUN light per light of lights.gltf, its angular radius in degrees",
                            .loader = "docs/engines.md#filament"};
-    return {kit, three, babylon, filament};
+    // glTF-Sample-Renderer 1.1 (npm @khronosgroup/gltf-viewer 1.1.0): ibl.glsl (lod = roughness
+    // (u_MipCount - 1), reflect(-v, n), the LUT at (N·V, roughness)), ibl_sampler.js (its own chain
+    // stops lowestMipLevel = 4 levels short of 1², at 16²; its Lambertian cube holds E/π).
+    EngineProfile gltf{.name = "gltf",
+                       .engine = "glTF Sample Viewer (glTF-Sample-Renderer 1.1, npm @khronosgroup/gltf-viewer 1.1.0), its IBL shader",
+                       .recipe = "linear-lights",
+                       .frame = CubeFrame::Kit,
+                       .file = SpecularFile::Ktx2,
+                       .lastMipSize = 16,
+                       .diffuse = DiffuseSource::IrradianceMap,
+                       .readsKitLut = true,
+                       .lodFormula = "lod = roughness (u_MipCount - 1), u_MipCount = mips (its own chain ends at 16x16)",
+                       .lookup = "u_EnvRotation reflect(-V, N), u_EnvRotation the identity (environmentRotation 0)",
+                       .shForm = "none: its diffuse is the Lambertian cube, the kit's irradiance.ktx2 (E/pi)",
+                       .lightsForm = "KHR_lights_punctual directional lights: lights.gltf as it is",
+                       .loader = "docs/engines.md#gltf-sample-viewer"};
+    return {kit, three, babylon, filament, gltf};
 }
 
 } // namespace
@@ -82,6 +98,12 @@ const EngineProfile& profileNamed(std::string_view name) {
         names += (names.empty() ? "" : ", ") + std::string(profile.name);
     }
     throw std::invalid_argument("no profile named '" + std::string(name) + "' (there are: " + names + ")");
+}
+
+const EngineProfile& profileMadeFor(std::string_view recipe) {
+    for (const auto& profile : engineProfiles())
+        if (profile.recipe == recipe) return profile;
+    return defaultProfile();
 }
 
 } // namespace iblkit::profiles

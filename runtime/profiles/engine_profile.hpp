@@ -52,5 +52,8 @@ const std::vector<EngineProfile>& engineProfiles();
 const EngineProfile& defaultProfile();
 // Throws std::invalid_argument listing the names.
 const EngineProfile& profileNamed(std::string_view name);
+// The first profile whose maps are made for the recipe named, else the kit's: its chain is the one
+// the kit's own render of that recipe reads, as the engine would.
+const EngineProfile& profileMadeFor(std::string_view recipe);
 
 } // namespace iblkit::profiles

@@ -5,6 +5,8 @@
 #include "baked_outputs.hpp"
 #include "shading_maps.hpp"
 
+#include "profiles/engine_profile.hpp"
+
 namespace iblkit::render {
 
 double meanLuminance(const BakedMaps& maps) { return bake::meanLuminance(maps.irradiance.sh, maps.lights); }
@@ -14,6 +16,7 @@ float exposureOf(const BakedMaps& maps) { return bake::previewExposure(maps.irra
 BakedMaps bakeMaps(const vulkan::VulkanContext& context, const bake::EnvironmentInput& input,
                    const shading::ShadingRecipe& recipe, bake::BakeProgress& progress) {
     bake::BakeSettings defaults;
+    defaults.profile = profiles::profileMadeFor(recipe.name).name;
     bake::BakeKernels kernels(context, defaults);
     const uint32_t size = bake::resolvedSize(defaults, input.cubeSize);
     auto source = bake::buildSourceCube(context, input, size, progress);

@@ -5,6 +5,8 @@
 #include "render/render_settings.hpp"
 #include "render/sphere_grid.hpp"
 
+#include "profiles/engine_profile.hpp"
+
 #include "embedded_tools.hpp"
 #include "shell_command.hpp"
 
@@ -158,6 +160,22 @@ void writeSummary(std::ostream& out, const std::vector<EnvironmentResult>& resul
                            s.excess.where, percent(s.total.value), s.total.where, percent(s.roughTotal.value),
                            s.roughTotal.where, percent(s.glass.value), s.glass.where, 100 * s.irradiance.value,
                            s.irradiance.where, s.bakeMs / 1e3);
+    }
+}
+
+// One row per engine profile whose recipe the bench measured: that recipe's row, named by the engine.
+void writeEngineTable(std::ostream& out, const std::vector<EnvironmentResult>& results) {
+    const auto summaries = summarize(results);
+    out << fmt::format("| profile | engine | recipe | opaque spheres within both targets | their mean error above noise, on "
+                       "average | the worst | worst summed from roughness {:g} |\n|---|---|---|---:|---:|---|---|\n",
+                       kLotteryRoughness);
+    for (const auto& profile : profiles::engineProfiles()) {
+        const auto found = summaries.find(std::string(profile.recipe));
+        if (found == summaries.end()) continue;
+        const auto& s = found->second;
+        out << fmt::format("| `{}` | {} | {} | {} of {} | {} % | {} % ({}) | {} % ({}) |\n", profile.name, profile.engine,
+                           profile.recipe, s.met, s.opaque, percent(s.excessSum / double(std::max<size_t>(s.opaque, 1))),
+                           percent(s.excess.value), s.excess.where, percent(s.roughTotal.value), s.roughTotal.where);
     }
 }
 
@@ -316,6 +334,12 @@ void writeShadingReport(const ShadingReportOptions& options, const ShadingBenchO
                         100 * kTotalTarget, 100 * kGlassTarget)
          << "## Every recipe, over every environment\n\n";
     writeSummary(page, results);
+    page << "\n## Per engine\n\nEach engine profile's shading against the Monte Carlo truth when it reads the maps its "
+            "profile bakes (`iblkit bake --profile`): its recipe's row above, which reads the chain the profile writes, by "
+            "the engine's lod mapping and direction, one lookup at the surface's roughness, and the lights the bake takes "
+            "out as the engine's own lights. The engine's own DFG table and multiple scattering are not in it: "
+            "[engines.md](engines.md) measures, in a browser, how far each engine's picture departs from this split sum.\n\n";
+    writeEngineTable(page, results);
     page << "\n![](shading/summary.png)\n\n## The best recipe per sphere\n\nThe worst over the environments of each "
             "sphere's mean error above noise (glass: its mean error), for the recipe with the least.\n\n";
     writeFrontier(page, results);

@@ -79,6 +79,8 @@ std::vector<ShadingRecipe> makeBenchRecipes() {
         recipe("quadratic-lights", G1, Quadratic, D::Filament, L::Roughness, true),
         // What Babylon.js 9 reads: lod = 0.8 log2(α size), R, one lookup.
         recipe("babylon-lights", G1, Babylon, D::Reflected, L::Roughness, true),
+        // What the glTF Sample Viewer reads: lod = r (mips - 1), R, one lookup.
+        recipe("linear-lights", G1, Linear, D::Reflected, L::Roughness, true),
     };
 }
 

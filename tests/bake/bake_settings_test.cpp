@@ -99,7 +99,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     refused([](BakeSettings& s) { s.lutMethod = "nope"; }, "--lut-method nope is not a LUT method (there are: document, quadrature, fit, quadrature-grid)");
     refused([](BakeSettings& s) { s.lutMethod = "quadrature"; s.lutSamples = 17; }, "--lut-samples 17 is out of range (1 to 16)");
     refused([](BakeSettings& s) { s.irradianceSize = 0; }, "--irradiance-size");
-    refused([](BakeSettings& s) { s.profile = "nope"; }, "--profile: no profile named 'nope' (there are: iblkit, threejs, babylon, filament)");
+    refused([](BakeSettings& s) { s.profile = "nope"; }, "--profile: no profile named 'nope' (there are: iblkit, threejs, babylon, filament, gltf)");
     refused([](BakeSettings& s) { s.profile = "threejs"; s.recipe = "kit"; },
             "--recipe kit maps roughness to lod by logarithmic, but --profile threejs reads mips by quadratic");
     refused([](BakeSettings& s) { s.profile = "threejs"; s.specularMethod = "document"; },

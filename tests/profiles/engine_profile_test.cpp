@@ -57,12 +57,33 @@ TEST(EngineProfile, FilamentReadsTheKitsFrameByThreeJsMappingWithItsShaderSh) {
     EXPECT_EQ(profile.shCoefficients, ShForm::IrradianceShader);
 }
 
+TEST(EngineProfile, TheGltfSampleViewerReadsMipsLinearlyDownTo16WithTheKitsLut) {
+    // glTF-Sample-Renderer 1.1, ibl.glsl: lod = roughness (u_MipCount - 1), reflect(-v, n), the LUT
+    // at (N·V, roughness); ibl_sampler.js stops its chain four levels short of 1x1.
+    const auto& profile = profileNamed("gltf");
+    const auto& recipe = shading::recipeNamed(profile.recipe);
+    const auto schedule = shading::scheduleOf(recipe, 5, 256);
+    for (double r : {0.0, 0.1, 0.25, 0.5, 0.75, 1.0}) EXPECT_NEAR(schedule.lodOf(r), 4 * r, 1e-12) << r;
+    EXPECT_EQ(recipe.direction, shading::LookupDirection::Reflected);
+    EXPECT_EQ(recipe.lookup, shading::LookupLobe::Roughness);
+    EXPECT_EQ(profile.lastMipSize, 16u);
+    EXPECT_EQ(profile.frame, CubeFrame::Kit);
+    EXPECT_TRUE(profile.readsKitLut);
+}
+
+TEST(EngineProfile, TheRenderOfARecipeReadsTheChainOfTheProfileMadeForIt) {
+    EXPECT_EQ(profileMadeFor("babylon-lights").name, "babylon");
+    EXPECT_EQ(profileMadeFor("quadratic-lights").name, "threejs");
+    EXPECT_EQ(profileMadeFor("linear-lights").name, "gltf");
+    EXPECT_EQ(profileMadeFor("document").name, "iblkit") << "a recipe no engine reads takes the kit's chain";
+}
+
 TEST(EngineProfile, AnUnknownNameIsRefusedWithTheNames) {
     try {
         profileNamed("unity");
         FAIL() << "accepted";
     } catch (const std::invalid_argument& error) {
-        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs, babylon, filament)");
+        EXPECT_EQ(std::string(error.what()), "no profile named 'unity' (there are: iblkit, threejs, babylon, filament, gltf)");
     }
 }
 
