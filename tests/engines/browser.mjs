@@ -42,7 +42,9 @@ export class Browser {
     page.on('console', (message) => { if (message.type() === 'error') errors.push(message.text()); });
     await page.setRequestInterception(true);
     page.on('request', (request) => serve(request, roots));
-    await page.goto(`${origin}/pages/${name}.html`);
+    // Loading an engine's modules through interception took over puppeteer's default 30 s on a
+    // loaded 2-core machine (three engine tests beside the kit's renders).
+    await page.goto(`${origin}/pages/${name}.html`, { timeout: 120000 });
     await page.waitForFunction('window.iblkitReady === true || window.iblkitFailed', { timeout: 120000 });
     page.errors = errors;
     return page;

@@ -1,11 +1,14 @@
 // The checks every engine's page passes, with that engine's bounds: the white furnace, the
-// orientation cube in a mirror sphere, and the comparison with the kit's own split sum.
+// orientation cube in a mirror sphere, and the comparisons with the kit's own split sum, of colour
+// patches and of a sun the bake takes out as a light.
 import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { Browser } from './browser.mjs';
 import { bake, kitRender, scratchFolder } from './bake.mjs';
 import { angleBetween, faceOf, marginOf } from './cube.mjs';
-import { orientation, writeFurnace, writeOrientationCube, writePatches } from './environments.mjs';
+import { orientation, writeFurnace, writeOrientationCube, writePatches, writeSunBeside } from './environments.mjs';
 import { kitSpan, opaqueSpheres, readKitRender } from './kit_render.mjs';
 import { luminance, spherePixels } from './spheres.mjs';
 
@@ -13,10 +16,8 @@ export const white = [1, 1, 1];
 const roughnesses = [0, 0.25, 0.5, 0.75, 1];
 
 export class EngineSession {
-  // exposures: per check, the light scale a page with an 8-bit canvas renders at (Filament's)
-  // to keep the brightest pixel within 1; the pages with float targets leave it.
-  constructor(page, profile, { cell = 64, exposures = {} } = {}) {
-    Object.assign(this, { page, profile, cell, exposures });
+  constructor(page, profile, { cell = 64 } = {}) {
+    Object.assign(this, { page, profile, cell });
   }
 
   async open() {
@@ -49,7 +50,7 @@ export class EngineSession {
     const folder = this.bake(environment, 'furnace', '--profile', this.profile, '--size', '32');
     const spheres = [...roughnesses.map((roughness) => ({ color: white, metalness: 1, roughness })),
                      ...roughnesses.map((roughness) => ({ color: white, metalness: 0, roughness }))];
-    const image = await this.render(folder, spheres, { exposure: this.exposures.furnace });
+    const image = await this.render(folder, spheres);
     return spheres.map((sphere, index) => {
       let worst = 0;
       for (const { colour } of spherePixels(image, this.cell, index))
@@ -66,7 +67,7 @@ export class EngineSession {
     const bakeFolder = this.bake(environment, name, ...flags);
     prepare(bakeFolder);
     const image = await this.render(bakeFolder, [{ color: white, metalness: 1, roughness: 0 }],
-                                    { lights: false, exposure: this.exposures.orientation });
+                                    { lights: false });
     const pixels = spherePixels(image, this.cell, 0);
     const wrong = pixels.filter((p) => marginOf(p.reflected) > 1.2 && nearestFace(p.colour) !== faceOf(p.reflected));
     const hotTexels = [];
@@ -87,14 +88,43 @@ export class EngineSession {
   // |engine / kit - 1|.
   // `prepare` may rewrite the bake's files before the engine reads them (the tests' mutations).
   async departuresFromKit(name, kitRecipe, flags, options = {}, prepare = () => {}) {
-    const { patches, kit, kitFurnace, spheres, engineFurnace } = await this.comparisonBasis(kitRecipe);
-    const bakeFolder = this.bake(patches, `engine-${name}`, ...flags);
+    const basis = await this.comparisonBasis(kitRecipe);
+    const bakeFolder = this.bake(basis.patches, `engine-${name}`, ...flags);
     prepare(bakeFolder);
-    const engine = await this.render(bakeFolder, spheres, { span: kitSpan, exposure: this.exposures.comparison, ...options });
+    const engine = await this.render(bakeFolder, basis.spheres, { span: kitSpan, ...options });
+    return this.departures(basis.spheres, engine, basis.kit.image, basis);
+  }
+
+  // The kit's render grid's dielectric spheres under a small sun beside them (writeSunBeside),
+  // which the bake with `flags` takes out into lights.gltf and the page adds as the engine's own
+  // light, against the kit's split sum of `kitRecipe`, which shades the sun's disk; per sphere, the
+  // median over its pixels of |engine / kit - 1| as departuresFromKit takes it. A dielectric's
+  // light is mostly its diffuse, so the check sees the light's direction and illuminance, not how
+  // each engine shades a sun's highlight on a metal. `prepare` may rewrite the bake's files.
+  async sunDepartures(name, kitRecipe, flags, prepare = () => {}) {
+    this.suns ??= new Map();
+    if (!this.suns.has(kitRecipe)) this.suns.set(kitRecipe, this.makeSunBasis(kitRecipe));
+    const { sun, kit } = await this.suns.get(kitRecipe);
+    const basis = await this.comparisonBasis(kitRecipe);
+    const spheres = basis.spheres.filter((sphere) => sphere.metalness === 0 && sphere.row === 0);
+    const bakeFolder = this.bake(sun, `engine-${name}`, ...flags);
+    prepare(bakeFolder);
+    const engine = await this.render(bakeFolder, spheres, { span: kitSpan });
+    return this.departures(spheres, engine, kit.image, basis);
+  }
+
+  async makeSunBasis(kitRecipe) {
+    const sun = writeSunBeside(this.folder('env'));
+    return { sun, kit: readKitRender(kitRender(sun, this.folder(`kit-sun-${kitRecipe}`), kitRecipe, this.cell)) };
+  }
+
+  // Per sphere, the median over its pixels of |engine / kit - 1|, each renderer's value over its
+  // own in the white furnace.
+  departures(spheres, engine, kit, { engineFurnace, kitFurnace }) {
     const values = (image, sphere) =>
       spherePixels(image, this.cell, sphere.column, sphere.row, { span: kitSpan }).map((p) => luminance(p.colour));
     return spheres.map((sphere) => {
-      const [e, ef, k, kf] = [engine, engineFurnace, kit.image, kitFurnace.image].map((image) => values(image, sphere));
+      const [e, ef, k, kf] = [engine, engineFurnace, kit, kitFurnace.image].map((image) => values(image, sphere));
       const departures = e.map((value, i) => Math.abs(value / ef[i] / (k[i] / kf[i]) - 1)).sort((a, b) => a - b);
       return { ...sphere, departure: departures[departures.length >> 1] };
     });
@@ -115,9 +145,29 @@ export class EngineSession {
     const kitFurnace = readKitRender(kitRender(furnace, this.folder(`kit-furnace-${kitRecipe}`), kitRecipe, this.cell));
     const spheres = opaqueSpheres(kit.grid);
     const engineFurnace = await this.render(this.bake(furnace, 'engine-furnace', '--profile', this.profile, '--size', '32'),
-                                            spheres, { span: kitSpan, exposure: this.exposures.comparison });
+                                            spheres, { span: kitSpan });
     return { patches, kit, kitFurnace, spheres, engineFurnace };
   }
+}
+
+// The sun's check and its mutation, for an engine whose profile bakes with `recipe`: every
+// dielectric sphere within `bound` of the kit, and lights.gltf's direction mirrored in x beyond it.
+export function testSunAsTheEnginesLight(session, engine, recipe, bound) {
+  const flags = ['--profile', session.profile];
+  test(`a sun the bake takes out reaches ${engine} as its own light, where the kit has it`, async () => {
+    assertDeparturesWithin(await session.sunDepartures('sun', recipe, flags), bound);
+  });
+  test("mutation: lights.gltf's direction mirrored in x fails the sun's comparison", async () => {
+    assertSomeDepartureBeyond(await session.sunDepartures('sun-mirrored', recipe, flags, mirrorLightsInX), bound);
+  });
+}
+
+// A mutation: lights.gltf's lights shining from their direction mirrored in x.
+function mirrorLightsInX(folder) {
+  const file = path.join(folder, 'lights.gltf');
+  const gltf = JSON.parse(readFileSync(file, 'utf8'));
+  for (const light of gltf.extensions.KHR_lights_punctual.lights) light.extras.direction[0] *= -1;
+  writeFileSync(file, JSON.stringify(gltf));
 }
 
 // What an orientation result gets wrong. Measured for each engine: no pixel shows another face's

@@ -44,6 +44,22 @@ export function writePatches(folder) {
   return file;
 }
 
+// A dim sky of 0.1 and a small sun of 20000 (about 6° across) 36° above the horizon, from the left
+// and a little in front of spheres seen from +Z (the light's direction about (-0.77, 0.59, 0.25)):
+// bright enough that the bake takes it out as a light, and beside the spheres, so that their lit
+// sides, terminators and shadowed sides all show.
+export function writeSunBeside(folder) {
+  mkdirSync(folder, { recursive: true });
+  const file = path.join(folder, 'sun.hdr');
+  const width = 256, height = 128, sun = { column: 0.2 * width, row: 0.3 * height, radius: 1.5 };
+  writeHdr(file, width, height, (column, row) => {
+    const latitude = Math.PI * (0.5 - (row + 0.5) / height);
+    const dx = (column + 0.5 - sun.column) * Math.cos(latitude), dy = row + 0.5 - sun.row;
+    return Math.hypot(dx, dy) <= sun.radius ? [20000, 20000, 20000] : [0.1, 0.1, 0.1];
+  });
+  return file;
+}
+
 // Each face its own colour, and one texel 8 times as bright off the face's centre and off its
 // diagonals, so that a swapped face, a mirrored face or a turned face each move it.
 export const orientation = {

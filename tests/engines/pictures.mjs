@@ -10,7 +10,8 @@ import { writePng } from './png.mjs';
 import { luminance, spherePixels } from './spheres.mjs';
 
 const engines = [{ page: 'three', profile: 'threejs', title: 'three.js r187' },
-                 { page: 'babylon', profile: 'babylon', title: 'Babylon.js 9' }];
+                 { page: 'babylon', profile: 'babylon', title: 'Babylon.js 9' },
+                 { page: 'filament', profile: 'filament', title: 'Filament 1.53' }];
 const cell = 48;
 const out = process.argv[2];
 if (!out) throw new Error('usage: node tests/engines/pictures.mjs OUTPUT_FOLDER');

@@ -1,6 +1,7 @@
 // Filament 1.53 (web) reads a bake made with --profile filament (its KTX1 cube through
 // createTextureFromKtx1, the SH as IndirectLight's) and renders spheres from a glTF its own
-// loader builds with its ubershaders, read back from the canvas: no post-processing, exposure 1.
+// loader builds with its ubershaders, each light of lights.gltf as its SUN; read back as floats
+// from an RGBA16F target: no post-processing, exposure 1.
 
 
 async function fetchBytes(url) {
@@ -57,9 +58,71 @@ function spheresGltf(placed, span) {
   return new TextEncoder().encode(JSON.stringify(gltf));
 }
 
-// The canvas holds 8 bits a channel: `exposure` scales the light (the IBL's intensity) to keep the
-// brightest pixel within 1, and the values come back divided by it.
-async function renderSpheres({ bake, spheres, cell, span = 1, exposure = 1 }) {
+// Filament's web API reads no pixels back, and its canvas holds 8 bits a channel. So the view
+// renders into an RGBA16F texture, and the page reads that texture's framebuffer as floats: the
+// WebGL2 context's calls are watched from before Engine.create to learn which framebuffer
+// Filament attaches the texture to (its GL backend names none of them to the page).
+const textures = new Map(); // WebGLTexture → { format, width, height, framebuffer }
+function watchFramebuffers() {
+  const gl = WebGL2RenderingContext.prototype;
+  const texStorage2D = gl.texStorage2D, framebufferTexture2D = gl.framebufferTexture2D;
+  gl.texStorage2D = function (target, levels, format, width, height) {
+    const texture = this.getParameter(this.TEXTURE_BINDING_2D);
+    if (target === this.TEXTURE_2D && texture) textures.set(texture, { format, width, height });
+    return texStorage2D.call(this, target, levels, format, width, height);
+  };
+  gl.framebufferTexture2D = function (target, attachment, textureTarget, texture, level) {
+    const binding = target === this.READ_FRAMEBUFFER ? this.READ_FRAMEBUFFER_BINDING : this.DRAW_FRAMEBUFFER_BINDING;
+    if (attachment === this.COLOR_ATTACHMENT0 && textures.has(texture))
+      textures.get(texture).framebuffer = this.getParameter(binding);
+    return framebufferTexture2D.call(this, target, attachment, textureTarget, texture, level);
+  };
+}
+watchFramebuffers();
+
+function floatTarget(engine, width, height) {
+  const Filament = window.Filament;
+  const colour = Filament.Texture.Builder().width(width).height(height).levels(1)
+    .sampler(Filament.Texture$Sampler.SAMPLER_2D).format(Filament.Texture$InternalFormat.RGBA16F)
+    .usage(1 | 16 /* COLOR_ATTACHMENT | SAMPLEABLE */).build(engine);
+  const depth = Filament.Texture.Builder().width(width).height(height).levels(1)
+    .sampler(Filament.Texture$Sampler.SAMPLER_2D).format(Filament.Texture$InternalFormat.DEPTH32F)
+    .usage(2 /* DEPTH_ATTACHMENT */).build(engine);
+  return Filament.RenderTarget.Builder().texture(Filament.RenderTarget$AttachmentPoint.COLOR, colour)
+    .texture(Filament.RenderTarget$AttachmentPoint.DEPTH, depth).build(engine);
+}
+
+// The pixels of the RGBA16F texture of this size that Filament has attached to a framebuffer,
+// as floats, bottom row first; the read framebuffer binding is put back for Filament's state cache.
+function readFloatTarget(gl, width, height) {
+  const matches = [...textures.values()].filter((t) => t.format === gl.RGBA16F && t.width === width &&
+                                                       t.height === height && t.framebuffer);
+  if (matches.length !== 1) throw new Error(`${matches.length} framebuffers hold a ${width}×${height} RGBA16F texture`);
+  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, matches[0].framebuffer);
+  const pixels = new Float32Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, pixels);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
+  return pixels;
+}
+
+// lights.gltf's directional lights (KHR_lights_punctual) as Filament's SUN: its intensity is the
+// illuminance (lux) Filament takes, exposure 1; the sun's disk is shaded at the light's angular
+// radius (Filament clamps it to 0.25°-20°).
+async function addSuns(bake, manifest, engine, scene) {
+  const Filament = window.Filament;
+  const file = manifest.shading.lights.file;
+  if (!file) return;
+  const gltf = await (await fetch(`${bake}/${file}`)).json();
+  for (const light of gltf.extensions.KHR_lights_punctual.lights) {
+    const sun = Filament.EntityManager.get().create();
+    Filament.LightManager.Builder(Filament.LightManager$Type.SUN).color(light.color).intensity(light.intensity)
+      .direction(light.extras.direction.map((c) => -c)).sunAngularRadius((light.extras.angular_radius * 180) / Math.PI)
+      .castShadows(false).build(engine, sun);
+    scene.addEntity(sun);
+  }
+}
+async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
   const Filament = window.Filament; // complete once Filament.init has called back
   const placed = spheres.map((sphere, index) => ({ column: index, row: 0, ...sphere }));
   const columns = Math.max(...placed.map((s) => s.column)) + 1, rows = Math.max(...placed.map((s) => s.row)) + 1;
@@ -77,6 +140,7 @@ async function renderSpheres({ bake, spheres, cell, span = 1, exposure = 1 }) {
   view.setScene(scene);
   view.setViewport([0, 0, width, height]);
   view.setPostProcessingEnabled(false);
+  view.setRenderTarget(floatTarget(engine, width, height));
   renderer.setClearOptions({ clearColor: [0, 0, 0, 0], clear: true });
   camera.setProjection(Filament.Camera$Projection.ORTHO, -span, span * (2 * columns - 1), span * (1 - 2 * rows), span, 1e3 - 10, 1e3 + 10);
   camera.lookAt([0, 0, 1e3], [0, 0, 0], [0, 1, 0]);
@@ -84,20 +148,21 @@ async function renderSpheres({ bake, spheres, cell, span = 1, exposure = 1 }) {
   const manifest = await (await fetch(`${bake}/manifest.json`)).json();
   const reflections = engine.createTextureFromKtx1(await fetchBytes(`${bake}/specular.ktx`), { srgb: false });
   const sh = manifest.profile.sh_coefficients.flat();
-  scene.setIndirectLight(Filament.IndirectLight.Builder().reflections(reflections).irradianceSh(3, sh).intensity(exposure).build(engine));
+  scene.setIndirectLight(Filament.IndirectLight.Builder().reflections(reflections).irradianceSh(3, sh).intensity(1).build(engine));
+  if (lights) await addSuns(bake, manifest, engine, scene);
   const loader = engine.createAssetLoader();
   const asset = loader.createAsset(spheresGltf(placed, span));
   await new Promise((resolve) => asset.loadResources(resolve, null, null, null));
   scene.addEntities(asset.getRenderableEntities());
   const gl = canvas.getContext('webgl2');
-  const pixels = new Uint8Array(width * height * 4);
+  let pixels;
   for (let frame = 0; frame < 4; frame++) {
     renderer.render(swapChain, view);
     engine.execute?.();
-    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    pixels = readFloatTarget(gl, width, height);
     await new Promise((resolve) => requestAnimationFrame(resolve));
   }
-  return { width, height, pixels: Array.from(pixels, (value) => value / 255 / exposure) };
+  return { width, height, pixels: Array.from(pixels) };
 }
 
 window.iblkitRender = renderSpheres;
