@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages iblkit needs (when missing), then configures and builds it.
-# Sourced by tools/run-main.sh and tools/run-tests.sh (the default preset) and by tools/fuzz.sh,
-# which sets IBLKIT_PRESET=fuzz and IBLKIT_EXTRA_PACKAGES (its compiler) first.
+# Sourced by tools/run-main.sh (which builds the program alone: IBLKIT_BUILD_PRESET=main) and
+# tools/run-tests.sh (the default preset, everything), and by tools/fuzz.sh, which sets
+# IBLKIT_PRESET=fuzz and IBLKIT_EXTRA_PACKAGES (its compiler) first.
 set -euo pipefail
 IBLKIT_PRESET=${IBLKIT_PRESET:-default}
 
@@ -55,7 +56,7 @@ install_engine_test_packages() {
 
 build_iblkit() {
   cmake --preset "$IBLKIT_PRESET"
-  cmake --build --preset "$IBLKIT_PRESET"
+  cmake --build --preset "${IBLKIT_BUILD_PRESET:-$IBLKIT_PRESET}"
 }
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
