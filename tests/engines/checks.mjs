@@ -106,7 +106,7 @@ export class EngineSession {
     if (!this.suns.has(kitRecipe)) this.suns.set(kitRecipe, this.makeSunBasis(kitRecipe));
     const { sun, kit } = await this.suns.get(kitRecipe);
     const basis = await this.comparisonBasis(kitRecipe);
-    const spheres = basis.spheres.filter((sphere) => sphere.metalness === 0 && sphere.row === 0);
+    const spheres = basis.spheres.filter((sphere) => sphere.metalness === 0);
     const bakeFolder = this.bake(sun, `engine-${name}`, ...flags);
     prepare(bakeFolder);
     const engine = await this.render(bakeFolder, spheres, { span: kitSpan });

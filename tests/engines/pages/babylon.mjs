@@ -1,15 +1,12 @@
 // Babylon.js 9 reads a bake made with --profile babylon (its DDS through its own loader) and
 // renders spheres into a float target, read back linear: no image processing.
 import * as BABYLON from '/node_modules/@babylonjs/core/index.js';
+import { bakedLights } from './lights.mjs';
 
 // lights.gltf's directional lights (KHR_lights_punctual): Babylon.js's DirectionalLight takes the
 // direction the light travels, and its intensity as the illuminance (lux) of a PBR scene.
 async function addLights(bake, scene) {
-  const manifest = await (await fetch(`${bake}/manifest.json`)).json();
-  const file = manifest.shading.lights.file;
-  if (!file) return;
-  const gltf = await (await fetch(`${bake}/${file}`)).json();
-  gltf.extensions.KHR_lights_punctual.lights.forEach((light, index) => {
+  (await bakedLights(bake)).forEach((light, index) => {
     const towards = new BABYLON.Vector3(...light.extras.direction);
     const sun = new BABYLON.DirectionalLight(`light${index}`, towards.scale(-1), scene);
     sun.diffuse = new BABYLON.Color3(...light.color);

@@ -2,7 +2,7 @@
 // createTextureFromKtx1, the SH as IndirectLight's) and renders spheres from a glTF its own
 // loader builds with its ubershaders, each light of lights.gltf as its SUN; read back as floats
 // from an RGBA16F target: no post-processing, exposure 1.
-
+import { bakedLights } from './lights.mjs';
 
 async function fetchBytes(url) {
   const response = await fetch(url);
@@ -111,10 +111,7 @@ function readFloatTarget(gl, width, height) {
 // radius (Filament clamps it to 0.25°-20°).
 async function addSuns(bake, manifest, engine, scene) {
   const Filament = window.Filament;
-  const file = manifest.shading.lights.file;
-  if (!file) return;
-  const gltf = await (await fetch(`${bake}/${file}`)).json();
-  for (const light of gltf.extensions.KHR_lights_punctual.lights) {
+  for (const light of await bakedLights(bake, manifest)) {
     const sun = Filament.EntityManager.get().create();
     Filament.LightManager.Builder(Filament.LightManager$Type.SUN).color(light.color).intensity(light.intensity)
       .direction(light.extras.direction.map((c) => -c)).sunAngularRadius((light.extras.angular_radius * 180) / Math.PI)
@@ -122,6 +119,7 @@ async function addSuns(bake, manifest, engine, scene) {
     scene.addEntity(sun);
   }
 }
+
 async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
   const Filament = window.Filament; // complete once Filament.init has called back
   const placed = spheres.map((sphere, index) => ({ column: index, row: 0, ...sphere }));
@@ -155,14 +153,12 @@ async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
   await new Promise((resolve) => asset.loadResources(resolve, null, null, null));
   scene.addEntities(asset.getRenderableEntities());
   const gl = canvas.getContext('webgl2');
-  let pixels;
   for (let frame = 0; frame < 4; frame++) {
     renderer.render(swapChain, view);
     engine.execute?.();
-    pixels = readFloatTarget(gl, width, height);
     await new Promise((resolve) => requestAnimationFrame(resolve));
   }
-  return { width, height, pixels: Array.from(pixels) };
+  return { width, height, pixels: Array.from(readFloatTarget(gl, width, height)) };
 }
 
 window.iblkitRender = renderSpheres;

@@ -2,6 +2,7 @@
 // float target, read back linear: no tone mapping, no output transform.
 import * as THREE from '/node_modules/three/build/three.module.js';
 import { read } from '/node_modules/ktx-parse/dist/index.mjs';
+import { bakedLights } from './lights.mjs';
 
 const VK_FORMAT_R16G16B16A16_SFLOAT = 97;
 
@@ -50,12 +51,8 @@ function mirrorColumns(texels, width) {
 
 // lights.gltf's directional lights (KHR_lights_punctual): colour × intensity is the irradiance
 // three.js lights with; the light shines from extras.direction.
-export async function loadLights(bake) {
-  const manifest = await (await fetch(`${bake}/manifest.json`)).json();
-  const file = manifest.shading.lights.file;
-  if (!file) return [];
-  const gltf = await (await fetch(`${bake}/${file}`)).json();
-  return gltf.extensions.KHR_lights_punctual.lights.map((light) => {
+async function loadLights(bake) {
+  return (await bakedLights(bake)).map((light) => {
     const three = new THREE.DirectionalLight(new THREE.Color().setRGB(...light.color, THREE.LinearSRGBColorSpace),
                                              light.intensity);
     three.position.set(...light.extras.direction);
