@@ -13,7 +13,6 @@ readonly IBLKIT_PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
   libegl-dev libgl-dev libgl1-mesa-dri
   libopenexr-dev libstb-dev libssl-dev libtinygltf-dev
-  python3-matplotlib
   ${IBLKIT_EXTRA_PACKAGES[@]+"${IBLKIT_EXTRA_PACKAGES[@]}"}
 )
 

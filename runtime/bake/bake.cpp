@@ -1,68 +1,95 @@
 #include "bake.hpp"
 
-#include "bake_directory.hpp"
-#include "baked_outputs.hpp"
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
-#include "bake_plan.hpp"
-#include "environment_input.hpp"
 #include "lights_gltf.hpp"
 #include "shading_maps.hpp"
-#include "content_store.hpp"
 #include "profiles/cube_frame.hpp"
 
 #include <fmt/core.h>
 
 #include <bit>
-#include <chrono>
 
 namespace iblkit::bake {
+namespace {
 
 using Clock = std::chrono::steady_clock;
 
-BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
-    const auto started = Clock::now();
+ManifestFacts factsOf(const BakeSettings& settings, const PreparedBake& prepared, const BakedOutputs& outputs,
+                            const std::string& toolVersion, bool lobeTableFile) {
+    return {toolVersion,           outputs.device,  &prepared.input, &settings,        prepared.size,     prepared.mips,
+            &outputs.sh,           nullptr,         outputs.previewExposure, &prepared.plan, &outputs.lights,
+            outputs.lightLevel,    lobeTableFile};
+}
+
+// The cubes from the kit's frame into the profile's, as its files hold them.
+void arrangeCubes(const BakeSettings& settings, BakedOutputs& outputs) {
+    const auto& profile = resolvedProfile(settings);
+    for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
+        if (*texture && (*texture)->faces == 6)
+            profiles::arrangeCube(profile.frame, (*texture)->values, (*texture)->size, (*texture)->mips,
+                                  image_io::channelCount((*texture)->format));
+}
+
+} // namespace
+
+PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress) {
+    PreparedBake prepared;
+    prepared.started = Clock::now();
     validateSettings(settings);
+    if (destination == BakeDestination::Folder && settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     // A scene that cannot be read fails before any device work.
     const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene)) : std::nullopt;
-    BakeDirectory directory(settings.outputDir, settings.environment);
+    if (destination == BakeDestination::Folder)
+        prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
 
     progress.begin("load");
-    const auto input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
-    const uint32_t size = resolvedSize(settings, input.cubeSize);
-    if (!std::has_single_bit(size))
-        throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", size, size));
-    const uint32_t mips = resolvedMips(settings, size);
-    const auto plan = planBake(settings, size, scene);
+    prepared.input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
+    prepared.size = resolvedSize(settings, prepared.input.cubeSize);
+    if (!std::has_single_bit(prepared.size))
+        throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", prepared.size,
+                                    prepared.size));
+    prepared.mips = resolvedMips(settings, prepared.size);
+    prepared.plan = planBake(settings, prepared.size, scene);
     progress.end();
 
-    std::optional<cache::ContentStore> store;
-    if (settings.cache) store.emplace(*settings.cache);
-    auto outputs = bakeOutputs(settings, input, size, plan, toolVersion, progress, store ? &*store : nullptr);
+    if (settings.cache) prepared.store.emplace(*settings.cache);
+    return prepared;
+}
 
+ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
+                         BakeProgress& progress) {
+    auto* store = prepared.store ? &*prepared.store : nullptr;
+    ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store), {}, {}};
+    auto& outputs = maps.outputs;
+    const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
+    maps.shadingRecord = shadingJson(facts).dump();
+    if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = maps.shadingRecord;
+    arrangeCubes(settings, outputs);
+    if (store && !settings.context.validation) maps.cache = store->counts();
+    return maps;
+}
+
+BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, ComputedMaps maps,
+                      const std::string& toolVersion, BakeProgress& progress) {
+    auto& outputs = maps.outputs;
     progress.begin("write");
-    const bool lobeTableFile = outputs.lobeTable.has_value();
-    const ManifestFacts facts{toolVersion, outputs.device, &input, &settings, size, mips, &outputs.sh, nullptr,
-                              outputs.previewExposure, &plan, &outputs.lights, outputs.lightLevel, lobeTableFile};
-    if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = shadingJson(facts).dump();
+    const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture) textures.push_back(std::move(**texture));
-    const auto& profile = resolvedProfile(settings);
-    for (auto& texture : textures)
-        if (texture.faces == 6)
-            profiles::arrangeCube(profile.frame, texture.values, texture.size, texture.mips, image_io::channelCount(texture.format));
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));
     const std::string writer = "iblkit " + toolVersion;
+    const auto& folder = prepared.directory->staging();
     std::vector<WrittenFile> files;
     for (const auto& texture : textures)
-        for (auto& file : writeTexture(directory.staging(), texture, settings, writer)) files.push_back(std::move(file));
-    files.push_back(writeBytes(directory.staging(), "preview.png", std::as_bytes(std::span(outputs.previewPng))));
+        for (auto& file : writeTexture(folder, texture, settings, writer)) files.push_back(std::move(file));
+    files.push_back(writeBytes(folder, "preview.png", std::as_bytes(std::span(outputs.previewPng))));
     if (!outputs.lights.empty()) {
         const auto gltf = lightsGltf(outputs.lights, writer);
-        files.push_back(writeBytes(directory.staging(), "lights.gltf", std::as_bytes(std::span(gltf))));
+        files.push_back(writeBytes(folder, "lights.gltf", std::as_bytes(std::span(gltf))));
     }
 
     auto manifestFacts = facts;
@@ -70,16 +97,21 @@ BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& too
     auto manifest = bakeManifest(manifestFacts);
     manifest["files"] = filesJson(files);
     const std::string manifestText = manifest.dump(2) + "\n";
-    files.push_back(writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText))));
-    directory.commit();
+    files.push_back(writeBytes(folder, "manifest.json", std::as_bytes(std::span(manifestText))));
+    prepared.directory->commit();
     progress.end();
 
-    const double wall = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
-    BakeSummary summary{settings.outputDir, outputs.device, progress.steps(), wall, files,
-                        outputs.sh.shRadiance, clamps, input.sanitizedTexels, input.negative, {}, outputs.cacheWarnings,
-                        outputs.compiledKernels, outputs.pipelineCacheBytes};
-    if (store && !settings.context.validation) summary.cache = store->counts();
-    return summary;
+    const double wall = std::chrono::duration<double, std::milli>(Clock::now() - prepared.started).count();
+    const auto& input = prepared.input;
+    return {settings.outputDir, outputs.device, progress.steps(), wall, files, outputs.sh.shRadiance, clamps,
+            input.sanitizedTexels, input.negative, maps.cache, outputs.cacheWarnings, outputs.compiledKernels,
+            outputs.pipelineCacheBytes};
+}
+
+BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
+    auto prepared = prepareBake(settings, BakeDestination::Folder, progress);
+    auto maps = computeMaps(settings, prepared, toolVersion, progress);
+    return writeBake(settings, prepared, std::move(maps), toolVersion, progress);
 }
 
 } // namespace iblkit::bake

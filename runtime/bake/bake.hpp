@@ -1,7 +1,11 @@
 #pragma once
 
+#include "bake_directory.hpp"
 #include "bake_outputs.hpp"
+#include "bake_plan.hpp"
+#include "baked_outputs.hpp"
 #include "content_store.hpp"
+#include "environment_input.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
@@ -10,7 +14,9 @@
 #include <glm/vec3.hpp>
 
 #include <array>
-
+#include <chrono>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,8 +41,40 @@ struct BakeSummary {
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,
 // irradiance.ktx2, preview.png and manifest.json (and .dds / exr/ when asked), all or nothing;
 // with settings.scene, only what its materials need (bake_plan.hpp); with settings.cache, each
-// output the cache holds is taken from it (baked_outputs.hpp).
+// output the cache holds is taken from it (baked_outputs.hpp). The three steps below, in order.
 // Throws BakeError, image_io::ImageError, compiler::CompileError or vulkan::VulkanError.
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress);
+
+// The steps of a bake, apart for the library's façade (runtime/api/): it keeps the maps in memory
+// without a folder, and tells a refusal of what was asked (prepareBake) from a bake that failed.
+enum class BakeDestination { Folder, Memory };
+
+// What a bake asked and read, before any device work.
+struct PreparedBake {
+    std::chrono::steady_clock::time_point started;
+    std::unique_ptr<BakeDirectory> directory; // the output folder claimed; none for a bake kept in memory
+    EnvironmentInput input;
+    uint32_t size = 0, mips = 0;
+    BakePlan plan;
+    std::optional<cache::ContentStore> store; // settings.cache's
+};
+
+// The settings checked, the output folder claimed (for a Folder), the scene and the environment
+// read, the plan made, the cache opened: every refusal of what was asked comes from here.
+PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress);
+
+// The maps as the files hold them before their 16-bit rounding and the half-range policy: the
+// cubes in the profile's frame, the specular's "iblkit.shading" key set.
+struct ComputedMaps {
+    BakedOutputs outputs;
+    std::string shadingRecord; // shadingJson, compact, as specular.ktx2's "iblkit.shading"
+    cache::ContentStore::Counts cache; // zeros without a cache or with validation on
+};
+ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
+                         BakeProgress& progress);
+
+// Writes the maps into the claimed folder, all or nothing.
+BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, ComputedMaps maps,
+                      const std::string& toolVersion, BakeProgress& progress);
 
 } // namespace iblkit::bake

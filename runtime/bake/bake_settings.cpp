@@ -143,7 +143,6 @@ void validateSettings(const BakeSettings& settings) {
                      kernels::maxLutSamplesOf(settings.lutMethod));
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
-    if (settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     if (settings.size) resolvedMips(settings, *settings.size); // the chain of an input cube is checked once it is read
 }
 

@@ -83,7 +83,7 @@ uint32_t resolvedLutSamples(const BakeSettings& settings);
 const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings);
 // The recipe: the setting's, the profile's, or the method's default.
 const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings);
-// Throws BakeError naming the first setting out of range.
+// Throws BakeError naming the first setting out of range (the output folder is prepareBake's).
 void validateSettings(const BakeSettings& settings);
 // The roughness of every mip of a `mips` chain from a `size` face, by the recipe's schedule.
 std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_t mips, uint32_t size);

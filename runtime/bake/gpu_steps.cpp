@@ -21,10 +21,9 @@ namespace {
 using kernels::Kernel;
 using kernels::KernelRole;
 
-const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
 
 vulkan::Image makeCube(const vulkan::VulkanContext& context, const std::string& name, uint32_t size, uint32_t mips) {
-    return vulkan::Image(context, {name, &rgba32(), size, size, 6, mips, true, true});
+    return vulkan::Image(context, {name, &vulkan::rgba32Float(), size, size, 6, mips, true, true});
 }
 
 // The kernel's device time so far goes to the progress step.
@@ -43,7 +42,7 @@ void renderSky(const vulkan::VulkanContext& context, vulkan::Image& cube, BakePr
 
 void convertPanorama(const vulkan::VulkanContext& context, const image_io::FloatImage& panorama, vulkan::Image& cube,
                      BakeProgress& progress) {
-    vulkan::Image equirect(context, {"Equirect", &rgba32(), panorama.width, panorama.height, 1, 1, false, false});
+    vulkan::Image equirect(context, {"Equirect", &vulkan::rgba32Float(), panorama.width, panorama.height, 1, 1, false, false});
     equirect.upload(context, image_io::rgbaValues(panorama));
     auto kernel = makeKernel(context, KernelRole::EquirectToCube);
     kernels::runEquirectToCube(kernel, equirect, cube, {supersampleFor(panorama.width, cube.desc().width)});
@@ -173,7 +172,7 @@ Preview renderPreview(const vulkan::VulkanContext& context, kernels::Kernel& ker
     progress.begin("preview");
     const uint32_t width = kPreviewColumns * kPreviewCellSize, mips = maps.specular.desc().mips;
     const uint32_t panelWidth = width / mips, height = kPreviewRows * kPreviewCellSize + panelWidth / 2;
-    vulkan::Image image(context, {"Preview", &rgba32(), width, height, 1, 1, false, true});
+    vulkan::Image image(context, {"Preview", &vulkan::rgba32Float(), width, height, 1, 1, false, true});
     const vulkan::Sampler linear(context, {});
     kernels::runPreview(kernel, {maps.specular, maps.irradiance, maps.brdfLut, maps.lobeTable, maps.lights, linear, image},
                         {kPreviewColumns, kPreviewRows, kPreviewCellSize, mips, panelWidth, exposure, maps.recipe});

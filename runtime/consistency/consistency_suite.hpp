@@ -6,6 +6,7 @@
 #include "vulkan_context.hpp"
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,8 @@ struct SuiteOptions {
     // The shaders under test, by their name in the manifest: every kernel of hlsl/shaders.json,
     // or the same from a copy that a test has broken.
     std::map<std::string, compiler::CompileOptions> shaders;
+    // The kernels whose outputs the suite runs, by name; empty: every kernel.
+    std::set<std::string> kernels;
 };
 
 // The options the suite runs every kernel with: the manifest's (or, when there is no such file,

@@ -38,7 +38,7 @@ PyramidTexels pyramidTexels(const reference::ClusterPyramid<float>& pyramid) {
 void addClusterOutput(SuiteRun& run, const MippedCube& cube, const reference::ClusterPyramid<float>& inFloat,
                       const reference::ClusterPyramid<double>& inDouble) {
     addOutput(run, {"ClusterCubeCS", fmt::format("energy, centroid, geometry pyramids of {}²", cube.size), clusterBounds()},
-              {flattened(inFloat), flattened(inDouble)},
+              [&] { return References{flattened(inFloat), flattened(inDouble)}; },
               [&](const PathProgram& program) { return gpuClusterPyramid(run.vulkan, program, cube); },
               [&](const OpenGlForm& form) { return glClusterPyramid(run.gl, form, cube); });
 }
@@ -57,8 +57,8 @@ void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>&
     const auto output = fmt::format("{}² at roughness {} from the {}² pyramid, {} terms per texel{}", outSize, roughness,
                                     inFloat.size, options.convolutionBudget, weighting ? ", lobe weighted by G1" : "");
     addOutput(run, {"PrefilterConvolutionCS", output, convolutionBounds()},
-              {reference::convolvePrefilter(inFloat, roughness, outSize, tree),
-               reference::convolvePrefilter(inDouble, double(roughness), outSize, tree)},
+              [&] { return References{reference::convolvePrefilter(inFloat, roughness, outSize, tree),
+               reference::convolvePrefilter(inDouble, double(roughness), outSize, tree)}; },
               [&](const PathProgram& program) {
                   return gpuPrefilterConvolution(run.vulkan, program, pyramid, outSize, parameters);
               },
@@ -68,6 +68,7 @@ void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>&
 } // namespace
 
 void addConvolutionOutputs(SuiteRun& run) {
+    if (!run.runs("ClusterCubeCS") && !run.runs("PrefilterConvolutionCS")) return;
     const auto cube = environmentCube(run.options.environment, run.options.convolutionSize, 1);
     const auto inFloat = reference::clusterPyramid<float>(cube.texels, cube.size);
     const auto inDouble = reference::clusterPyramid<double>(cube.texels, cube.size);

@@ -40,7 +40,7 @@ std::vector<double> rgbaWithAlphaOne(const std::vector<glm::dvec3>& texels) {
 void addSkyOutput(SuiteRun& run) {
     const uint32_t size = run.options.cubeSize, supersample = run.options.supersample;
     addOutput(run, {"SkyCubeCS", fmt::format("built-in environment → {}², {}² evaluations", size, supersample), skyBounds()},
-              {reference::skyCube<float>(size, supersample), reference::skyCube<double>(size, supersample)},
+              [&] { return References{reference::skyCube<float>(size, supersample), reference::skyCube<double>(size, supersample)}; },
               [&](const PathProgram& program) { return gpuSkyCube(run.vulkan, program, size, supersample); },
               [&](const OpenGlForm& form) { return glSkyCube(run.gl, form, size, supersample); });
 }
@@ -54,13 +54,14 @@ void addEquirectOutput(SuiteRun& run) {
     };
     const auto output = fmt::format("panorama {}×{} → {}², {}² reads", panorama.width, panorama.height, size, supersample);
     addOutput(run, {"EquirectToCubeCS", output, equirectBounds()},
-              {reference(0.f), reference(0.0)},
+              [&] { return References{reference(0.f), reference(0.0)}; },
               [&](const PathProgram& program) { return gpuEquirectToCube(run.vulkan, program, panorama, size, supersample); },
               [&](const OpenGlForm& form) { return glEquirectToCube(run.gl, form, panorama, size, supersample); });
 }
 
 // Each mip of the double reference is reference::downsampleCube of the one above.
 void addDownsampleOutput(SuiteRun& run, const MippedCube& cube) {
+    if (!run.runs("DownsampleCubeCS")) return;
     References references;
     std::vector<float> level(cube.mip(0).begin(), cube.mip(0).end());
     for (uint32_t mip = 1; mip < cube.mips; ++mip) {
@@ -70,7 +71,7 @@ void addDownsampleOutput(SuiteRun& run, const MippedCube& cube) {
         references.inDouble.insert(references.inDouble.end(), level.begin(), level.end());
     }
     addOutput(run, {"DownsampleCubeCS", fmt::format("mips 1–{} of {}²", cube.mips - 1, cube.size), downsampleBounds()},
-              references, [&](const PathProgram& program) { return gpuDownsampleChain(run.vulkan, program, cube); },
+              [&] { return references; }, [&](const PathProgram& program) { return gpuDownsampleChain(run.vulkan, program, cube); },
               [&](const OpenGlForm& form) { return glDownsampleChain(run.gl, form, cube); });
 }
 
@@ -80,8 +81,8 @@ void addShOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
     const auto inFloat = reference::projectOnShInFloat(texels, cube.mipSize(mip));
     const auto output = fmt::format("SH of mip {} ({}²): 27 coefficients, solid angle", mip, cube.mipSize(mip));
     addOutput(run, {"ShProjectCS", output, shBounds()},
-              {flattened(inFloat.radiance, inFloat.solidAngle),
-               flattenedInDouble(reference::projectOnSh(texels, cube.mipSize(mip)), 4 * std::numbers::pi)},
+              [&] { return References{flattened(inFloat.radiance, inFloat.solidAngle),
+               flattenedInDouble(reference::projectOnSh(texels, cube.mipSize(mip)), 4 * std::numbers::pi)}; },
               [&](const PathProgram& program) {
                   const auto projection = gpuShProject(run.vulkan, program, cube, mip);
                   return flattened(projection.radiance, projection.solidAngle);
@@ -94,14 +95,15 @@ void addShOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
 
 // The moments of mip `mip`, each summed from its texels of the mip above (a 1² cube's from itself).
 void addIrradianceOutput(SuiteRun& run, const MippedCube& cube, uint32_t mip) {
+    if (!run.runs("IrradianceCubeCS")) return;
     const uint32_t fineMip = mip > 0 ? mip - 1 : 0;
     const auto source = cube.mip(fineMip);
     const uint32_t size = cube.mipSize(mip), outSize = run.options.irradianceSize;
     const auto moments = reference::irradianceMoments({source.begin(), source.end()}, cube.mipSize(fineMip), size);
     const auto output = fmt::format("irradiance {}² from the moments of mip {} ({}²)", outSize, mip, size);
     addOutput(run, {"IrradianceCubeCS", output, irradianceBounds()},
-              {reference::irradianceCubeInFloat(moments, size, outSize),
-               rgbaWithAlphaOne(reference::irradianceFromMoments(moments, size, outSize))},
+              [&] { return References{reference::irradianceCubeInFloat(moments, size, outSize),
+               rgbaWithAlphaOne(reference::irradianceFromMoments(moments, size, outSize))}; },
               [&](const PathProgram& program) { return gpuIrradianceCube(run.vulkan, program, moments, size, outSize); },
               [&](const OpenGlForm& form) { return glIrradianceCube(run.gl, form, moments, size, outSize); });
 }
@@ -122,6 +124,7 @@ void addCubeOutputs(SuiteRun& run) {
 
 // No C++ reference (see boundsRationale): the paths are compared with path a.
 void addPreviewOutput(SuiteRun& run) {
+    if (!run.runs("PreviewCS")) return;
     const auto& options = run.options;
     const auto inputs = previewInputs(options.environment, options.previewColumns, options.previewRows, options.previewCellSize, options.cubeSize,
                                       options.chunkLutSize, options.sampleCount);

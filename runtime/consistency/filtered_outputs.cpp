@@ -25,8 +25,8 @@ void addRingOutput(SuiteRun& run, const MippedCube& cube, const reference::Mippe
     addOutput(run, {"PrefilterRingCS", fmt::format("prefilter {}² r={}, a read along N and {} around it", size, roughness,
                                                    kSuiteRingReads),
                     ringBounds()},
-              {reference::referenceRingPrefilter<float>(source, ring, kSuiteRingReads, size),
-               reference::referenceRingPrefilter<double>(source, ring, kSuiteRingReads, size)},
+              [&] { return References{reference::referenceRingPrefilter<float>(source, ring, kSuiteRingReads, size),
+               reference::referenceRingPrefilter<double>(source, ring, kSuiteRingReads, size)}; },
               [&](const PathProgram& program) {
                   return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
                       kernels::runPrefilterRing(kernel, envMap, sampler, out, 0, parameters);
@@ -45,8 +45,8 @@ void addFilteredOutputs(SuiteRun& run) {
     for (const float roughness : options.roughnesses) {
         addOutput(run, {"PrefilterFilteredCS", fmt::format("prefilter {}² r={} from every mip", size, roughness),
                         filteredBounds()},
-                  {reference::referenceFilteredPrefilter<float>(source, roughness, size, samples),
-                   reference::referenceFilteredPrefilter<double>(source, double(roughness), size, samples)},
+                  [&] { return References{reference::referenceFilteredPrefilter<float>(source, roughness, size, samples),
+                   reference::referenceFilteredPrefilter<double>(source, double(roughness), size, samples)}; },
                   [&](const PathProgram& program) {
                       return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
                           kernels::runPrefilter(kernel, envMap, sampler, out, 0, {roughness});
@@ -58,16 +58,16 @@ void addFilteredOutputs(SuiteRun& run) {
         const auto table = reference::prefilterSampleTable(roughness, samples, cube.size);
         addOutput(run, {"PrefilterTableCS", fmt::format("prefilter {}² r={}, {} table samples", size, roughness, table.size()),
                         tableBounds()},
-                  {reference::referenceTablePrefilter<float>(source, table, size),
-                   reference::referenceTablePrefilter<double>(source, table, size)},
+                  [&] { return References{reference::referenceTablePrefilter<float>(source, table, size),
+                   reference::referenceTablePrefilter<double>(source, table, size)}; },
                   [&](const PathProgram& program) { return gpuTablePrefilter(run.vulkan, program, cube, table, size); },
                   [&](const OpenGlForm& form) { return glTablePrefilter(run.gl, form, cube, table, size); });
         const auto reads = reference::fitPyramidReads(roughness, kSuitePyramidReads, cube.size);
         const auto parameters = kernels::pyramidParameters(reads, kSuitePyramidReads);
         addOutput(run, {"PrefilterPyramidCS", fmt::format("prefilter {}² r={}, {} pyramid reads", size, roughness, reads.size()),
                         pyramidBounds()},
-                  {reference::referencePyramidPrefilter<float>(source, reads, size),
-                   reference::referencePyramidPrefilter<double>(source, reads, size)},
+                  [&] { return References{reference::referencePyramidPrefilter<float>(source, reads, size),
+                   reference::referencePyramidPrefilter<double>(source, reads, size)}; },
                   [&](const PathProgram& program) {
                       return gpuMippedPrefilter(run.vulkan, program, cube, size, [&](auto& kernel, auto& envMap, auto& sampler, auto& out) {
                           kernels::runPrefilterPyramid(kernel, envMap, sampler, out, 0, parameters);

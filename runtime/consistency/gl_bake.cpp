@@ -37,8 +37,6 @@ opengl::GlObject bindImage(const opengl::EglContext& context, const OpenGlForm& 
 }
 
 size_t lutValues(uint32_t size) { return size_t(size) * size * 2; }
-size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
-
 } // namespace
 
 OpenGlForm openGlForm(const compiler::CompileOptions& options) {
@@ -61,7 +59,7 @@ std::vector<float> glPrefilter(const opengl::EglContext& context, const OpenGlFo
     const auto prefiltered = bindImage(context, form, "Prefiltered", size, true);
     const auto parameters = glpath::bindParameters(context, form, kernels::PrefilterParameters{roughness}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 std::vector<float> glBrdfLutChunks(const opengl::EglContext& context, const OpenGlForm& form, uint32_t size,
@@ -88,7 +86,7 @@ std::vector<float> glPrefilterChunks(const opengl::EglContext& context, const Op
         const auto parameters = glpath::bindParameters(context, form, chunkParameters.members());
         glpath::dispatch(context, program, form, {size, size, 6});
     });
-    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 } // namespace iblkit::consistency

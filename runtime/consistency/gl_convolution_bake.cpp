@@ -7,12 +7,10 @@
 namespace iblkit::consistency {
 namespace {
 
-size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
-
 void appendLevels(const opengl::EglContext& context, const opengl::GlObject& texture, uint32_t size,
                   std::vector<float>& values) {
     for (uint32_t level = 0; (size >> level) > 0; ++level) {
-        const auto texels = glpath::readTexture(context, texture, level, GL_RGBA, cubeValues(size >> level));
+        const auto texels = glpath::readTexture(context, texture, level, GL_RGBA, glpath::cubeValueCount(size >> level));
         values.insert(values.end(), texels.begin(), texels.end());
     }
 }
@@ -58,7 +56,7 @@ std::vector<float> glPrefilterConvolution(const opengl::EglContext& context, con
     glpath::bindLayeredImage(context, form, "Prefiltered", target, 0);
     const auto bound = glpath::bindParameters(context, form, parameters.members());
     glpath::dispatch(context, program, form, {outSize, outSize, 6});
-    return glpath::readTexture(context, target, 0, GL_RGBA, cubeValues(outSize));
+    return glpath::readTexture(context, target, 0, GL_RGBA, glpath::cubeValueCount(outSize));
 }
 
 } // namespace iblkit::consistency

@@ -7,8 +7,6 @@
 namespace iblkit::consistency {
 namespace {
 
-size_t cubeValues(uint32_t size) { return size_t(size) * size * 6 * 4; }
-
 // EnvMap: `cube` with its whole chain, read through a trilinear sampler. A shader that also
 // asks EnvMap its size reads it through a second unit, the texture alone ("EnvMap").
 struct BoundMippedEnvironment {
@@ -33,7 +31,7 @@ std::vector<float> glSkyCube(const opengl::EglContext& context, const OpenGlForm
     glpath::bindLayeredImage(context, form, "Cube", cube, 0);
     const auto parameters = glpath::bindParameters(context, form, kernels::SupersampleParameters{supersample}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, cube, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 std::vector<float> glEquirectToCube(const opengl::EglContext& context, const OpenGlForm& form, const Panorama& panorama,
@@ -45,7 +43,7 @@ std::vector<float> glEquirectToCube(const opengl::EglContext& context, const Ope
     glpath::bindLayeredImage(context, form, "Cube", cube, 0);
     const auto parameters = glpath::bindParameters(context, form, kernels::SupersampleParameters{supersample}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, cube, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, cube, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 // Each mip reads the one above from the texture unit and writes its own level as an image.
@@ -61,7 +59,7 @@ std::vector<float> glDownsampleChain(const opengl::EglContext& context, const Op
         glpath::bindLayeredImage(context, form, "Destination", texture, mip);
         const auto parameters = glpath::bindParameters(context, form, kernels::SourceMipParameters{mip - 1}.members());
         glpath::dispatch(context, program, form, {cube.mipSize(mip), cube.mipSize(mip), 6});
-        const auto level = glpath::readTexture(context, texture, mip, GL_RGBA, cubeValues(cube.mipSize(mip)));
+        const auto level = glpath::readTexture(context, texture, mip, GL_RGBA, glpath::cubeValueCount(cube.mipSize(mip)));
         chain.insert(chain.end(), level.begin(), level.end());
     }
     return chain;
@@ -89,7 +87,7 @@ std::vector<float> glIrradianceCube(const opengl::EglContext& context, const Ope
     glpath::bindLayeredImage(context, form, "Irradiance", irradiance, 0);
     const auto parameters = glpath::bindParameters(context, form, kernels::IrradianceParameters{momentSize}.members());
     glpath::dispatch(context, program, form, {outSize, outSize, 6});
-    return glpath::readTexture(context, irradiance, 0, GL_RGBA, cubeValues(outSize));
+    return glpath::readTexture(context, irradiance, 0, GL_RGBA, glpath::cubeValueCount(outSize));
 }
 
 std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
@@ -100,7 +98,7 @@ std::vector<float> glMippedPrefilter(const opengl::EglContext& context, const Op
     glpath::bindLayeredImage(context, form, "Prefiltered", prefiltered, 0);
     const auto parameters = glpath::bindParameters(context, form, values);
     glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 std::vector<float> glTablePrefilter(const opengl::EglContext& context, const OpenGlForm& form, const MippedCube& cube,
@@ -114,7 +112,7 @@ std::vector<float> glTablePrefilter(const opengl::EglContext& context, const Ope
     const auto parameters =
         glpath::bindParameters(context, form, kernels::PrefilterTableParameters{uint32_t(table.size())}.members());
     glpath::dispatch(context, program, form, {size, size, 6});
-    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, cubeValues(size));
+    return glpath::readTexture(context, prefiltered, 0, GL_RGBA, glpath::cubeValueCount(size));
 }
 
 GlShadingMaps bindShadingMaps(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {

@@ -13,6 +13,9 @@
 // dispatch, read back. Textures are RGBA32F unless a format is named.
 namespace iblkit::consistency::glpath {
 
+// The floats of one level of an RGBA cube of `size`² faces.
+inline size_t cubeValueCount(uint32_t size) { return size_t(size) * size * 6 * 4; }
+
 // The slot the GLSL form gives an HLSL resource ("EnvMap+EnvMapSampler" for a combined one).
 GLuint slotOf(const OpenGlForm& form, const std::string& resource);
 

@@ -6,11 +6,10 @@
 namespace iblkit::consistency {
 namespace {
 
-const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
 const vulkan::TexelFormat& rg32() { return vulkan::texelFormatNamed("R32G32_SFLOAT"); }
 
 vulkan::Image uploadEnvironment(const vulkan::VulkanContext& context, const reference::CubeEnvironment& environment) {
-    vulkan::Image envMap(context, {"EnvMap", &rgba32(), environment.size(), environment.size(), 6, 1, true, false});
+    vulkan::Image envMap(context, {"EnvMap", &vulkan::rgba32Float(), environment.size(), environment.size(), 6, 1, true, false});
     envMap.upload(context, environment.texels());
     return envMap;
 }
@@ -29,7 +28,7 @@ std::vector<float> gpuPrefilter(const vulkan::VulkanContext& context, const Path
     kernels::Kernel kernel(context, program);
     auto envMap = uploadEnvironment(context, environment);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    vulkan::Image prefiltered(context, {"Prefiltered", &vulkan::rgba32Float(), size, size, 6, 1, false, true});
     kernels::runPrefilter(kernel, envMap, linear, prefiltered, 0, {roughness});
     return prefiltered.download(context);
 }
@@ -48,7 +47,7 @@ std::vector<float> gpuPrefilterChunks(const vulkan::VulkanContext& context, cons
     kernels::Kernel kernel(context, program);
     auto envMap = uploadEnvironment(context, environment);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image prefiltered(context, {"Prefiltered", &rgba32(), size, size, 6, 1, false, true});
+    vulkan::Image prefiltered(context, {"Prefiltered", &vulkan::rgba32Float(), size, size, 6, 1, false, true});
     kernels::runPrefilterChunked(kernel, envMap, linear, prefiltered, 0, roughness, samples, chunk);
     return prefiltered.download(context);
 }

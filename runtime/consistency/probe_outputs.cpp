@@ -41,21 +41,21 @@ void addProbeOutputs(SuiteRun& run) {
     addOutput(run, {"PbrProbeCS", fmt::format("D, G, F, the GGX sample, Hammersley, IntegrateBRDF at {} arguments",
                                               arguments.values.size()),
                     pbrProbeBounds()},
-              {pbrProbeReference<float>(arguments), pbrProbeReference<double>(arguments)},
+              [&] { return References{pbrProbeReference<float>(arguments), pbrProbeReference<double>(arguments)}; },
               [&](const PathProgram& program) { return gpuProbe(run.vulkan, program, arguments, kPbrProbeResults); },
               [&](const OpenGlForm& form) { return glProbe(run.gl, form, arguments, kPbrProbeResults); });
     arguments.sampleIndices.clear();
     for (auto& value : arguments.values) value.z = 1.f - value.x; // exact for these N.V
     addOutput(run, {"LutProbeCS", fmt::format("the quadrature LUT at {} arguments", arguments.values.size()),
                     lutProbeBounds()},
-              {lutProbeReference<float>(arguments), lutProbeReference<double>(arguments)},
+              [&] { return References{lutProbeReference<float>(arguments), lutProbeReference<double>(arguments)}; },
               [&](const PathProgram& program) { return gpuProbe(run.vulkan, program, arguments, kLutProbeResults); },
               [&](const OpenGlForm& form) { return glProbe(run.gl, form, arguments, kLutProbeResults); });
     const auto bsdf = bsdfArguments();
     addOutput(run, {"BsdfProbeCS", fmt::format("the path tracer's BRDF, BTDF, BSDF, D, G, sampling and lights at {} "
                                                "arguments", bsdf.values.size()),
                     bsdfProbeBounds()},
-              {bsdfProbeReference<float>(bsdf), bsdfProbeReference<double>(bsdf)},
+              [&] { return References{bsdfProbeReference<float>(bsdf), bsdfProbeReference<double>(bsdf)}; },
               [&](const PathProgram& program) { return gpuProbe(run.vulkan, program, bsdf, kBsdfProbeResults); },
               [&](const OpenGlForm& form) { return glProbe(run.gl, form, bsdf, kBsdfProbeResults); });
 }

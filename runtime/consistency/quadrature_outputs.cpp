@@ -16,7 +16,7 @@ namespace iblkit::consistency {
 void addQuadratureLutOutput(SuiteRun& run) {
     const uint32_t size = run.options.quadratureLutSize, nodes = kernels::kDefaultQuadratureNodes;
     addOutput(run, {"BrdfLutQuadratureCS", fmt::format("LUT {}², {} nodes per panel", size, nodes), quadratureLutBounds()},
-              {reference::brdfLutQuadrature<float>(size, nodes), reference::brdfLutQuadrature<double>(size, nodes)},
+              [&] { return References{reference::brdfLutQuadrature<float>(size, nodes), reference::brdfLutQuadrature<double>(size, nodes)}; },
               [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
               [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
 }
@@ -31,8 +31,8 @@ void addFitLutOutput(SuiteRun& run) {
         coefficientsInDouble.emplace_back(coefficients.back());
     }
     addOutput(run, {"BrdfLutFitCS", fmt::format("LUT {}², a polynomial of degree {}", size, degree), lutFitBounds()},
-              {reference::brdfLutFromFit<float>(size, coefficients),
-               reference::brdfLutFromFit<double>(size, coefficientsInDouble)},
+              [&] { return References{reference::brdfLutFromFit<float>(size, coefficients),
+               reference::brdfLutFromFit<double>(size, coefficientsInDouble)}; },
               [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
               [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
 }
@@ -41,7 +41,7 @@ void addGridLutOutputs(SuiteRun& run) {
     const uint32_t gridSize = run.options.lutGridSize, size = run.options.quadratureLutSize;
     const uint32_t nodes = kernels::kDefaultQuadratureNodes;
     addOutput(run, {"BrdfLutGridCS", fmt::format("LUT grid {}², {} nodes per panel", gridSize, nodes), lutGridBounds()},
-              {reference::brdfLutGridNodes<float>(gridSize, nodes), reference::brdfLutGridNodes<double>(gridSize, nodes)},
+              [&] { return References{reference::brdfLutGridNodes<float>(gridSize, nodes), reference::brdfLutGridNodes<double>(gridSize, nodes)}; },
               [&](const PathProgram& program) { return gpuBrdfLutGrid(run.vulkan, program, gridSize); },
               [&](const OpenGlForm& form) { return glBrdfLutGrid(run.gl, form, gridSize); });
     // Every path resamples the same grid (the double nodes, rounded to float), so that the row
@@ -50,8 +50,8 @@ void addGridLutOutputs(SuiteRun& run) {
     const std::vector<float> grid(nodesInDouble.begin(), nodesInDouble.end());
     const std::vector<double> gridInDouble(grid.begin(), grid.end());
     addOutput(run, {"BrdfLutResampleCS", fmt::format("LUT {}² from a {}² grid", size, gridSize), lutResampleBounds()},
-              {reference::resampleBrdfLutGrid<float>(grid, gridSize, size),
-               reference::resampleBrdfLutGrid<double>(gridInDouble, gridSize, size)},
+              [&] { return References{reference::resampleBrdfLutGrid<float>(grid, gridSize, size),
+               reference::resampleBrdfLutGrid<double>(gridInDouble, gridSize, size)}; },
               [&](const PathProgram& program) { return gpuBrdfLutResample(run.vulkan, program, grid, gridSize, size); },
               [&](const OpenGlForm& form) { return glBrdfLutResample(run.gl, form, grid, gridSize, size); });
 }

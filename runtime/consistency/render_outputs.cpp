@@ -22,7 +22,6 @@ namespace {
 
 constexpr uint32_t kCellSize = 8, kSamples = 16, kSeed = 3;
 
-const vulkan::TexelFormat& rgba32() { return vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"); }
 
 const render::SphereGrid& grid() { return render::defaultSphereGrid(); }
 
@@ -65,15 +64,15 @@ ReferenceInputs referenceInputs(const SuiteOptions& options) {
 // The radiance sums, then the sums of squares.
 std::vector<float> gpuReference(const vulkan::VulkanContext& context, const PathProgram& program, const ReferenceInputs& inputs) {
     kernels::Kernel kernel(context, program);
-    vulkan::Image environment(context, {"Environment", &rgba32(), inputs.environment.size, inputs.environment.size, 6,
+    vulkan::Image environment(context, {"Environment", &vulkan::rgba32Float(), inputs.environment.size, inputs.environment.size, 6,
                                         inputs.environment.mips, false, false});
     environment.upload(context, inputs.environment.texels);
     const auto cdf = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.cdf)), "EnvironmentCdf");
     const auto lights = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.lights)), "Lights");
     const auto pixels = vulkan::storageBuffer(context, std::as_bytes(std::span(inputs.pixels)), "ActivePixels");
     const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
-    vulkan::Image sums(context, {"RadianceSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
-    vulkan::Image squares(context, {"SquareSum", &rgba32(), inputs.width, inputs.height, 1, 1, false, true});
+    vulkan::Image sums(context, {"RadianceSum", &vulkan::rgba32Float(), inputs.width, inputs.height, 1, 1, false, true});
+    vulkan::Image squares(context, {"SquareSum", &vulkan::rgba32Float(), inputs.width, inputs.height, 1, 1, false, true});
     const std::vector<float> zeros(sums.valueCount(), 0.f);
     sums.upload(context, zeros);
     squares.upload(context, zeros);
@@ -120,7 +119,7 @@ std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathP
     kernels::Kernel kernel(context, program);
     auto maps = uploadShadingMaps(context, inputs);
     const vulkan::Sampler linear(context, {});
-    vulkan::Image image(context, {"SplitSum", &rgba32(), gridWidth(), gridHeight(), 1, 1, false, true});
+    vulkan::Image image(context, {"SplitSum", &vulkan::rgba32Float(), gridWidth(), gridHeight(), 1, 1, false, true});
     const auto spheres = vulkan::storageBuffer(context, std::as_bytes(std::span(sphereMaterials())), "Spheres");
     auto glass = bake::glassTables(context, shading::defaultRecipe().glass.transmission);
     kernels::runRenderSplitSum(kernel, {spheres, maps.specular, maps.irradiance, maps.lut, maps.lobeTable, glass.transmission,
@@ -161,6 +160,8 @@ std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlFor
 } // namespace
 
 void addRenderOutputs(SuiteRun& run) {
+    if (!run.runs("RenderReferenceCS") && !run.runs("RenderReferenceSplitSumMaterialCS") && !run.runs("SplitSumSpheresCS"))
+        return;
     const auto& options = run.options;
     const auto reference = referenceInputs(options);
     const auto output = fmt::format("{}×{} spheres, {} paths a pixel, radiance and square sums", reference.width,

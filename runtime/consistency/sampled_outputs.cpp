@@ -11,8 +11,8 @@ void addSampledLutOutputs(SuiteRun& run) {
     const auto& options = run.options;
     for (const uint32_t size : options.lutSizes) {
         addOutput(run, {"PrecomputedBrdfCS", fmt::format("LUT {}²", size), lutBounds(size)},
-                  {reference::referenceBrdfLut<float>(size, options.sampleCount),
-                   reference::referenceBrdfLut<double>(size, options.sampleCount)},
+                  [&] { return References{reference::referenceBrdfLut<float>(size, options.sampleCount),
+                   reference::referenceBrdfLut<double>(size, options.sampleCount)}; },
                   [&](const PathProgram& program) { return gpuBrdfLut(run.vulkan, program, size); },
                   [&](const OpenGlForm& form) { return glBrdfLut(run.gl, form, size); });
     }
@@ -24,8 +24,8 @@ void addSampledPrefilterOutputs(SuiteRun& run) {
     const uint32_t size = options.prefilterSize;
     for (const float roughness : options.roughnesses) {
         addOutput(run, {"PrefilterSpecularCS", fmt::format("prefilter {}² r={}", size, roughness), prefilterBounds()},
-                  {reference::referencePrefilter<float>(environment, roughness, size, options.sampleCount),
-                   reference::referencePrefilter<double>(environment, double(roughness), size, options.sampleCount)},
+                  [&] { return References{reference::referencePrefilter<float>(environment, roughness, size, options.sampleCount),
+                   reference::referencePrefilter<double>(environment, double(roughness), size, options.sampleCount)}; },
                   [&](const PathProgram& program) { return gpuPrefilter(run.vulkan, program, environment, roughness, size); },
                   [&](const OpenGlForm& form) { return glPrefilter(run.gl, form, environment, roughness, size); });
     }
@@ -37,7 +37,7 @@ void addChunkedLutOutput(SuiteRun& run) {
     const uint32_t samples = options.sampleCount, chunk = options.chunkSamples;
     const uint32_t lutSize = options.chunkLutSize;
     addOutput(run, {"PrecomputedBrdfChunkCS", fmt::format("LUT {}² in chunks of {}", lutSize, chunk), lutChunkBounds()},
-              {reference::referenceBrdfLut<float>(lutSize, samples), reference::referenceBrdfLut<double>(lutSize, samples)},
+              [&] { return References{reference::referenceBrdfLut<float>(lutSize, samples), reference::referenceBrdfLut<double>(lutSize, samples)}; },
               [&](const PathProgram& program) { return gpuBrdfLutChunks(run.vulkan, program, lutSize, samples, chunk); },
               [&](const OpenGlForm& form) { return glBrdfLutChunks(run.gl, form, lutSize, samples, chunk); });
 }
@@ -50,8 +50,8 @@ void addChunkedPrefilterOutput(SuiteRun& run) {
     const float roughness = options.chunkRoughness;
     addOutput(run, {"PrefilterSpecularChunkCS", fmt::format("prefilter {}² r={} in chunks of {}", size, roughness, chunk),
                     prefilterChunkBounds()},
-              {reference::referencePrefilter<float>(environment, roughness, size, samples),
-               reference::referencePrefilter<double>(environment, double(roughness), size, samples)},
+              [&] { return References{reference::referencePrefilter<float>(environment, roughness, size, samples),
+               reference::referencePrefilter<double>(environment, double(roughness), size, samples)}; },
               [&](const PathProgram& program) {
                   return gpuPrefilterChunks(run.vulkan, program, environment, roughness, size, samples, chunk);
               },

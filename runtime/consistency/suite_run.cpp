@@ -69,8 +69,10 @@ const OpenGlForm& SuiteRun::openGl(const std::string& kernel) {
     return openGlForms_.at(kernel);
 }
 
-void addOutput(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
-               const OpenGlRun& openGlRun) {
+void addOutput(SuiteRun& run, const OutputSpec& spec, const std::function<References()>& makeReferences,
+               const PathRun& vulkanRun, const OpenGlRun& openGlRun) {
+    if (!run.runs(spec.kernel)) return;
+    const auto references = makeReferences();
     run.rows.push_back({spec.kernel, "f. C++ reference, float", spec.output, {},
                         measureError(references.inFloat, references.inDouble), spec.bounds, true, true, {},
                         colourError(references.inFloat, references.inDouble)});
@@ -78,6 +80,7 @@ void addOutput(SuiteRun& run, const OutputSpec& spec, const References& referenc
 }
 
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun) {
+    if (!run.runs(spec.kernel)) return;
     References pathA;
     pathA.inFloat = vulkanRun(run.program(spec.kernel, ShaderPath::Glslang));
     pathA.inDouble.assign(pathA.inFloat.begin(), pathA.inFloat.end());

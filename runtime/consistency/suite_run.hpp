@@ -25,6 +25,8 @@ public:
     const SuiteOptions& options;
     std::vector<ConsistencyRow> rows;
 
+    // Whether the options ask for the kernel's outputs (SuiteOptions::kernels).
+    bool runs(const std::string& kernel) const { return options.kernels.empty() || options.kernels.contains(kernel); }
     const PathProgram& program(const std::string& kernel, ShaderPath path);
     const OpenGlForm& openGl(const std::string& kernel);
 
@@ -52,9 +54,10 @@ struct OutputSpec {
 using PathRun = std::function<std::vector<float>(const PathProgram&)>;
 using OpenGlRun = std::function<std::vector<float>(const OpenGlForm&)>;
 
-// The float reference's row, then one row per path, each judged against both references.
-void addOutput(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
-               const OpenGlRun& openGlRun);
+// The float reference's row, then one row per path, each judged against both references; nothing,
+// not even the references, when the options leave the kernel out.
+void addOutput(SuiteRun& run, const OutputSpec& spec, const std::function<References()>& references,
+               const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
 // For an output with no C++ reference: path a's result is the reference of the other paths.
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun);

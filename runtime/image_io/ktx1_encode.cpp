@@ -8,7 +8,7 @@
 namespace iblkit::image_io {
 namespace {
 
-constexpr std::array<uint8_t, 12> kIdentifier = {0xAB, 'K', 'T', 'X', ' ', '1', '1', 0xBB, '\r', '\n', 0x1A, '\n'};
+constexpr std::array<uint8_t, 12> kKtx1Identifier = {0xAB, 'K', 'T', 'X', ' ', '1', '1', 0xBB, '\r', '\n', 0x1A, '\n'};
 constexpr uint32_t kEndianness = 0x04030201;
 
 // OpenGL's enumerants for a format: glType, glFormat and glInternalFormat.
@@ -45,7 +45,7 @@ std::vector<std::byte> encodeKtx1(const Texture& texture, const std::map<std::st
     requireConsistent(texture, "encodeKtx1");
     const GlFormat gl = glFormatOf(texture.format);
     ByteWriter out;
-    for (uint8_t byte : kIdentifier) out.put(byte);
+    for (uint8_t byte : kKtx1Identifier) out.put(byte);
     out.put(kEndianness);
     out.put(gl.type);
     out.put(bytesPerChannel(texture.format)); // glTypeSize

@@ -55,18 +55,18 @@ glm::dvec3 polygonVector(const std::array<glm::dvec3, 4>& corners, const glm::dv
     return glm::dot(sum, centre) < 0 ? -sum / 2.0 : sum / 2.0;
 }
 
-struct SourceTexel {
+struct IrradianceTexel {
     glm::dvec3 centre, radiance;
     glm::dvec3 vector; // ∫ l dω over the texel: n·vector is its cosine integral when it is all above n's horizon
     std::array<glm::dvec3, 4> corners;
     double reach; // sine of the largest angle from the centre to a corner
 };
 
-std::vector<SourceTexel> sourceTexels(std::span<const CubeTexelRadiance> texels, uint32_t size) {
-    std::vector<SourceTexel> result;
+std::vector<IrradianceTexel> sourceTexels(std::span<const CubeTexelRadiance> texels, uint32_t size) {
+    std::vector<IrradianceTexel> result;
     for (const auto& texel : texels) {
         const uint32_t face = texel.index / (size * size), row = texel.index / size % size, column = texel.index % size;
-        SourceTexel t;
+        IrradianceTexel t;
         t.radiance = glm::dvec3(texel.radiance);
         t.centre = cubeTexelCentre(face, column, row, size);
         double reach = 0;

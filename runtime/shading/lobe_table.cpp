@@ -1,6 +1,7 @@
 #include "shading/lobe_table.hpp"
 
 #include "reference/parallel_rows.hpp"
+#include "reference/pbr.hpp"
 #include "shading/half_vector_nodes.hpp"
 
 #include <glm/geometric.hpp>
@@ -14,6 +15,8 @@ namespace iblkit::shading {
 
 std::string_view nameOf(LobeWeighting weighting) { return weighting == LobeWeighting::G1 ? "G1" : "N·L"; }
 
+using reference::GeometrySchlickGGXForIBL;
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -25,20 +28,14 @@ double ggx(double ndoth, double roughness) {
     return a2 / (kPi * d * d);
 }
 
-// Smith-Schlick's G1 with the split sum's k = r² / 2 (PBR.fxh's GeometrySchlickGGXForIBL).
-double schlickG1(double cosine, double roughness) {
-    const double k = roughness * roughness / 2;
-    return cosine / (cosine * (1 - k) + k);
-}
-
-constexpr int kS = 256, kPhi = 64; // φ over [0, π]: the lobe is symmetric about the plane of N and V
+constexpr int kLobeS = 256, kLobePhi = 64; // φ over [0, π]: the lobe is symmetric about the plane of N and V
 
 } // namespace
 
 double prefilterKernel(double cosine, double roughness, LobeWeighting weighting) {
     if (cosine <= 0) return 0;
     const double d = ggx(std::sqrt((1 + cosine) / 2), roughness);
-    return d * (weighting == LobeWeighting::NdotL ? cosine : schlickG1(cosine, roughness));
+    return d * (weighting == LobeWeighting::NdotL ? cosine : GeometrySchlickGGXForIBL(cosine, roughness));
 }
 
 double kernelTangentVariance(double roughness, LobeWeighting weighting) {
@@ -46,10 +43,10 @@ double kernelTangentVariance(double roughness, LobeWeighting weighting) {
     // dω_l = 4 cos θ_h dω_h, so each node carries the kernel's weighting of d·L (D cancels into the
     // nodes' own weight).
     double spread = 0, total = 0;
-    for (const auto& node : halfVectorNodes(roughness * roughness, kS)) {
+    for (const auto& node : halfVectorNodes(roughness * roughness, kLobeS)) {
         const double cosL = 2 * node.cosH * node.cosH - 1;
         if (cosL <= 0) continue;
-        const double w = node.weight * (weighting == LobeWeighting::NdotL ? cosL : schlickG1(cosL, roughness));
+        const double w = node.weight * (weighting == LobeWeighting::NdotL ? cosL : GeometrySchlickGGXForIBL(cosL, roughness));
         spread += w * (1 - cosL * cosL) / 2;
         total += w;
     }
@@ -76,17 +73,17 @@ LobeFit fitLobe(double ndotv, double roughness, LobeWeighting weighting) {
     if (roughness <= 1e-4) return {1.f, float(roughness), float(roughness), 0.f};
     const double alpha = roughness * roughness;
     // First moment, then the second moments about the mean direction.
-    const auto nodes = halfVectorNodes(alpha, kS);
+    const auto nodes = halfVectorNodes(alpha, kLobeS);
     // f (N·L) dω_l = D G1(L) G1(V) / (4 N·V) · 4 (V·H) dω_h, and the nodes carry D cos θ_h dω_h.
     const auto forEachDirection = [&](const auto& visit) {
-        for (int j = 0; j < kPhi; ++j) {
-            const double phi = kPi * (j + 0.5) / kPhi, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+        for (int j = 0; j < kLobePhi; ++j) {
+            const double phi = kPi * (j + 0.5) / kLobePhi, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
             for (const auto& node : nodes) {
                 const glm::dvec3 h(node.sinH * cosPhi, node.sinH * sinPhi, node.cosH);
                 const double vdoth = glm::dot(V, h);
                 if (vdoth <= 0) continue;
                 const glm::dvec3 l = 2 * vdoth * h - V;
-                if (l.z > 0) visit(l, node.weight * schlickG1(l.z, roughness) * vdoth / node.cosH);
+                if (l.z > 0) visit(l, node.weight * GeometrySchlickGGXForIBL(l.z, roughness) * vdoth / node.cosH);
             }
         }
     };

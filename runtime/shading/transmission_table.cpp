@@ -1,6 +1,7 @@
 #include "shading/transmission_table.hpp"
 
 #include "reference/parallel_rows.hpp"
+#include "reference/pbr.hpp"
 #include "shading/half_vector_nodes.hpp"
 
 #include <glm/geometric.hpp>
@@ -12,12 +13,14 @@
 
 namespace iblkit::shading {
 
+using reference::GeometrySchlickGGXForIBL;
+
 namespace {
 
 // φ over [0, π]: the lobe is symmetric about the plane of N and V. At these counts the share is
 // within 4e-5 of 16 times as many nodes (the lobe's edges, at total internal reflection and at the
 // facets V sees edge on, are steps the midpoint rule resolves only as 1 / count).
-constexpr int kS = 256, kHorizon = 64, kPhi = 64;
+constexpr int kTransmissionS = 256, kHorizon = 64, kTransmissionPhi = 64;
 constexpr int kBandCosines = 96, kBandAngles = 48; // the inward band's grid over L
 
 double fifthPower(double x) { return x * x * x * x * x; }
@@ -27,11 +30,6 @@ double dielectricF0(double eta) { return (1 - eta) * (1 - eta) / ((1 + eta) * (1
 // 1 - F, Schlick's F on the outside's cosine with the facet's normal.
 double schlickTransmitted(double f0, const glm::dvec3& outside, const glm::dvec3& h) {
     return (1 - f0) * (1 - fifthPower(1 - std::clamp(glm::dot(outside, h), 0.0, 1.0)));
-}
-
-double schlickG1(double cosine, double roughness) {
-    const double k = roughness * roughness / 2;
-    return cosine / (cosine * (1 - k) + k);
 }
 
 // The document's BTDF has no χ+(N·h): where its generalized half vector -(eta_L L + eta_V V)
@@ -56,7 +54,7 @@ double inwardBandShare(const glm::dvec3& V, double roughness, double eta, Crossi
             const glm::dvec3 h = -glm::normalize(etaL * L + etaV * V);
             if (h.z >= 0) continue;
             const double ldoth = glm::dot(L, h), vdoth = glm::dot(V, h), denominator = etaL * ldoth + etaV * vdoth;
-            const double g = schlickG1(c, roughness) * schlickG1(std::abs(V.z), roughness);
+            const double g = GeometrySchlickGGXForIBL(c, roughness) * GeometrySchlickGGXForIBL(std::abs(V.z), roughness);
             // f |N·L| with f's 1 / |N·L| cancelled, times (eta_L / eta_V)²: the BTDF's eta_V² cancels.
             sum += std::abs(ldoth * vdoth) * etaL * etaL * schlickTransmitted(f0, entering ? V : L, h) / (denominator * denominator) *
                    g / std::abs(V.z) * ggxDistribution(h.z, alpha);
@@ -77,7 +75,7 @@ FacetRefraction refractThroughFacet(const glm::dvec3& V, const glm::dvec3& h, do
     if (vdoth <= 0) return {};
     const glm::dvec3 L = glm::refract(-V, facing, entering ? 1 / eta : eta);
     if (glm::dot(L, L) == 0 || L.z * V.z >= 0) return {};
-    const double g = schlickG1(std::abs(L.z), roughness) * schlickG1(std::abs(V.z), roughness);
+    const double g = GeometrySchlickGGXForIBL(std::abs(L.z), roughness) * GeometrySchlickGGXForIBL(std::abs(V.z), roughness);
     return {L, vdoth * schlickTransmitted(dielectricF0(eta), entering ? V : L, h) * g / (std::abs(V.z) * h.z)};
 }
 
@@ -86,18 +84,18 @@ double transmittedShare(double ndotv, double roughness, double eta, Crossing cro
     const double side = crossing == Crossing::Entering ? 1 : -1;
     const glm::dvec3 V(std::sqrt(1 - mu * mu), 0, side * mu);
     const double alpha = std::max(roughness * roughness, 1e-6);
-    auto nodes = halfVectorNodes(alpha, kS);
+    auto nodes = halfVectorNodes(alpha, kTransmissionS);
     const auto horizon = horizonNodes(alpha, kHorizon);
     nodes.insert(nodes.end(), horizon.begin(), horizon.end());
     double share = 0;
-    for (int j = 0; j < kPhi; ++j) {
-        const double phi = std::numbers::pi * (j + 0.5) / kPhi, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    for (int j = 0; j < kTransmissionPhi; ++j) {
+        const double phi = std::numbers::pi * (j + 0.5) / kTransmissionPhi, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
         for (const auto& node : nodes) {
             const glm::dvec3 h(node.sinH * cosPhi, node.sinH * sinPhi, node.cosH);
             share += node.weight * refractThroughFacet(V, h, roughness, eta, crossing).weight;
         }
     }
-    return share / kPhi + inwardBandShare(V, roughness, eta, crossing);
+    return share / kTransmissionPhi + inwardBandShare(V, roughness, eta, crossing);
 }
 
 std::vector<float> tablePerEta(uint32_t size, uint32_t channels,

@@ -94,6 +94,11 @@ const TexelFormat& texelFormatNamed(std::string_view name) {
     throw VulkanError("unsupported format '" + std::string(name) + "' (supported: " + supportedFormatNames() + ")");
 }
 
+const TexelFormat& rgba32Float() {
+    static const TexelFormat& format = texelFormatNamed("R32G32B32A32_SFLOAT");
+    return format;
+}
+
 std::string supportedFormatNames() {
     std::string names;
     for (const auto& format : kFormats) names += (names.empty() ? "" : ", ") + std::string(format.name);

@@ -24,6 +24,8 @@ struct TexelFormat {
 
 // Throws VulkanError naming the supported formats.
 const TexelFormat& texelFormatNamed(std::string_view name);
+// R32G32B32A32_SFLOAT: what every float cube and table of the kit is made of.
+const TexelFormat& rgba32Float();
 std::string supportedFormatNames();
 
 // Converts channel values (channels per texel, in order) to the format's bytes and back.

@@ -8,20 +8,14 @@ file(WRITE ${WORK_DIR}/project/Fill.hlsl "#include \"Common/Value.fxh\"\nRWTextu
 file(WRITE ${WORK_DIR}/project/CMakeLists.txt "
 cmake_minimum_required(VERSION 3.25)
 project(uses_iblkit NONE)
-add_executable(iblkit IMPORTED)
-set_target_properties(iblkit PROPERTIES IMPORTED_LOCATION ${IBLKIT})
+add_executable(iblkit::cli IMPORTED)
+set_target_properties(iblkit::cli PROPERTIES IMPORTED_LOCATION ${IBLKIT})
 include(${SOURCE_DIR}/tools/cmake/IblkitShaders.cmake)
 iblkit_add_shader(Fill SOURCE \${CMAKE_CURRENT_SOURCE_DIR}/Fill.hlsl INCLUDE_DIRS \${CMAKE_CURRENT_SOURCE_DIR})
 add_custom_target(shaders ALL DEPENDS \${CMAKE_BINARY_DIR}/shaders/Fill.spv)
 ")
 
-function(run)
-  execute_process(COMMAND ${ARGV} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "${ARGV} failed:\n${out}\n${err}")
-  endif()
-  set(output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../support/run_step.cmake)
 
 function(expect_rebuild expected what)
   run(${MAKE_PROGRAM} -C ${WORK_DIR}/build -n)

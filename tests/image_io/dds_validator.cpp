@@ -1,4 +1,5 @@
 #include "dds_validator.hpp"
+#include "violations.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -38,17 +39,6 @@ Fields readFields(std::span<const std::byte> file) {
     return {at(4),   at(8),   at(12),  at(16),  at(20),  at(24),  at(28),  at(76),  at(80),
             at(84),  at(108), at(112), at(128), at(132), at(136), at(140), at(144)};
 }
-
-class Violations {
-public:
-    void expect(bool holds, const std::string& rule) {
-        if (!holds) list_.push_back(rule);
-    }
-    std::vector<std::string> take() { return std::move(list_); }
-
-private:
-    std::vector<std::string> list_;
-};
 
 void checkHeader(const Fields& f, Violations& v) {
     v.expect(f.size == 124, "dwSize: must be 124, is " + std::to_string(f.size));

@@ -17,19 +17,19 @@ using image_io::PixelFormat;
 
 // An 8x8 RGBA16F cube with 2 mips and one key/value pair.
 image_io::Texture goodTexture() { return patternedTexture(PixelFormat::Rgba16Float, 8, 8, 6, 2); }
-std::vector<std::byte> goodFile() { return image_io::encodeKtx1(goodTexture(), {{"iblkit.profile", "filament"}}); }
+std::vector<std::byte> goodKtx1File() { return image_io::encodeKtx1(goodTexture(), {{"iblkit.profile", "filament"}}); }
 
 TEST(ImageIoKtx1, EveryFormatAndShapeConforms) {
     for (auto format : {PixelFormat::Rgba16Float, PixelFormat::Rgba32Float, PixelFormat::Rg16Float, PixelFormat::Rg32Float}) {
         EXPECT_EQ(validateKtx1(image_io::encodeKtx1(patternedTexture(format, 16, 16, 6, 5))), std::vector<std::string>{});
         EXPECT_EQ(validateKtx1(image_io::encodeKtx1(patternedTexture(format, 8, 4, 1, 4))), std::vector<std::string>{});
     }
-    EXPECT_EQ(validateKtx1(goodFile()), std::vector<std::string>{});
+    EXPECT_EQ(validateKtx1(goodKtx1File()), std::vector<std::string>{});
 }
 
 TEST(ImageIoKtx1, EachLevelIsItsImageSizeThenItsFacesInOrder) {
     const auto texture = goodTexture();
-    const auto file = goodFile();
+    const auto file = goodKtx1File();
     const size_t keyValues = peek32(file, 60);
     size_t offset = 64 + keyValues;
     for (uint32_t mip = 0; mip < texture.mips; ++mip) {
@@ -44,7 +44,7 @@ TEST(ImageIoKtx1, EachLevelIsItsImageSizeThenItsFacesInOrder) {
 }
 
 TEST(ImageIoKtx1Validator, ReportsEachBrokenRuleByItsField) {
-    const auto good = goodFile();
+    const auto good = goodKtx1File();
     auto longer = good;
     longer.push_back(std::byte{0});
     const size_t firstLevel = 64 + peek32(good, 60);

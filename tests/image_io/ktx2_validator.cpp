@@ -1,4 +1,5 @@
 #include "ktx2_validator.hpp"
+#include "violations.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -52,17 +53,6 @@ private:
         return value;
     }
     std::span<const std::byte> bytes_;
-};
-
-class Violations {
-public:
-    void expect(bool holds, const std::string& rule) {
-        if (!holds) list_.push_back(rule);
-    }
-    std::vector<std::string> take() { return std::move(list_); }
-
-private:
-    std::vector<std::string> list_;
 };
 
 std::string number(uint64_t value) { return std::to_string(value); }

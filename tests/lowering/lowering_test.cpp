@@ -3,6 +3,7 @@
 // (That the lowered shaders compute what DXC's would is the porting corpus's test.)
 #include "lowering.hpp"
 #include "lowering_error.hpp"
+#include "lowering_error_of.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,15 +13,6 @@ namespace iblkit::lowering {
 namespace {
 
 std::string lowered(const std::string& text) { return lowerHlsl(text, "a.hlsl", HlslVersion::Hlsl2021).text; }
-
-std::string errorOf(const std::string& text) {
-    try {
-        lowerHlsl(text, "a.hlsl", HlslVersion::Hlsl2021);
-    } catch (const LoweringError& error) {
-        return error.what();
-    }
-    return "(no error)";
-}
 
 size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 

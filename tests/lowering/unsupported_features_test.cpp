@@ -2,20 +2,12 @@
 // lowering pass that changed the shader is named among its edits.
 #include "lowering.hpp"
 #include "lowering_error.hpp"
+#include "lowering_error_of.hpp"
 
 #include <gtest/gtest.h>
 
 namespace iblkit::lowering {
 namespace {
-
-std::string errorOf(const std::string& text, HlslVersion version = HlslVersion::Hlsl2021) {
-    try {
-        lowerHlsl(text, "a.hlsl", version);
-    } catch (const LoweringError& error) {
-        return error.what();
-    }
-    return "(no error)";
-}
 
 TEST(UnsupportedFeatures, EachIsRefusedByNameAndPlaceInEveryVersion) {
     for (const auto version : {HlslVersion::Hlsl2018, HlslVersion::Hlsl2021}) {

@@ -1,11 +1,10 @@
 #include "bake_command.hpp"
 
-#include "bake.hpp"
-#include "bake_manifest.hpp"
 #include "bake_options.hpp"
-#include "file_names.hpp"
 #include "run_command.hpp"
 #include "signal_cleanup.hpp"
+
+#include <iblkit/bake.hpp>
 
 #include <fmt/core.h>
 
@@ -14,30 +13,8 @@
 namespace iblkit::cli {
 namespace {
 
-nlohmann::json summaryJson(const bake::BakeSummary& summary) {
-    nlohmann::json steps = nlohmann::json::array();
-    const auto& kernels = summary.compiledKernels;
-    for (const auto& step : summary.steps)
-        steps.push_back({{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}});
-    return {{"output", image_io::utf8Name(summary.outputDir)},
-            {"device", summary.device},
-            {"wall_ms", summary.wallMilliseconds},
-            {"steps", steps},
-            {"files", bake::filesJson(summary.files)},
-            {"sh_radiance", bake::coefficientsJson(summary.shRadiance)},
-            {"clamped_values", bake::clampedValueCount(summary.halfRangeClamps)},
-            {"half_range_clamps", bake::halfRangeClampsJson(summary.halfRangeClamps)},
-            {"sanitized_texels", summary.sanitizedTexels},
-            {"negative_texels", summary.negativeTexels.count},
-            {"most_negative", summary.negativeTexels.mostNegative},
-            {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}},
-            {"compiled_kernels", {{"hits", kernels.hits}, {"misses", kernels.misses}, {"stale", kernels.stale},
-                                  {"damaged", kernels.damaged}}},
-            {"pipeline_cache_bytes", summary.pipelineCacheBytes}};
-}
-
-void printSummary(const bake::BakeSummary& summary) {
-    fmt::print(stderr, "baked {} on {} in {:.2f} s:", summary.outputDir.string(), summary.device,
+void printSummary(const BakeSummary& summary) {
+    fmt::print(stderr, "baked {} on {} in {:.2f} s:", summary.folder.string(), summary.device,
                summary.wallMilliseconds / 1e3);
     for (const auto& file : summary.files)
         if (file.name.find('/') == std::string::npos) fmt::print(stderr, " {}", file.name);
@@ -45,15 +22,14 @@ void printSummary(const bake::BakeSummary& summary) {
 }
 
 // What the input policies changed: printed even with --quiet, which silences only progress.
-void printPolicyReports(const bake::BakeSummary& summary) {
+void printPolicyReports(const BakeSummary& summary) {
     for (const auto& clamp : summary.halfRangeClamps)
         fmt::print(stderr, "warning: clamped {} values of {} past the 16-bit float range to 65504: mip {} lost {:.3g} % "
                            "of its energy (--strict refuses them)\n",
                    clamp.values, clamp.texture, clamp.worstMip, 100 * clamp.worstShare);
-    const auto& negative = summary.negativeTexels;
-    if (negative.count)
+    if (summary.negativeTexels)
         fmt::print(stderr, "clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n",
-                   negative.count, negative.mostNegative);
+                   summary.negativeTexels, summary.mostNegative);
     for (const auto& warning : summary.cacheWarnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto sanitized = summary.sanitizedTexels;
     if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
@@ -63,7 +39,8 @@ void printPolicyReports(const bake::BakeSummary& summary) {
 
 void addBakeCommand(CLI::App& app) {
     struct Arguments {
-        bake::BakeSettings settings;
+        BakeRequest request;
+        std::filesystem::path outputDir;
         std::string environment;
         std::string lutFormat = "rg16f";
         std::string cache;
@@ -72,12 +49,13 @@ void addBakeCommand(CLI::App& app) {
         bool json = false;
     };
     auto arguments = std::make_shared<Arguments>();
-    auto& s = arguments->settings;
+    auto& s = arguments->request;
     auto* command = app.add_subcommand(
         "bake", "Bake an HDR environment into a prefiltered specular cube, a BRDF LUT, irradiance and a preview");
     command->add_option("ENV", arguments->environment,
                         "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
-    command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the bake succeeds)")->required();
+    command->add_option("-o,--output", arguments->outputDir, "Output folder (replaced as a whole when the bake succeeds)")
+        ->required();
     addBakeSettingOptions(*command, s, arguments->lutFormat);
     command->add_option("--scene", s.scene,
                         "A glTF scene (.gltf or .glb): bake only what its materials need (iblkit plan SCENE shows what)");
@@ -91,26 +69,24 @@ void addBakeCommand(CLI::App& app) {
     command->add_flag("--strict", s.strict,
                       "Refuse negative input texels and values beyond 65504 in 16-bit outputs instead of clamping "
                       "them (to 0 and to 65504, each reported)");
-    command->add_flag("--validate", s.context.validation, "Run with the Vulkan validation layer; any message fails the bake");
-    command->add_option("--device", s.context.device, "Device index or part of its name (default: lavapipe)");
+    command->add_flag("--validate", s.validation, "Run with the Vulkan validation layer; any message fails the bake");
+    command->add_option("--device", s.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet,
                       "No progress on stderr (what the input policies clamped is still reported)");
     command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
     command->callback([arguments] {
         files::cleanUpOnSignals(); // first: the Vulkan driver's threads must inherit the blocked signals
-        auto settings = arguments->settings;
-        if (!arguments->environment.empty()) settings.environment = arguments->environment;
-        settings.lutFormat = arguments->lutFormat == "rg32f" ? bake::LutFormat::Rg32Float : bake::LutFormat::Rg16Float;
+        auto request = arguments->request;
+        if (!arguments->environment.empty()) request.environment = arguments->environment;
+        request.lutFormat = lutFormatNamed(arguments->lutFormat);
         if (arguments->noCache && !arguments->cache.empty()) throw CLI::ValidationError("--cache and --no-cache", "give one of them");
         if (!arguments->noCache)
-            settings.cache = arguments->cache.empty() ? cache::ContentStore::defaultFolder() : std::filesystem::path(arguments->cache);
-        auto log = std::make_shared<vulkan::ValidationLog>();
-        settings.context.validationLog = log;
-        bake::BakeProgress progress(arguments->quiet);
-        const auto summary = bake::bakeEnvironment(settings, IBLKIT_VERSION, progress);
-        for (const auto& message : log->messages()) fmt::print(stderr, "validation: {}\n", message);
-        if (!log->messages().empty()) throw ExpectationsFailed{};
-        if (arguments->json) fmt::print("{}\n", summaryJson(summary).dump(2));
+            request.cache = arguments->cache.empty() ? defaultCacheFolder() : std::filesystem::path(arguments->cache);
+        request.quiet = arguments->quiet;
+        const auto summary = bakeToFolder(request, arguments->outputDir);
+        for (const auto& message : summary.validationMessages) fmt::print(stderr, "validation: {}\n", message);
+        if (!summary.validationMessages.empty()) throw ExpectationsFailed{};
+        if (arguments->json) fmt::print("{}\n", summary.json);
         if (!arguments->quiet) printSummary(summary);
         printPolicyReports(summary);
     });

@@ -1,5 +1,6 @@
 #include "bake_options.hpp"
 
+#include "bake_settings.hpp"
 #include "kernels/lut_methods.hpp"
 #include "profiles/engine_profile.hpp"
 #include "shading/shading_recipe.hpp"
@@ -8,10 +9,10 @@
 
 namespace iblkit::cli {
 
-void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string& lutFormat) {
+void addBakeSettingOptions(CLI::App& command, BakeRequest& s, std::string& lutFormat) {
     command.add_option("--size", s.size, "Cube face size, a power of two (default 256)");
     command.add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
-    command.add_option("--method", s.specularMethod,
+    command.add_option("--method", s.method,
                         "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
                         "table (filtered importance sampling from a host sample table), filtered (the same, per "
                         "sample on the GPU), pyramid (a few reads of the source's mips along the normal, fitted to "
@@ -47,5 +48,7 @@ void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string
         ->check(CLI::IsMember({"rg16f", "rg32f"}));
     command.add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
 }
+
+LutFormat lutFormatNamed(const std::string& name) { return name == "rg32f" ? LutFormat::Rg32Float : LutFormat::Rg16Float; }
 
 } // namespace iblkit::cli

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bake_settings.hpp"
+#include <iblkit/bake.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +10,9 @@ namespace iblkit::cli {
 
 // The options that decide what a bake computes (--size, --mips, --method, --samples, the LUT's and
 // the irradiance's), shared by `bake` and `plan` so that a plan is of the bake it describes.
-void addBakeSettingOptions(CLI::App& command, bake::BakeSettings& s, std::string& lutFormat);
+void addBakeSettingOptions(CLI::App& command, BakeRequest& request, std::string& lutFormat);
+
+// The request's LUT format as --lut-format names it (rg16f or rg32f).
+LutFormat lutFormatNamed(const std::string& name);
 
 } // namespace iblkit::cli

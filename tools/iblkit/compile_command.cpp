@@ -2,13 +2,14 @@
 
 #include "atomic_output.hpp"
 #include "command_line.hpp"
-#include "compile_error.hpp"
-#include "compiler.hpp"
+#include "register_binding.hpp"
+
+#include <iblkit/compile.hpp>
+#include <iblkit/error.hpp>
 
 #include <fmt/core.h>
 
 #include <memory>
-#include <set>
 
 namespace iblkit::cli {
 namespace {
@@ -25,7 +26,7 @@ struct CompileArguments {
     bool optimize = false;
     bool optimizeSize = false;
     bool strip = false;
-    std::map<compiler::CrossTarget, std::string> forms;
+    std::map<ShaderForm, std::string> forms;
     std::string reflect;
     bool writeDepfile = false;
     std::string depfile;
@@ -33,32 +34,44 @@ struct CompileArguments {
     bool enable16BitTypes = false;
 };
 
-compiler::CompileOptions toOptions(const CompileArguments& arguments) {
-    compiler::CompileOptions options;
-    options.source = arguments.source;
-    options.boundPreprocessing = true;
-    options.entryPoint = arguments.entry;
+// --binding-shift CLASS=N, each over the rule's defaults, as the compiler spells and checks them.
+BindingShifts bindingShiftsOf(const std::vector<std::string>& flags) {
+    compiler::BindingShifts shifts;
+    for (const auto& shift : flags) compiler::parseBindingShift(shift, shifts);
+    using compiler::RegisterClass;
+    return {shifts.of(RegisterClass::ConstantBuffer), shifts.of(RegisterClass::ShaderResource),
+            shifts.of(RegisterClass::Sampler), shifts.of(RegisterClass::UnorderedAccess)};
+}
+
+CompileRequest toRequest(const CompileArguments& arguments) {
+    CompileRequest request;
+    request.source = arguments.source;
+    request.boundPreprocessing = true;
+    request.entryPoint = arguments.entry;
     if (!arguments.stage.empty()) {
-        options.stage = compiler::parseStageName(arguments.stage);
-        if (!options.stage)
-            throw compiler::CompileError("error: unsupported stage '" + arguments.stage +
-                                         "' (supported: vert, tesc, tese, geom, frag, comp)");
+        request.stage = shaderStageNamed(arguments.stage);
+        if (!request.stage)
+            throw Error(ErrorKind::BadInput, "error: unsupported stage '" + arguments.stage +
+                                                 "' (supported: vert, tesc, tese, geom, frag, comp)");
     }
-    options.includeDirs.assign(arguments.includeDirs.begin(), arguments.includeDirs.end());
-    for (const auto& define : arguments.defines) options.defines.insert(splitAssignment(define));
+    request.includeDirs.assign(arguments.includeDirs.begin(), arguments.includeDirs.end());
+    for (const auto& define : arguments.defines) request.defines.insert(splitAssignment(define));
     for (const auto& format : arguments.imageFormats) {
         auto [name, value] = splitAssignment(format);
-        if (value.empty()) throw compiler::CompileError("error: --image-format expects NAME=FORMAT, got '" + format + "'");
-        options.imageFormats[name] = value;
+        if (value.empty()) throw Error(ErrorKind::BadInput, "error: --image-format expects NAME=FORMAT, got '" + format + "'");
+        request.imageFormats[name] = value;
     }
-    for (const auto& shift : arguments.bindingShifts) compiler::parseBindingShift(shift, options.bindingShifts);
-    options.optimization = arguments.optimizeSize ? compiler::OptimizationLevel::Size
-                           : arguments.optimize   ? compiler::OptimizationLevel::Performance
-                                                  : compiler::OptimizationLevel::None;
-    options.stripDebugInfo = arguments.strip;
-    options.enable16BitTypes = arguments.enable16BitTypes;
-    options.hlslVersion = arguments.hlslVersion == 2018 ? lowering::HlslVersion::Hlsl2018 : lowering::HlslVersion::Hlsl2021;
-    return options;
+    request.bindingShifts = bindingShiftsOf(arguments.bindingShifts);
+    request.optimization = arguments.optimizeSize ? Optimization::Size
+                           : arguments.optimize   ? Optimization::Performance
+                                                  : Optimization::None;
+    request.stripDebugInfo = arguments.strip;
+    request.enable16BitTypes = arguments.enable16BitTypes;
+    request.hlslVersion = arguments.hlslVersion == 2018 ? HlslVersion::Hlsl2018 : HlslVersion::Hlsl2021;
+    request.forms.clear();
+    for (const auto& [form, path] : arguments.forms) request.forms.insert(form);
+    if (arguments.writeDepfile || !arguments.depfile.empty()) request.depfileTarget = arguments.output;
+    return request;
 }
 
 std::string spirvBytes(const std::vector<uint32_t>& words) {
@@ -66,27 +79,23 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
 }
 
 void runCompile(const CompileArguments& arguments) {
-    const auto shader = compiler::compileShader(toOptions(arguments));
-    for (const auto& warning : shader.warnings) fmt::print(stderr, "{}\n", warning);
+    const auto request = toRequest(arguments);
+    const auto compiled = compileShader(request);
+    for (const auto& warning : compiled.warnings) fmt::print(stderr, "{}\n", warning);
 
     files::AtomicOutput output;
     std::vector<std::filesystem::path> inputs{arguments.source};
-    inputs.insert(inputs.end(), shader.includedFiles.begin(), shader.includedFiles.end());
+    inputs.insert(inputs.end(), compiled.includedFiles.begin(), compiled.includedFiles.end());
     output.protect(std::move(inputs));
-    output.add(arguments.output, spirvBytes(shader.spirv));
-    std::set<compiler::CrossTarget> targets;
-    for (const auto& [target, path] : arguments.forms) targets.insert(target);
-    const auto forms = compiler::crossCompileForms(shader, targets);
-    for (const auto& [target, form] : forms.produced) output.add(arguments.forms.at(target), form.source);
-    if (!arguments.reflect.empty()) output.add(arguments.reflect, compiler::reflectionJson(shader, forms.produced, forms.refused));
-    if (arguments.writeDepfile || !arguments.depfile.empty()) {
-        const std::string depfile = arguments.depfile.empty() ? arguments.output + ".d" : arguments.depfile;
-        output.add(depfile, compiler::makeDepfile(arguments.output, shader));
-    }
+    output.add(arguments.output, spirvBytes(compiled.spirv));
+    for (const auto& [form, source] : compiled.forms) output.add(arguments.forms.at(form), source);
+    if (!arguments.reflect.empty()) output.add(arguments.reflect, compiled.reflectionJson);
+    if (!request.depfileTarget.empty())
+        output.add(arguments.depfile.empty() ? arguments.output + ".d" : arguments.depfile, compiled.depfile);
     output.commit();
     // The forms that can express the shader are written; each refused one is a line, and exit 4.
-    for (const auto& [target, reason] : forms.refused) fmt::print(stderr, "{}\n", reason);
-    if (!forms.refused.empty()) throw FormsRefused{};
+    for (const auto& [form, reason] : compiled.refusedForms) fmt::print(stderr, "{}\n", reason);
+    if (!compiled.refusedForms.empty()) throw FormsRefused{};
 }
 
 } // namespace
@@ -109,16 +118,13 @@ void addCompileCommand(CLI::App& app) {
         ->allow_extra_args(false);
     command->add_option("--binding-shift", arguments->bindingShifts, "First binding of a register class, CLASS=N (b, t, s, u)")
         ->allow_extra_args(false);
-    const std::pair<const char*, compiler::CrossTarget> forms[] = {{"--glsl", compiler::CrossTarget::Glsl},
-                                                                   {"--essl", compiler::CrossTarget::Essl},
-                                                                   {"--msl", compiler::CrossTarget::Msl},
-                                                                   {"--hlsl", compiler::CrossTarget::Hlsl},
-                                                                   {"--vulkan-glsl", compiler::CrossTarget::VulkanGlsl},
-                                                                   {"--vulkan-essl", compiler::CrossTarget::VulkanEssl}};
-    for (const auto& [flag, target] : forms)
+    for (const auto form : {ShaderForm::Glsl, ShaderForm::Essl, ShaderForm::Msl, ShaderForm::Hlsl, ShaderForm::VulkanGlsl,
+                            ShaderForm::VulkanEssl}) {
+        const std::string name(shaderFormName(form));
         command->add_option_function<std::string>(
-            flag, [arguments, target = target](const std::string& path) { arguments->forms[target] = path; },
-            std::string("Also write the ") + (flag + 2) + " form");
+            "--" + name, [arguments, form](const std::string& path) { arguments->forms[form] = path; },
+            "Also write the " + name + " form");
+    }
     command->add_option("--HV,--hlsl-version", arguments->hlslVersion,
                         "HLSL version, 2021 (the default, as in DXC: select, enum, namespace lowered) or 2018; spelled -HV")
         ->check(CLI::IsMember({2018, 2021}));

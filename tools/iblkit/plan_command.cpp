@@ -1,5 +1,6 @@
 #include "plan_command.hpp"
 
+#include "api/bake_settings_of.hpp"
 #include "bake_options.hpp"
 #include "bake_plan.hpp"
 #include "environment_input.hpp"
@@ -13,7 +14,7 @@ namespace iblkit::cli {
 
 void addPlanCommand(CLI::App& app) {
     struct Arguments {
-        bake::BakeSettings settings;
+        BakeRequest request;
         std::string scene;
         std::string environment;
         std::string lutFormat = "rg16f";
@@ -24,12 +25,13 @@ void addPlanCommand(CLI::App& app) {
                                                "specular mips, the LUT rows, the kernels, and the estimated time and error");
     command->add_option("SCENE", arguments->scene, "glTF 2.0 scene (.gltf or .glb)")->required();
     command->add_option("ENV", arguments->environment, "The environment, as for bake (a cube input sets the size)");
-    addBakeSettingOptions(*command, arguments->settings, arguments->lutFormat);
+    addBakeSettingOptions(*command, arguments->request, arguments->lutFormat);
     command->add_flag("--json", arguments->json, "Print the plan as JSON");
     command->callback([arguments] {
-        auto settings = arguments->settings;
-        settings.outputDir = "plan"; // never written: validateSettings wants one
-        if (!arguments->environment.empty()) settings.environment = arguments->environment;
+        auto request = arguments->request;
+        if (!arguments->environment.empty()) request.environment = arguments->environment;
+        request.lutFormat = lutFormatNamed(arguments->lutFormat);
+        const auto settings = api::bakeSettingsOf(request);
         bake::validateSettings(settings);
         // Only a cube input has a size of its own; its texels' NaN or negative values are the bake's to judge.
         uint32_t inputCubeSize = 0;
