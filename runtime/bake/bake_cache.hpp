@@ -6,7 +6,7 @@
 #include "environment_input.hpp"
 #include "gpu_steps.hpp"
 #include "kernels/kernel_table.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <optional>
 #include <string>

@@ -4,7 +4,7 @@
 #include "profiles/engine_profile.hpp"
 #include "shading/shading_recipe.hpp"
 #include "kernels/sampled_methods.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <cstdint>
 #include <filesystem>

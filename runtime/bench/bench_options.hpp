@@ -1,7 +1,7 @@
 #pragma once
 
 #include "kernels/kernel_table.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <cstdint>
 #include <cstdio>

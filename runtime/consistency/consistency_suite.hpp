@@ -3,7 +3,7 @@
 #include "compile_options.hpp"
 #include "error_stats.hpp"
 #include "suite_environment.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <map>
 #include <set>

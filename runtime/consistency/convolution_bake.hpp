@@ -4,7 +4,7 @@
 #include "kernels/kernel_steps.hpp"
 #include "shader_paths.hpp"
 #include "suite_inputs.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <vector>
 

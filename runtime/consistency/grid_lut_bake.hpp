@@ -2,7 +2,7 @@
 
 #include "gl_bake.hpp"
 #include "shader_paths.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <cstdint>
 #include <span>

@@ -1,4 +1,5 @@
 #include "consistency_suite.hpp"
+#include "vulkan_context.hpp"
 
 #include <fmt/core.h>
 

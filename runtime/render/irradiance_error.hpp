@@ -2,7 +2,7 @@
 
 #include "image.hpp"
 #include "shading/light_extraction.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <glm/vec3.hpp>
 

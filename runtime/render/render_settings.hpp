@@ -1,7 +1,7 @@
 #pragma once
 
 #include "shading/shading_recipe.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -6,7 +6,7 @@
 
 #include "bake_progress.hpp"
 #include "shading/shading_recipe.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <filesystem>
 #include <string>

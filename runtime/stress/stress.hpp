@@ -4,7 +4,7 @@
 #include "input_cases.hpp"
 #include "probe_sweep.hpp"
 #include "sample_growth.hpp"
-#include "vulkan_context.hpp"
+#include "context_options.hpp"
 
 #include <filesystem>
 #include <string>

@@ -6,6 +6,7 @@
 #include "shader_paths.hpp"
 #include "read_file.hpp"
 #include "temp_folder.hpp"
+#include "vulkan_context.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #include "read_file.hpp"
 #include "stress.hpp"
 #include "temp_folder.hpp"
+#include "vulkan_context.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,6 +3,7 @@
 #include "atomic_output.hpp"
 #include "consistency_suite.hpp"
 #include "run_command.hpp"
+#include "vulkan_context.hpp"
 
 #include <fmt/core.h>
 

@@ -5,6 +5,7 @@
 #include "reference_cache.hpp"
 #include "run_command.hpp"
 #include "stress.hpp"
+#include "vulkan_context.hpp"
 
 #include <fmt/core.h>
 
