@@ -5,25 +5,16 @@
 #include "api/bake_settings_of.hpp"
 #include "read_file.hpp"
 #include "temp_folder.hpp"
+#include "thrown_error.hpp"
 
 #include <gtest/gtest.h>
-
-#include <functional>
 
 namespace iblkit {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::pair<ErrorKind, std::string> errorOf(const std::function<void()>& bake) {
-    try {
-        bake();
-    } catch (const Error& error) {
-        return {error.kind(), error.what()};
-    }
-    ADD_FAILURE() << "no error";
-    return {ErrorKind::BakeFailed, ""};
-}
+using testing::errorOf;
 
 TEST(BakeErrors, AnEnvironmentThatIsNotThereIsBadInputAndWritesNothing) {
     testing::TempFolder scratch;

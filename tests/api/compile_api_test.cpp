@@ -5,6 +5,7 @@
 #include "read_file.hpp"
 #include "register_binding.hpp"
 #include "temp_folder.hpp"
+#include "thrown_error.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -22,17 +23,6 @@ CompileRequest seedPrefilter() {
     request.source = "hlsl/document/PrefilterSpecularCS.hlsl";
     request.includeDirs = {"hlsl"};
     return request;
-}
-
-ErrorKind kindOfError(const CompileRequest& request, std::string& message) {
-    try {
-        compileShader(request);
-    } catch (const Error& error) {
-        message = error.what();
-        return error.kind();
-    }
-    ADD_FAILURE() << "no error";
-    return ErrorKind::BadInput;
 }
 
 TEST(CompileApi, TheSeedPrefilterCompilesToEveryForm) {
@@ -81,8 +71,8 @@ TEST(CompileApi, ACompileErrorIsCompileFailedWithItsOneLineMessage) {
     testing::TempFolder scratch;
     CompileRequest request;
     request.source = scratch.write("broken.hlsl", "[numthreads(1, 1, 1)]\nvoid main() {\n    undeclared = 1;\n}\n");
-    std::string message;
-    EXPECT_EQ(kindOfError(request, message), ErrorKind::CompileFailed);
+    const auto [kind, message] = testing::errorOf([&] { compileShader(request); });
+    EXPECT_EQ(kind, ErrorKind::CompileFailed);
     EXPECT_NE(message.find("broken.hlsl:3:"), std::string::npos) << message;
     EXPECT_NE(message.find("undeclared"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -91,8 +81,8 @@ TEST(CompileApi, ACompileErrorIsCompileFailedWithItsOneLineMessage) {
 TEST(CompileApi, ABindingShiftPastTheLastBindingIsBadInput) {
     auto request = seedPrefilter();
     request.bindingShifts.unorderedAccess = 70000;
-    std::string message;
-    EXPECT_EQ(kindOfError(request, message), ErrorKind::BadInput);
+    const auto [kind, message] = testing::errorOf([&] { compileShader(request); });
+    EXPECT_EQ(kind, ErrorKind::BadInput);
     EXPECT_EQ(message, "error: binding shift u=70000: bindings end at 65534 (glslang holds them in 16 bits)");
 }
 

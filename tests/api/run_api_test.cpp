@@ -5,6 +5,7 @@
 
 #include "read_file.hpp"
 #include "temp_folder.hpp"
+#include "thrown_error.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -37,15 +38,9 @@ RunRequest requestFor(const fs::path& runFile) {
     return request;
 }
 
-ErrorKind kindOfError(const RunRequest& request, std::string& message) {
-    try {
-        executeRunFile(request);
-    } catch (const Error& error) {
-        message = error.what();
-        return error.kind();
-    }
-    ADD_FAILURE() << "no error";
-    return ErrorKind::BadInput;
+// The kind and message of the Error running `runFile` throws.
+std::pair<ErrorKind, std::string> runErrorOf(const fs::path& runFile) {
+    return testing::errorOf([&] { executeRunFile(requestFor(runFile)); });
 }
 
 TEST(RunApi, TheDocumentedExamplePassesAndReportsAsItGoes) {
@@ -72,22 +67,23 @@ TEST(RunApi, AFailedExpectationIsAResultNotAnError) {
 
 TEST(RunApi, ARunFileThatCannotBeReadIsBadInput) {
     testing::TempFolder scratch;
-    std::string message;
-    EXPECT_EQ(kindOfError(requestFor(scratch.path() / "missing.run.json"), message), ErrorKind::BadInput);
+    const auto [kind, message] = runErrorOf(scratch.path() / "missing.run.json");
+    EXPECT_EQ(kind, ErrorKind::BadInput);
     EXPECT_NE(message.find("missing.run.json"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 
     const auto unknownKey = editedExample(scratch, [](nlohmann::json& run) { run["dispatch_size"] = 1; });
-    EXPECT_EQ(kindOfError(requestFor(unknownKey), message), ErrorKind::BadInput);
-    EXPECT_NE(message.find("dispatch_size"), std::string::npos) << message;
+    const auto [keyKind, keyMessage] = runErrorOf(unknownKey);
+    EXPECT_EQ(keyKind, ErrorKind::BadInput);
+    EXPECT_NE(keyMessage.find("dispatch_size"), std::string::npos) << keyMessage;
 }
 
 TEST(RunApi, AShaderThatDoesNotCompileIsCompileFailed) {
     testing::TempFolder scratch;
     const auto shader = scratch.write("broken.hlsl", "[numthreads(1, 1, 1)]\nvoid main() { undeclared = 1; }\n");
     const auto runFile = editedExample(scratch, [&](nlohmann::json& run) { run["shader"] = shader.string(); });
-    std::string message;
-    EXPECT_EQ(kindOfError(requestFor(runFile), message), ErrorKind::CompileFailed);
+    const auto [kind, message] = runErrorOf(runFile);
+    EXPECT_EQ(kind, ErrorKind::CompileFailed);
     EXPECT_NE(message.find("broken.hlsl:2:"), std::string::npos) << message;
 }
 
