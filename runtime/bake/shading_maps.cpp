@@ -4,6 +4,7 @@
 #include "image_transfer.hpp"
 #include "kernels/kernel_steps.hpp"
 #include "reference_irradiance.hpp"
+#include "shading/built_glass_tables.hpp"
 #include "shading/disk_light.hpp"
 #include "shading/sphere_transmission.hpp"
 #include "shading/transmission_table.hpp"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
+#include <span>
 
 namespace iblkit::bake {
 
@@ -100,14 +102,15 @@ vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::Lobe
 
 namespace {
 
-template <typename Compute>
-const std::vector<float>& computedOnce(uint32_t size, const Compute& compute) {
-    static std::mutex mutex;
-    static std::map<uint32_t, std::vector<float>> tables;
+// The table at `size`: the one built with the kit at kTransmissionTableSize, else computed, once.
+const std::vector<float>& computedOnce(std::mutex& mutex, std::map<uint32_t, std::vector<float>>& tables, uint32_t size,
+                                       std::span<const float> (*built)(), std::vector<float> (*compute)(uint32_t)) {
     const std::lock_guard lock(mutex);
     auto found = tables.find(size);
-    if (found == tables.end()) found = tables.emplace(size, compute(size)).first;
-    return found->second;
+    if (found != tables.end()) return found->second;
+    if (size != shading::kTransmissionTableSize) return tables.emplace(size, compute(size)).first->second;
+    const auto table = built();
+    return tables.emplace(size, std::vector<float>(table.begin(), table.end())).first->second;
 }
 
 vulkan::Image layeredTable(const vulkan::VulkanContext& context, const char* name, const char* format, uint32_t size,
@@ -121,11 +124,15 @@ vulkan::Image layeredTable(const vulkan::VulkanContext& context, const char* nam
 } // namespace
 
 const std::vector<float>& transmissionTableOf(uint32_t size) {
-    return computedOnce(size, [](uint32_t n) { return shading::transmissionTable(n); });
+    static std::mutex mutex;
+    static std::map<uint32_t, std::vector<float>> tables;
+    return computedOnce(mutex, tables, size, shading::builtTransmissionTable, shading::transmissionTable);
 }
 
 const std::vector<float>& sphereTransmissionTableOf(uint32_t size) {
-    return computedOnce(size, [](uint32_t n) { return shading::sphereTransmissionTable(n); });
+    static std::mutex mutex;
+    static std::map<uint32_t, std::vector<float>> tables;
+    return computedOnce(mutex, tables, size, shading::builtSphereTransmissionTable, shading::sphereTransmissionTable);
 }
 
 uint32_t transmissionTableSize(shading::GlassTransmission transmission) {

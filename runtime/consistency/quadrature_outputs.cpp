@@ -22,6 +22,7 @@ void addQuadratureLutOutput(SuiteRun& run) {
 }
 
 void addFitLutOutput(SuiteRun& run) {
+    if (!run.runs("BrdfLutFitCS")) return; // the fit alone is 3 s of converged quadrature
     const uint32_t size = run.options.quadratureLutSize, degree = kSuiteLutFitDegree;
     // Both references evaluate the coefficients the shader holds, the fit's rounded to float.
     std::vector<glm::vec2> coefficients;
@@ -44,6 +45,7 @@ void addGridLutOutputs(SuiteRun& run) {
               [&] { return References{reference::brdfLutGridNodes<float>(gridSize, nodes), reference::brdfLutGridNodes<double>(gridSize, nodes)}; },
               [&](const PathProgram& program) { return gpuBrdfLutGrid(run.vulkan, program, gridSize); },
               [&](const OpenGlForm& form) { return glBrdfLutGrid(run.gl, form, gridSize); });
+    if (!run.runs("BrdfLutResampleCS")) return;
     // Every path resamples the same grid (the double nodes, rounded to float), so that the row
     // measures the interpolation alone.
     const auto nodesInDouble = reference::brdfLutGridNodes<double>(gridSize, nodes);

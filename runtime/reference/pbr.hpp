@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 namespace iblkit::reference {
 
@@ -106,15 +107,25 @@ vec3<T> PrefilterSpecular(vec3<T> normal, T roughness, const Environment& envMap
     return prefilteredColor / totalWeight;
 }
 
+// The half vectors IntegrateBRDF draws about N = +Z, in its order. They depend on the roughness
+// alone, so a LUT's row draws them once for all its texels (referenceBrdfLut).
 template <typename T>
-vec2<T> IntegrateBRDF(T ndotv, T roughness, uint32_t SampleCount) {
+std::vector<vec3<T>> IntegrateBRDFHalfVectors(T roughness, uint32_t SampleCount) {
+    std::vector<vec3<T>> halfVectors(SampleCount);
+    for (uint32_t i = 0; i < SampleCount; ++i)
+        halfVectors[i] = ImportanceSampleGGX(Hammersley<T>(i, SampleCount), vec3<T>(0, 0, 1), roughness);
+    return halfVectors;
+}
+
+// IntegrateBRDF over the half vectors IntegrateBRDFHalfVectors drew at `roughness`.
+template <typename T>
+vec2<T> IntegrateBRDFOver(T ndotv, T roughness, const std::vector<vec3<T>>& halfVectors) {
     const vec3<T> viewDirection(std::sqrt(T(1) - ndotv * ndotv), T(0), ndotv);
     T a = T(0);
     T b = T(0);
-    const vec3<T> normal(0, 0, 1);
+    const auto SampleCount = uint32_t(halfVectors.size());
     for (uint32_t i = 0; i < SampleCount; ++i) {
-        const vec2<T> xi = Hammersley<T>(i, SampleCount);
-        const vec3<T> halfWay = ImportanceSampleGGX(xi, normal, roughness);
+        const vec3<T>& halfWay = halfVectors[i];
         const vec3<T> toLight = glm::normalize(T(2) * glm::dot(viewDirection, halfWay) * halfWay - viewDirection);
         const T ndotl = saturate(toLight.z);
         const T ndoth = saturate(halfWay.z);
@@ -130,6 +141,11 @@ vec2<T> IntegrateBRDF(T ndotv, T roughness, uint32_t SampleCount) {
     a /= T(SampleCount);
     b /= T(SampleCount);
     return vec2<T>(a, b);
+}
+
+template <typename T>
+vec2<T> IntegrateBRDF(T ndotv, T roughness, uint32_t SampleCount) {
+    return IntegrateBRDFOver(ndotv, roughness, IntegrateBRDFHalfVectors(roughness, SampleCount));
 }
 
 // PrefilterSpecularCS.hlsl's face table: the direction of texel center (x, y) of `face` on a

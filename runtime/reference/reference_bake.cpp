@@ -35,9 +35,10 @@ template <typename T>
 std::vector<T> referenceBrdfLut(uint32_t size, uint32_t sampleCount) {
     std::vector<T> lut(size_t(size) * size * 2);
     forEachRow(size, [&](uint32_t y) {
+        const auto halfVectors = IntegrateBRDFHalfVectors<T>((T(y) + T(0.5)) / T(size), sampleCount);
         for (uint32_t x = 0; x < size; ++x) {
             const vec2<T> uv = (vec2<T>(T(x), T(y)) + T(0.5)) / T(size);
-            const vec2<T> scaleBias = IntegrateBRDF<T>(uv.x, uv.y, sampleCount);
+            const vec2<T> scaleBias = IntegrateBRDFOver<T>(uv.x, uv.y, halfVectors);
             lut[(size_t(y) * size + x) * 2] = scaleBias.x;
             lut[(size_t(y) * size + x) * 2 + 1] = scaleBias.y;
         }

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -232,16 +233,27 @@ std::vector<glm::dvec3> exactIrradianceCube(const std::vector<float>& texels, ui
 std::vector<glm::dvec3> exactIrradianceCube(std::span<const CubeTexelRadiance> texels, uint32_t size, uint32_t outSize) {
     const auto sources = sourceTexels(texels, size);
     std::vector<glm::dvec3> result(size_t(6) * outSize * outSize);
-    forEachOutputTexel(result.size(), [&](size_t out) {
-        const uint32_t face = uint32_t(out / (size_t(outSize) * outSize));
-        const glm::dvec3 n = cubeTexelCentre(face, uint32_t(out % outSize), uint32_t(out / outSize % outSize), outSize);
-        glm::dvec3 sum(0);
-        for (const auto& t : sources) {
-            const double cosine = glm::dot(n, t.centre);
-            if (cosine > t.reach) sum += t.radiance * glm::dot(n, t.vector);
-            else if (cosine > -t.reach) sum += t.radiance * clippedPolygonCosine(n, t.corners);
+    // Outputs in blocks, each source texel read once a block rather than once an output: the
+    // sources outgrow the caches (170 bytes each, 6 · 256² of them), and reading them was the
+    // time. Each output still sums its sources in their order.
+    constexpr size_t kBlock = 16;
+    forEachOutputTexel((result.size() + kBlock - 1) / kBlock, [&](size_t block) {
+        const size_t first = block * kBlock, count = std::min(kBlock, result.size() - first);
+        std::array<glm::dvec3, kBlock> normals, sums;
+        for (size_t i = 0; i < count; ++i) {
+            const size_t out = first + i;
+            const uint32_t face = uint32_t(out / (size_t(outSize) * outSize));
+            normals[i] = cubeTexelCentre(face, uint32_t(out % outSize), uint32_t(out / outSize % outSize), outSize);
+            sums[i] = glm::dvec3(0);
         }
-        result[out] = sum / std::numbers::pi;
+        for (const auto& t : sources)
+            for (size_t i = 0; i < count; ++i) {
+                const glm::dvec3& n = normals[i];
+                const double cosine = glm::dot(n, t.centre);
+                if (cosine > t.reach) sums[i] += t.radiance * glm::dot(n, t.vector);
+                else if (cosine > -t.reach) sums[i] += t.radiance * clippedPolygonCosine(n, t.corners);
+            }
+        for (size_t i = 0; i < count; ++i) result[first + i] = sums[i] / std::numbers::pi;
     });
     return result;
 }

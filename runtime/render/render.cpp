@@ -14,6 +14,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <optional>
 
 namespace iblkit::render {
 namespace {
@@ -37,6 +38,19 @@ void requireConverged(const ReferenceImage& reference, const RenderSettings& set
                                   100 * settings.standardErrorBound));
 }
 
+// The Monte Carlo reference of the grid, refused unless it converged.
+ReferenceImage convergedReference(const vulkan::VulkanContext& context, const SphereGrid& grid, BakedMaps& maps,
+                                  const std::vector<RenderLight>& lights, const SphereImage& splitSum,
+                                  const RenderSettings& settings, double floor, bake::BakeProgress& progress) {
+    kernels::Kernel kernel(
+        context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(settings.bsdf))));
+    auto reference = renderReference(context, kernel, grid, maps.source, lights, splitSum,
+                                     {settings.cellSize, settings.maxSamples, settings.seed, floor, settings.standardErrorBound},
+                                     progress);
+    requireConverged(reference, settings);
+    return reference;
+}
+
 } // namespace
 
 RenderSummary renderSpheres(const RenderSettings& settings, const std::string& toolVersion, bake::BakeProgress& progress) {
@@ -48,28 +62,27 @@ RenderSummary renderSpheres(const RenderSettings& settings, const std::string& t
     const vulkan::VulkanContext context(settings.context);
     auto maps = bakeMaps(context, input, settings.recipe, progress);
     auto splitSumKernel = bake::makeKernel(context, kernels::KernelRole::RenderSplitSum);
-    kernels::Kernel referenceKernel(
-        context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(settings.bsdf))));
     const auto& grid = defaultSphereGrid();
     const auto splitSum = renderSplitSum(context, splitSumKernel, grid, maps, settings.cellSize, progress);
     const double floor = kRelativeFloor * std::max(meanLuminance(maps), 1e-30);
-    const auto reference = renderReference(context, referenceKernel, grid, maps.source, lights, splitSum,
-                                           {settings.cellSize, settings.maxSamples, settings.seed, floor, settings.standardErrorBound},
-                                           progress);
-    requireConverged(reference, settings);
     RenderSummary summary;
-    summary.spheres = sphereErrors(grid, reference, splitSum, settings.cellSize, floor);
-    const RenderReport report{environmentName(settings), settings.bsdf, settings.recipe.name, &grid, settings.cellSize, floor,
-                              settings.standardErrorBound,
-                              exposureOf(maps), &reference, &summary.spheres};
+    RenderReport report{environmentName(settings), settings.bsdf, settings.recipe.name, &grid, settings.cellSize, floor,
+                        settings.standardErrorBound, exposureOf(maps)};
+    std::optional<ReferenceImage> reference;
+    if (!settings.splitSumOnly) {
+        reference = convergedReference(context, grid, maps, lights, splitSum, settings, floor, progress);
+        summary.spheres = sphereErrors(grid, *reference, splitSum, settings.cellSize, floor);
+        summary.meanSamples = reference->meanSamples;
+        summary.maxSamples = reference->maxSamples;
+        summary.maxRelativeStandardError = reference->maxRelativeStandardError;
+        report.reference = &*reference;
+        report.spheres = &summary.spheres;
+    }
     summary.files = writeRenderFiles(directory.staging(), report, splitSum);
     writeManifest(directory.staging(), toolVersion, summary.files);
     directory.commit();
     summary.outputDir = settings.outputDir;
     summary.device = context.deviceInfo().name;
-    summary.meanSamples = reference.meanSamples;
-    summary.maxSamples = reference.maxSamples;
-    summary.maxRelativeStandardError = reference.maxRelativeStandardError;
     summary.wallMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return summary;
 }

@@ -26,7 +26,7 @@ struct RenderSummary {
 // (the reference) and by the split sum from the environment's default bake, and writes both with
 // their errors into settings.outputDir, all or nothing (as a bake's folder: bake_directory.hpp).
 // A reference that is not within kStandardErrorBound after settings.maxSamples is refused, and
-// nothing is written. Throws RenderError, bake::BakeError, image_io::ImageError,
+// nothing is written. With settings.splitSumOnly, the split sum alone: its images and the grid. Throws RenderError, bake::BakeError, image_io::ImageError,
 // compiler::CompileError or vulkan::VulkanError.
 RenderSummary renderSpheres(const RenderSettings& settings, const std::string& toolVersion, bake::BakeProgress& progress);
 

@@ -21,6 +21,10 @@ float filmic(float value) {
 
 image_io::FloatImage floatImage(const SphereImage& image) { return {image.width, image.height, 4, image.rgba}; }
 
+void writePng(const std::filesystem::path& path, const Rgba8Image& image) {
+    image_io::writePng(path, image.width, image.height, image.rgba);
+}
+
 nlohmann::json sphereJson(const SphereError& sphere) {
     return {{"row", sphere.row},
             {"column", sphere.column},
@@ -63,45 +67,58 @@ Rgba8Image toneMapped(const SphereImage& image, float exposure) {
     return result;
 }
 
-nlohmann::json errorsJson(const RenderReport& report) {
+nlohmann::json referenceJson(const RenderReport& report) {
     const auto& reference = *report.reference;
+    return {{"samples_per_pixel", {{"min", reference.minSamples}, {"mean", reference.meanSamples}, {"max", reference.maxSamples}}},
+            {"standard_error_bound", report.standardErrorBound},
+            {"max_relative_standard_error", reference.maxRelativeStandardError},
+            {"p99_relative_standard_error", reference.p99RelativeStandardError},
+            {"converged", reference.converged},
+            {"device_ms", reference.deviceMilliseconds}};
+}
+
+nlohmann::json errorsJson(const RenderReport& report) {
+    nlohmann::json json = {{"generator", "iblkit"},
+                           {"environment", report.environment},
+                           {"recipe", report.recipe},
+                           {"grid", gridJson(*report.grid, report.cellSize)},
+                           {"exposure", report.exposure}};
+    if (!report.reference) return json;
     nlohmann::json spheres = nlohmann::json::array();
     for (const auto& sphere : *report.spheres) spheres.push_back(sphereJson(sphere));
-    return {{"generator", "iblkit"},
-            {"environment", report.environment},
-            {"reference_bsdf", nameOf(report.bsdf)},
-            {"recipe", report.recipe},
-            {"grid", gridJson(*report.grid, report.cellSize)},
-            {"relative_to", {{"floor", report.floor}, {"floor_share_of_mean_radiance", kRelativeFloor}}},
-            {"exposure", report.exposure},
-            {"reference", {{"samples_per_pixel", {{"min", reference.minSamples}, {"mean", reference.meanSamples},
-                                                  {"max", reference.maxSamples}}},
-                           {"standard_error_bound", report.standardErrorBound},
-                           {"max_relative_standard_error", reference.maxRelativeStandardError},
-                           {"p99_relative_standard_error", reference.p99RelativeStandardError},
-                           {"converged", reference.converged},
-                           {"device_ms", reference.deviceMilliseconds}}},
-            {"spheres", spheres}};
+    json["reference_bsdf"] = nameOf(report.bsdf);
+    json["relative_to"] = {{"floor", report.floor}, {"floor_share_of_mean_radiance", kRelativeFloor}};
+    json["reference"] = referenceJson(report);
+    json["spheres"] = spheres;
+    return json;
 }
+
+namespace {
+
+void writeReferenceFiles(const std::filesystem::path& folder, const RenderReport& report, const SphereImage& splitSum) {
+    const auto& reference = *report.reference;
+    writePng(folder / "reference.png", toneMapped(reference.mean, report.exposure));
+    std::vector<bool> covered(size_t(splitSum.width) * splitSum.height);
+    for (size_t pixel = 0; pixel < covered.size(); ++pixel) covered[pixel] = reference.mean.covered(pixel);
+    writePng(folder / "error.png",
+             heatMap(relativeErrors(reference.mean, splitSum, report.floor), covered, splitSum.width, splitSum.height));
+    image_io::writeExr(folder / "reference.exr", floatImage(reference.mean));
+    image_io::writeExr(folder / "standard_error.exr", {splitSum.width, splitSum.height, 4, reference.standardError});
+}
+
+} // namespace
 
 std::vector<bake::WrittenFile> writeRenderFiles(const std::filesystem::path& folder, const RenderReport& report,
                                                 const SphereImage& splitSum) {
-    const auto& reference = *report.reference;
-    const auto writePng = [&](const char* name, const Rgba8Image& image) {
-        image_io::writePng(folder / name, image.width, image.height, image.rgba);
-    };
-    writePng("reference.png", toneMapped(reference.mean, report.exposure));
-    writePng("splitsum.png", toneMapped(splitSum, report.exposure));
-    std::vector<bool> covered(size_t(splitSum.width) * splitSum.height);
-    for (size_t pixel = 0; pixel < covered.size(); ++pixel) covered[pixel] = reference.mean.covered(pixel);
-    writePng("error.png", heatMap(relativeErrors(reference.mean, splitSum, report.floor), covered, splitSum.width, splitSum.height));
-    image_io::writeExr(folder / "reference.exr", floatImage(reference.mean));
-    image_io::writeExr(folder / "standard_error.exr", {splitSum.width, splitSum.height, 4, reference.standardError});
+    if (report.reference) writeReferenceFiles(folder, report, splitSum);
+    const auto names = report.reference ? std::vector<std::string>{"reference.png", "reference.exr", "standard_error.exr",
+                                                                   "splitsum.png", "splitsum.exr", "error.png", "errors.json"}
+                                        : std::vector<std::string>{"splitsum.png", "splitsum.exr", "errors.json"};
+    writePng(folder / "splitsum.png", toneMapped(splitSum, report.exposure));
     image_io::writeExr(folder / "splitsum.exr", floatImage(splitSum));
     writeText(folder / "errors.json", errorsJson(report).dump(2) + "\n");
     std::vector<bake::WrittenFile> files;
-    for (const char* name : {"reference.png", "reference.exr", "standard_error.exr", "splitsum.png", "splitsum.exr",
-                             "error.png", "errors.json"})
+    for (const auto& name : names)
         files.push_back({name, cache::sha256OfFile(folder / name), size_t(std::filesystem::file_size(folder / name))});
     return files;
 }

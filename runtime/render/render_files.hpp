@@ -33,13 +33,13 @@ struct RenderReport {
     double floor = 0;
     double standardErrorBound = 0;
     float exposure = 1;
-    const ReferenceImage* reference = nullptr;
-    const std::vector<SphereError>* spheres = nullptr;
+    const ReferenceImage* reference = nullptr;         // none for the split sum alone
+    const std::vector<SphereError>* spheres = nullptr; // the same
 };
 nlohmann::json errorsJson(const RenderReport& report);
 
-// reference.png/.exr, standard_error.exr, splitsum.png/.exr, error.png and errors.json into
-// `folder`; the files written, with their hashes, for the manifest.
+// splitsum.png/.exr and errors.json into `folder`, and with a reference also reference.png/.exr,
+// standard_error.exr and error.png; the files written, with their hashes, for the manifest.
 std::vector<bake::WrittenFile> writeRenderFiles(const std::filesystem::path& folder, const RenderReport& report,
                                                 const SphereImage& splitSum);
 

@@ -58,6 +58,9 @@ struct RenderSettings {
     uint32_t seed = 1;
     bool sanitize = false; // as the bake's --sanitize and --strict
     bool strict = false;
+    // The split sum alone: no reference, so no errors; for a quick look, or for comparing the
+    // split sum with another renderer's.
+    bool splitSumOnly = false;
     vulkan::ContextOptions context;
 };
 

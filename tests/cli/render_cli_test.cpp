@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 namespace iblkit::testing {
@@ -32,10 +33,16 @@ std::vector<std::string> renderCommand(const fs::path& environment, const fs::pa
     return command;
 }
 
-TEST(RenderCli, WritesBothImagesTheErrorMapAndTheTable) {
+// The split sum alone, at the small render's cell size.
+std::vector<std::string> splitSumOnlyCommand(const fs::path& environment, const fs::path& output) {
+    return {IBLKIT_EXECUTABLE, "render", environment.string(), "-o", output.string(), "-q", "--cell-size", "9", "--split-sum-only"};
+}
+
+TEST(RenderCli, WritesBothImagesTheErrorMapAndTheTableOrTheSplitSumAlone) {
     TempFolder folder;
+    const auto environment = whitePanorama(folder);
     const auto output = folder.path() / "render";
-    const auto result = runProcess(renderCommand(whitePanorama(folder), output));
+    const auto result = runProcess(renderCommand(environment, output));
     ASSERT_EQ(result.exitCode, 0) << result.err;
     for (const char* name : {"reference.png", "reference.exr", "standard_error.exr", "splitsum.png", "splitsum.exr",
                              "error.png", "errors.json", "manifest.json"})
@@ -48,6 +55,21 @@ TEST(RenderCli, WritesBothImagesTheErrorMapAndTheTable) {
     EXPECT_EQ(errors.at("grid").at("roughness").size(), 13u);
     EXPECT_EQ(errors.at("recipe"), "kit");
     EXPECT_GT(errors.at("spheres").at(0).at("pixels").get<int>(), 40);
+
+    // The split sum alone: the same image, the same grid, nothing of a reference.
+    const auto alone = folder.path() / "alone";
+    const auto aloneResult = runProcess(splitSumOnlyCommand(environment, alone));
+    ASSERT_EQ(aloneResult.exitCode, 0) << aloneResult.err;
+    std::vector<std::string> written;
+    for (const auto& entry : fs::directory_iterator(alone)) written.push_back(entry.path().filename().string());
+    std::sort(written.begin(), written.end());
+    EXPECT_EQ(written, (std::vector<std::string>{"errors.json", "manifest.json", "splitsum.exr", "splitsum.png"}));
+    EXPECT_EQ(readFile(alone / "splitsum.exr"), readFile(output / "splitsum.exr"));
+    const auto aloneErrors = nlohmann::json::parse(readFile(alone / "errors.json"));
+    EXPECT_EQ(aloneErrors.at("grid"), errors.at("grid"));
+    EXPECT_EQ(aloneErrors.at("exposure"), errors.at("exposure"));
+    EXPECT_FALSE(aloneErrors.contains("reference"));
+    EXPECT_FALSE(aloneErrors.contains("spheres"));
 }
 
 TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
@@ -69,6 +91,18 @@ TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
     refused({{"--bsdf", "phong"}}, "--bsdf");
     refused({{"--recipe", "phong"}}, "--recipe no shading recipe 'phong'");
     refused({{"--samples", "256"}, {"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
+    // The reference's options mean nothing without it.
+    const std::map<std::string, std::string> referenceOptions = {
+        {"--samples", "256"}, {"--max-standard-error", "0.1"}, {"--lights", environment.string()}, {"--bsdf", "document"},
+        {"--seed", "2"}};
+    for (const auto& [option, value] : referenceOptions) {
+        auto command = splitSumOnlyCommand(environment, output);
+        command.insert(command.end(), {option, value});
+        const auto result = runProcess(command);
+        EXPECT_NE(result.exitCode, 0) << option;
+        EXPECT_NE(result.err.find(option + " excludes --split-sum-only"), std::string::npos) << result.err;
+        EXPECT_FALSE(fs::exists(output)) << option;
+    }
 }
 
 TEST(RenderCli, AFailedRenderLeavesTheEarlierOneAsItWas) {

@@ -79,9 +79,7 @@ test('mutation: maps of the linear mapping fail the comparison', async () => {
 // change sign.
 test("Babylon.js's SH of our DDS are the kit's", async () => {
   const folder = session.bake(null, 'sky-sh', '--profile', 'babylon');
-  const page = await session.browser.openPage('babylon', { '/bake/': folder });
-  const theirs = await page.evaluate((request) => window.iblkitSphericalHarmonics(request), { bake: '/bake' });
-  await page.close();
+  const theirs = await session.evaluate('iblkitSphericalHarmonics', folder);
   const manifest = JSON.parse(readFileSync(path.join(folder, 'manifest.json'), 'utf8'));
   const zSign = [1, 1, -1, 1, 1, -1, 1, -1, 1];
   const departure = (signs) => {

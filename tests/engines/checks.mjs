@@ -15,14 +15,17 @@ import { luminance, spherePixels } from './spheres.mjs';
 export const white = [1, 1, 1];
 const roughnesses = [0, 0.25, 0.5, 0.75, 1];
 
+// One page a session, its scratch folder served at /scratch/: loading Babylon.js's modules takes
+// 9 s, each time a page opens.
 export class EngineSession {
-  constructor(page, profile, { cell = 64 } = {}) {
-    Object.assign(this, { page, profile, cell });
+  constructor(pageName, profile, { cell = 64 } = {}) {
+    Object.assign(this, { pageName, profile, cell });
   }
 
   async open() {
-    this.scratch = scratchFolder(this.page);
+    this.scratch = scratchFolder(this.pageName);
     this.browser = await Browser.open();
+    this.page = await this.browser.openPage(this.pageName, { '/scratch/': this.scratch.folder });
   }
 
   async close() {
@@ -34,13 +37,18 @@ export class EngineSession {
 
   bake(environment, name, ...flags) { return bake(environment, this.folder(name), ...flags); }
 
+  // Calls the page's window[name](request) with request.bake the URL of `bakeFolder`; what the
+  // page logged as errors meanwhile fails the test.
+  async evaluate(name, bakeFolder, request = {}) {
+    this.page.errors.length = 0;
+    const bakeUrl = `/scratch/${path.relative(this.scratch.folder, bakeFolder)}`;
+    const result = await this.page.evaluate((name, request) => window[name](request), name, { bake: bakeUrl, ...request });
+    assert.deepEqual(this.page.errors, [], 'the page logged errors');
+    return result;
+  }
+
   async render(bakeFolder, spheres, options = {}) {
-    const page = await this.browser.openPage(this.page, { '/bake/': bakeFolder });
-    const image = await page.evaluate((request) => window.iblkitRender(request),
-                                      { bake: '/bake', spheres, cell: this.cell, ...options });
-    assert.deepEqual(page.errors, [], 'the page logged errors');
-    await page.close();
-    return image;
+    return this.evaluate('iblkitRender', bakeFolder, { spheres, cell: this.cell, ...options });
   }
 
   // The largest |pixel - 1| of white metal and white dielectric spheres at five roughnesses in

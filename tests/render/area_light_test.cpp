@@ -63,7 +63,7 @@ glm::dvec3 panelIntegral(const reference::SurfacePoint<double>& X) {
 // The most standard errors any rough enough sphere centre is from the environment's integral
 // with the square's share replaced by the square's radiance.
 double worstDeviation(const kernels::ShaderFiles& files = kernels::embeddedShaderFiles()) {
-    const auto rendered = renderGrid(brightFront(), {panel()}, ReferenceBsdf::Document, 0.005, files);
+    const auto rendered = renderCentres(brightFront(), {panel()}, ReferenceBsdf::Document, 0.005, files);
     double worst = 0;
     for (uint32_t row = 0; row < opaqueRows(); ++row)
         for (uint32_t column = 0; column < columns(); ++column) {

@@ -41,10 +41,26 @@ struct Rendered {
     ReferenceImage reference;
 };
 
+inline size_t centreOf(uint32_t row, uint32_t column) {
+    return size_t(row * kCell + kCell / 2) * (columns() * kCell) + column * kCell + kCell / 2;
+}
+
+// Which pixels the reference traces: every pixel a sphere covers, or only each cell's centre, for
+// the tests that read no other (a 57th of the paths).
+enum class Traced { EveryPixel, Centres };
+
+inline SphereImage coverageOf(const SphereImage& splitSum, Traced traced) {
+    if (traced == Traced::EveryPixel) return splitSum;
+    SphereImage centres{splitSum.width, splitSum.height, std::vector<float>(splitSum.rgba.size(), 0.f)};
+    for (uint32_t row = 0; row < grid().rowCount(); ++row)
+        for (uint32_t column = 0; column < columns(); ++column) centres.rgba[4 * centreOf(row, column) + 3] = 1.f;
+    return centres;
+}
+
 // 8192 paths per pixel, fewer where every pixel is within `bound` sooner.
 inline Rendered renderGrid(const bake::EnvironmentInput& input, const std::vector<RenderLight>& lights, ReferenceBsdf bsdf,
-                    double bound, const kernels::ShaderFiles& files = kernels::embeddedShaderFiles(),
-                    uint32_t pathsPerDispatch = 0) {
+                           double bound, const kernels::ShaderFiles& files = kernels::embeddedShaderFiles(),
+                           uint32_t pathsPerDispatch = 0, Traced traced = Traced::EveryPixel) {
     const vulkan::VulkanContext context(vulkan::ContextOptions{});
     bake::BakeProgress progress(true);
     auto maps = bakeMaps(context, input, shading::defaultRecipe(), progress);
@@ -52,13 +68,15 @@ inline Rendered renderGrid(const bake::EnvironmentInput& input, const std::vecto
     kernels::Kernel referenceKernel(
         context, kernels::compileKernel(kernels::kernelFor(kernels::KernelRole::RenderReference, methodOf(bsdf)), {}, {}, files));
     auto splitSum = renderSplitSum(context, splitSumKernel, grid(), maps, kCell, progress);
-    auto reference = renderReference(context, referenceKernel, grid(), maps.source, lights, splitSum,
+    auto reference = renderReference(context, referenceKernel, grid(), maps.source, lights, coverageOf(splitSum, traced),
                                      {kCell, 8192, 7, kFloorShare, bound, pathsPerDispatch}, progress);
     return {std::move(splitSum), std::move(reference)};
 }
 
-inline size_t centreOf(uint32_t row, uint32_t column) {
-    return size_t(row * kCell + kCell / 2) * (columns() * kCell) + column * kCell + kCell / 2;
+// renderGrid's reference at the cells' centres alone.
+inline Rendered renderCentres(const bake::EnvironmentInput& input, const std::vector<RenderLight>& lights, ReferenceBsdf bsdf,
+                              double bound, const kernels::ShaderFiles& files = kernels::embeddedShaderFiles()) {
+    return renderGrid(input, lights, bsdf, bound, files, 0, Traced::Centres);
 }
 
 inline glm::dvec3 rgbAt(const std::vector<float>& rgba, size_t pixel) {

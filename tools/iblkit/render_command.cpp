@@ -33,7 +33,12 @@ nlohmann::json summaryJson(const render::RenderSummary& summary) {
             {"spheres", spheres}};
 }
 
-void printSummary(const render::RenderSummary& summary) {
+void printSummary(const render::RenderSummary& summary, bool splitSumOnly) {
+    if (splitSumOnly) {
+        fmt::print(stderr, "rendered {} on {} in {:.1f} s: the split sum alone, no reference and no errors\n",
+                   summary.outputDir.string(), summary.device, summary.wallMilliseconds / 1e3);
+        return;
+    }
     double worstMean = 0;
     for (const auto& sphere : summary.spheres) worstMean = std::max(worstMean, sphere.meanRelativeError);
     fmt::print(stderr,
@@ -67,24 +72,29 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("ENV", arguments->environment,
                         "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
     command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the render succeeds)")->required();
-    command->add_option("--samples", s.maxSamples,
-                        fmt::format("Most paths per pixel for the reference; it stops sooner once every pixel's standard "
-                                    "error is within the bound (default {})",
-                                    render::kDefaultMaxSamples));
-    command->add_option("--max-standard-error", s.standardErrorBound,
-                        fmt::format("The reference's bound: each pixel's standard error against its value (or {} % of the "
-                                    "environment's mean radiance, if more), as a fraction (default {})",
-                                    100 * render::kRelativeFloor, render::kDefaultStandardErrorBound));
-    command->add_option("--lights", arguments->lights, "A JSON file of directional, point and area lights (docs/render.md)");
-    command->add_option("--bsdf", arguments->bsdf,
-                        "The reference's BSDF: document (the path tracer's, as ported) or split-sum (the same with the "
-                        "split sum's k and diffuse weight, leaving only the approximation in the error)")
-        ->check(CLI::IsMember({"document", "split-sum"}));
+    auto* samples = command->add_option("--samples", s.maxSamples,
+                                        fmt::format("Most paths per pixel for the reference; it stops sooner once every "
+                                                    "pixel's standard error is within the bound (default {})",
+                                                    render::kDefaultMaxSamples));
+    auto* bound = command->add_option("--max-standard-error", s.standardErrorBound,
+                                      fmt::format("The reference's bound: each pixel's standard error against its value "
+                                                  "(or {} % of the environment's mean radiance, if more), as a fraction "
+                                                  "(default {})",
+                                                  100 * render::kRelativeFloor, render::kDefaultStandardErrorBound));
+    auto* lights =
+        command->add_option("--lights", arguments->lights, "A JSON file of directional, point and area lights (docs/render.md)");
+    auto* bsdf = command->add_option("--bsdf", arguments->bsdf,
+                                     "The reference's BSDF: document (the path tracer's, as ported) or split-sum (the same "
+                                     "with the split sum's k and diffuse weight, leaving only the approximation in the error)")
+                     ->check(CLI::IsMember({"document", "split-sum"}));
     command->add_option("--recipe", arguments->recipe,
                         fmt::format("How the split sum's maps are made and read (docs/shading.md; default {})",
                                     shading::defaultRecipe().name));
     command->add_option("--cell-size", s.cellSize, fmt::format("Pixels across each sphere's cell (default {})", render::kDefaultCellSize));
-    command->add_option("--seed", s.seed, "The reference's random seed (default 1)");
+    auto* seed = command->add_option("--seed", s.seed, "The reference's random seed (default 1)");
+    command->add_flag("--split-sum-only", s.splitSumOnly,
+                      "Render the split sum alone: splitsum.png/.exr and the grid in errors.json, no reference and no errors")
+        ->excludes(samples)->excludes(bound)->excludes(lights)->excludes(bsdf)->excludes(seed);
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
     command->add_flag("--strict", s.strict, "Refuse negative input texels instead of clamping them to 0");
     command->add_flag("--validate", s.context.validation, "Run with the Vulkan validation layer; any message fails the render");
@@ -105,7 +115,7 @@ void addRenderCommand(CLI::App& app) {
         for (const auto& message : log->messages()) fmt::print(stderr, "validation: {}\n", message);
         if (!log->messages().empty()) throw ExpectationsFailed{};
         if (arguments->json) fmt::print("{}\n", summaryJson(summary).dump(2));
-        if (!arguments->quiet) printSummary(summary);
+        if (!arguments->quiet) printSummary(summary, settings.splitSumOnly);
     });
 }
 

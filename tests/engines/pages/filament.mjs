@@ -120,14 +120,16 @@ async function addSuns(bake, manifest, engine, scene) {
   }
 }
 
+// Each render on a canvas of its own, with its own engine and WebGL2 context, destroyed after.
 async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
   const Filament = window.Filament; // complete once Filament.init has called back
   const placed = spheres.map((sphere, index) => ({ column: index, row: 0, ...sphere }));
   const columns = Math.max(...placed.map((s) => s.column)) + 1, rows = Math.max(...placed.map((s) => s.row)) + 1;
   const width = cell * columns, height = cell * rows;
-  const canvas = document.getElementById('canvas');
+  const canvas = document.createElement('canvas');
   canvas.width = width;
   canvas.height = height;
+  textures.clear();
   const engine = Filament.Engine.create(canvas);
   const scene = engine.createScene();
   const swapChain = engine.createSwapChain();
@@ -158,7 +160,10 @@ async function renderSpheres({ bake, spheres, cell, span = 1, lights = true }) {
     engine.execute?.();
     await new Promise((resolve) => requestAnimationFrame(resolve));
   }
-  return { width, height, pixels: Array.from(readFloatTarget(gl, width, height)) };
+  const pixels = Array.from(readFloatTarget(gl, width, height));
+  Filament.Engine.destroy(engine);
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return { width, height, pixels };
 }
 
 window.iblkitRender = renderSpheres;
