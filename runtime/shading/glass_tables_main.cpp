@@ -1,5 +1,5 @@
-// Writes the C++ source of shading/built_glass_tables.hpp's tables, computed here: each float as a
-// hexadecimal literal, which the compiler reads back exactly.
+// Writes runtime/shading/built_glass_tables.cpp, the tables of shading/built_glass_tables.hpp
+// computed here: each float as a hexadecimal literal, which the compiler reads back exactly.
 #include "shading/sphere_transmission.hpp"
 #include "shading/transmission_table.hpp"
 
@@ -34,7 +34,8 @@ int main(int argc, char** argv) {
     try {
         using namespace iblkit::shading;
         std::ofstream out(argv[1], std::ios::binary);
-        out << "// Written by runtime/shading/glass_tables_main.cpp when the kit is built.\n"
+        out << "// Written by runtime/shading/glass_tables_main.cpp (cmake --build build --target refresh-glass-tables);\n"
+               "// do not edit. tests/shading/built_glass_tables_test.cpp checks it against the computation.\n"
                "#include \"shading/built_glass_tables.hpp\"\n\nnamespace iblkit::shading {\n\n";
         writeTable(out, "builtTransmissionTable", transmissionTable(kTransmissionTableSize));
         writeTable(out, "builtSphereTransmissionTable", sphereTransmissionTable(kTransmissionTableSize));
