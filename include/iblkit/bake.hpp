@@ -132,6 +132,7 @@ struct BakeSummary {
     std::vector<std::string> cacheWarnings; // why an output could not be cached (the bake went on)
     KernelCacheCounts compiledKernels;      // kernels taken from the cache, and compiled
     size_t pipelineCacheBytes = 0;          // Vulkan pipeline cache data an earlier bake on this device left
+    std::vector<std::string> sceneNotes;    // what the scene's reader assumed or clamped (a material factor outside [0, 1])
     std::vector<std::string> validationMessages; // with validation on: any message means the bake is suspect
     std::string json; // the summary (without the validation messages) as `iblkit bake --json` prints it
 };

@@ -29,7 +29,8 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}},
             {"compiled_kernels", {{"hits", kernels.hits}, {"misses", kernels.misses}, {"stale", kernels.stale},
                                   {"damaged", kernels.damaged}}},
-            {"pipeline_cache_bytes", summary.pipelineCacheBytes}};
+            {"pipeline_cache_bytes", summary.pipelineCacheBytes},
+            {"scene_notes", summary.sceneNotes}};
 }
 
 } // namespace
@@ -49,6 +50,7 @@ BakeSummary bakeSummaryOf(const bake::BakeSummary& summary) {
     result.mostNegative = summary.negativeTexels.mostNegative;
     result.cache = {summary.cache.hits, summary.cache.misses, summary.cache.corrupt};
     result.cacheWarnings = summary.cacheWarnings;
+    result.sceneNotes = summary.sceneNotes;
     const auto& kernels = summary.compiledKernels;
     result.compiledKernels = {kernels.hits, kernels.misses, kernels.stale, kernels.damaged};
     result.pipelineCacheBytes = summary.pipelineCacheBytes;

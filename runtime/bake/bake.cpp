@@ -39,7 +39,7 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
     validateSettings(settings);
     if (destination == BakeDestination::Folder && settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     // A scene that cannot be read fails before any device work.
-    const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene)) : std::nullopt;
+    const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene, settings.strict)) : std::nullopt;
     if (destination == BakeDestination::Folder)
         prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
 
@@ -105,7 +105,7 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     const auto& input = prepared.input;
     return {settings.outputDir, outputs.device, progress.steps(), wall, files, outputs.sh.shRadiance, clamps,
             input.sanitizedTexels, input.negative, maps.cache, outputs.cacheWarnings, outputs.compiledKernels,
-            outputs.pipelineCacheBytes};
+            outputs.pipelineCacheBytes, prepared.plan.notes};
 }
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {

@@ -36,6 +36,7 @@ struct BakeSummary {
     std::vector<std::string> cacheWarnings; // why an output could not be cached (the bake went on)
     kernels::CompiledKernelCache::Counts compiledKernels; // kernels taken from the cache and compiled (zeros without a device)
     size_t pipelineCacheBytes = 0;        // Vulkan pipeline cache data an earlier bake on this device left
+    std::vector<std::string> sceneNotes;  // what the scene's reader assumed or clamped (BakePlan::notes)
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

@@ -24,19 +24,31 @@ namespace fs = std::filesystem;
 
 using image_io::quoted;
 
-// The files an earlier bake wrote, by name within its folder, with their SHA-256; nothing when
-// the folder holds no manifest.json that iblkit wrote with its list of files.
-std::optional<std::map<std::string, std::string>> earlierBakeFiles(const fs::path& folder) {
+// What an earlier folder's manifest.json says: the command that wrote it, and the files it wrote
+// by name within the folder, with their SHA-256.
+struct EarlierOutput {
+    std::string command;
+    std::map<std::string, std::string> files;
+};
+
+// Its "command"; a manifest from before that field: "render" for a render's, "bake" for any other.
+std::string commandOf(const nlohmann::json& manifest) {
+    if (manifest.contains("command") && manifest["command"].is_string()) return manifest["command"];
+    return manifest.value("kind", "") == "render" ? "render" : "bake";
+}
+
+// Nothing when the folder holds no manifest.json that iblkit wrote with its list of files.
+std::optional<EarlierOutput> earlierOutput(const fs::path& folder) {
     std::ifstream stream(folder / "manifest.json");
     if (!stream) return std::nullopt;
     const auto manifest = nlohmann::json::parse(stream, nullptr, false);
     if (!manifest.is_object() || manifest.value("generator", "") != "iblkit" || !manifest.contains("files") ||
         !manifest["files"].is_array())
         return std::nullopt;
-    std::map<std::string, std::string> files;
+    EarlierOutput earlier{commandOf(manifest), {}};
     for (const auto& file : manifest["files"])
-        if (file.is_object() && file.value("name", "") != "") files[file.value("name", "")] = file.value("sha256", "");
-    return files;
+        if (file.is_object() && file.value("name", "") != "") earlier.files[file.value("name", "")] = file.value("sha256", "");
+    return earlier;
 }
 
 bool isInside(const fs::path& path, const fs::path& folder) {
@@ -115,7 +127,7 @@ fs::path makeStagingFolder(const fs::path& target) {
 
 } // namespace
 
-void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& input) {
+void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& input, std::string_view command) {
     const auto target = followed(requested);
     std::error_code error;
     if (input && (isInside(*input, target) || isInside(target, *input)))
@@ -130,16 +142,19 @@ void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& i
     if (!fs::is_directory(target, error)) throw BakeError(quoted(target) + " exists and is not a folder");
     requireWritable(target.parent_path().empty() ? fs::path(".") : target.parent_path(), target);
     if (fs::is_empty(target, error)) return requireWritable(target, target);
-    const auto files = earlierBakeFiles(target);
-    if (!files)
+    const auto earlier = earlierOutput(target);
+    if (!earlier)
         throw BakeError(quoted(target) + " is a folder with other files (no manifest.json written by iblkit); "
                         "refusing to replace it");
-    requireOnlyBakeFiles(target, *files);
+    if (earlier->command != command)
+        throw BakeError(quoted(target) + " holds the output of iblkit " + earlier->command + " (its manifest.json says so), " +
+                        "not of iblkit " + std::string(command) + "; refusing to replace it");
+    requireOnlyBakeFiles(target, earlier->files);
 }
 
-BakeDirectory::BakeDirectory(fs::path target, const std::optional<fs::path>& input)
-    : target_(followed(std::move(target))), input_(input) {
-    checkBakeTarget(target_, input_);
+BakeDirectory::BakeDirectory(fs::path target, const std::optional<fs::path>& input, std::string_view command)
+    : target_(followed(std::move(target))), input_(input), command_(command) {
+    checkBakeTarget(target_, input_, command_);
     staging_ = makeStagingFolder(target_);
     cleanup_ = std::make_unique<files::RemovedOnSignal>(staging_);
 }
@@ -150,7 +165,7 @@ BakeDirectory::~BakeDirectory() {
 }
 
 void BakeDirectory::commit() {
-    checkBakeTarget(target_, input_);
+    checkBakeTarget(target_, input_, command_);
     std::error_code error;
     if (!fs::exists(target_, error)) {
         fs::rename(staging_, target_, error);

@@ -5,20 +5,23 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace iblkit::bake {
 
 // Where a bake writes: a fresh folder beside the target, swapped into place only when every
 // file is written, so a failed or killed bake never touches what the target holds. The target
-// (a link to a folder is followed) must be absent, an empty folder, or an earlier bake: a folder
-// holding only manifest.json and the files its "files" list names, each still with its
-// SHA-256. Anything else is refused before any work, as is a target that holds the input, or
+// (a link to a folder is followed) must be absent, an empty folder, or an earlier output of the
+// same command (`command`, as the manifest's "command" says): a folder holding only manifest.json
+// and the files its "files" list names, each still with its SHA-256. Anything else is refused before any work, as is a target that holds the input, or
 // one the bake could not replace (read-only). The staging folder follows the umask, and is
 // removed when the bake fails or SIGINT, SIGTERM or SIGHUP stop it (files::cleanUpOnSignals).
 // Throws BakeError.
 class BakeDirectory {
 public:
-    BakeDirectory(std::filesystem::path target, const std::optional<std::filesystem::path>& input);
+    BakeDirectory(std::filesystem::path target, const std::optional<std::filesystem::path>& input,
+                  std::string_view command = "bake");
     BakeDirectory(const BakeDirectory&) = delete;
     BakeDirectory& operator=(const BakeDirectory&) = delete;
     ~BakeDirectory(); // removes the staging folder unless committed
@@ -31,12 +34,14 @@ public:
 private:
     std::filesystem::path target_;
     std::optional<std::filesystem::path> input_;
+    std::string command_;
     std::filesystem::path staging_;
     std::unique_ptr<files::RemovedOnSignal> cleanup_;
     bool committed_ = false;
 };
 
 // Throws BakeError unless `target` may receive a bake that reads `input` (see BakeDirectory).
-void checkBakeTarget(const std::filesystem::path& target, const std::optional<std::filesystem::path>& input);
+void checkBakeTarget(const std::filesystem::path& target, const std::optional<std::filesystem::path>& input,
+                     std::string_view command = "bake");
 
 } // namespace iblkit::bake

@@ -379,6 +379,7 @@ json bakeManifest(const ManifestFacts& facts) {
         irradiance["sh"] = std::move(sh);
     }
     json manifest = {{"generator", "iblkit"},
+                     {"command", "bake"},
                      {"version", facts.toolVersion},
                      {"manifest_format", 1},
                      {"device", facts.device},

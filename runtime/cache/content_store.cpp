@@ -14,8 +14,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kMagic = "IBLKCAS1"; // then the payload's SHA-256 in hex, a newline, the payload
-constexpr size_t kHeader = 8 + 64 + 1;
+// Then the entry's key and a newline, the payload's SHA-256 in hex and a newline, the payload. The
+// key inside the entry makes one copied or renamed to another key's path damaged, not another's
+// value.
+constexpr std::string_view kMagic = "IBLKCAS2";
+// Entries of the first format, which carried no key: misses, replaced, not damaged.
+constexpr std::string_view kEarlierMagic = "IBLKCAS1";
+
+std::string keyLine(const std::string& key) { return std::string(kMagic) + key + '\n'; }
+
+std::string headerOf(const std::string& key, std::string_view payload) { return keyLine(key) + sha256Hex(payload) + '\n'; }
+
+// The payload of `entry` if it is whole and holds `key`'s value.
+std::optional<std::string_view> payloadOf(std::string_view entry, const std::string& key) {
+    const auto prefix = keyLine(key);
+    const size_t header = prefix.size() + 64 + 1;
+    if (entry.size() < header || !entry.starts_with(prefix) || entry[header - 1] != '\n') return std::nullopt;
+    const auto payload = entry.substr(header);
+    if (entry.substr(prefix.size(), 64) != sha256Hex(payload)) return std::nullopt;
+    return payload;
+}
 
 std::optional<std::string> readWhole(const fs::path& path) {
     std::error_code error;
@@ -46,16 +64,16 @@ std::optional<std::string> ContentStore::get(const std::string& key) {
         ++counts_.misses;
         return std::nullopt;
     }
-    const bool whole = entry->size() >= kHeader && std::string_view(*entry).substr(0, 8) == kMagic && (*entry)[72] == '\n';
-    if (!whole || entry->compare(8, 64, sha256Hex(std::string_view(*entry).substr(kHeader))) != 0) {
+    const auto payload = payloadOf(*entry, key);
+    if (!payload) {
         std::error_code ignored;
-        fs::remove(path, ignored); // damaged: computed again and written anew
-        ++counts_.corrupt;
+        fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
+        if (!entry->starts_with(kEarlierMagic)) ++counts_.corrupt;
         ++counts_.misses;
         return std::nullopt;
     }
     ++counts_.hits;
-    entry->erase(0, kHeader);
+    entry->erase(0, entry->size() - payload->size());
     return entry;
 }
 
@@ -67,7 +85,7 @@ void ContentStore::put(const std::string& key, std::string_view payload) {
     const auto temporary = temporaryBeside(path);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << kMagic << sha256Hex(payload) << '\n';
+        out << headerOf(key, payload);
         out.write(payload.data(), std::streamsize(payload.size()));
         if (!out) {
             fs::remove(temporary, error);

@@ -8,9 +8,9 @@
 
 namespace iblkit::cache {
 
-// Entries by key (CacheKey::hex()) under FOLDER/objects/ab/abcd...: each holds its payload's
-// SHA-256 beside the payload, so an entry damaged on disk is found when it is read, removed, and
-// counted a miss. An entry is written to a temporary file and renamed into place, so bakes that
+// Entries by key (CacheKey::hex()) under FOLDER/objects/ab/abcd...: each holds its key and its
+// payload's SHA-256 beside the payload, so an entry damaged on disk, or copied or renamed to
+// another key's place, is found when it is read, removed, and counted a miss. An entry is written to a temporary file and renamed into place, so bakes that
 // share the folder never read half an entry; two that make the same entry write the same bytes,
 // and the last rename wins.
 class ContentStore {

@@ -21,7 +21,7 @@ namespace {
 
 void writeManifest(const std::filesystem::path& folder, const std::string& toolVersion,
                    std::vector<bake::WrittenFile> files) {
-    const nlohmann::json manifest = {{"generator", "iblkit"}, {"version", toolVersion}, {"kind", "render"},
+    const nlohmann::json manifest = {{"generator", "iblkit"}, {"version", toolVersion}, {"command", "render"}, {"kind", "render"},
                                      {"files", bake::filesJson(files)}};
     writeText(folder / "manifest.json", manifest.dump(2) + "\n");
 }
@@ -57,7 +57,7 @@ RenderSummary renderSpheres(const RenderSettings& settings, const std::string& t
     const auto started = std::chrono::steady_clock::now();
     validateSettings(settings);
     const auto lights = settings.lights ? readLightsFile(*settings.lights) : std::vector<RenderLight>{};
-    bake::BakeDirectory directory(settings.outputDir, settings.environment);
+    bake::BakeDirectory directory(settings.outputDir, settings.environment, "render");
     const auto input = bake::loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
     const vulkan::VulkanContext context(settings.context);
     auto maps = bakeMaps(context, input, settings.recipe, progress);

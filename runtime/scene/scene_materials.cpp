@@ -1,15 +1,22 @@
 #include "scene_materials.hpp"
 
 #include "scene_error.hpp"
+#include "scene_files.hpp"
 
 #include <tiny_gltf.h>
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <set>
 
 namespace iblkit::scene {
 namespace {
+
+struct FactorCheck {
+    const std::filesystem::path& file;
+    bool strict;
+};
 
 // Extensions that change nothing image-based lighting needs: emission, the index of refraction
 // and specular colour (the same lobes), texture transforms (the whole texture's range is kept),
@@ -67,18 +74,34 @@ ValueRange textured(const tinygltf::Model& model, int textureIndex, size_t chann
     return ValueRange::of(ranges[channel].min * factor, ranges[channel].max * factor);
 }
 
-MaterialNeeds needsOf(const tinygltf::Model& model, const tinygltf::Material& material, size_t index) {
+// glTF's factors lie in [0, 1]. One outside is clamped into it, with a note naming it, or refused
+// with `strict`: a roughness of 1.5 would otherwise ask for no prefiltered mip at all.
+double factorIn01(double factor, const char* name, const FactorCheck& check, MaterialNeeds& needs) {
+    if (factor >= 0 && factor <= 1) return factor;
+    if (check.strict)
+        throw SceneError(fmt::format("{}: error: {}: {} {} is outside [0, 1] (--strict refuses it)", check.file.string(),
+                                     needs.name, name, factor));
+    const double clamped = std::clamp(factor, 0.0, 1.0);
+    needs.notes.push_back(fmt::format("{} {} is outside [0, 1]: clamped to {}", name, factor, clamped));
+    return clamped;
+}
+
+MaterialNeeds needsOf(const tinygltf::Model& model, const tinygltf::Material& material, size_t index, const FactorCheck& check) {
     MaterialNeeds needs;
     needs.name = material.name.empty() ? fmt::format("material {}", index) : material.name;
     const auto& pbr = material.pbrMetallicRoughness;
     const int metallicRoughness = pbr.metallicRoughnessTexture.index;
-    needs.roughness = textured(model, metallicRoughness, 1, pbr.roughnessFactor, "metallicRoughness", needs);
-    needs.metalness = textured(model, metallicRoughness, 2, pbr.metallicFactor, "metallicRoughness", needs);
+    needs.roughness = textured(model, metallicRoughness, 1, factorIn01(pbr.roughnessFactor, "roughnessFactor", check, needs),
+                               "metallicRoughness", needs);
+    needs.metalness = textured(model, metallicRoughness, 2, factorIn01(pbr.metallicFactor, "metallicFactor", check, needs),
+                               "metallicRoughness", needs);
     for (const auto& [name, value] : material.extensions) {
         if (name == "KHR_materials_unlit") needs.unlit = true;
         else if (name == "KHR_materials_clearcoat" && numberOr(value, "clearcoatFactor", 0) > 0)
-            needs.clearcoatRoughness = textured(model, textureIndexOf(value, "clearcoatRoughnessTexture"), 1,
-                                                numberOr(value, "clearcoatRoughnessFactor", 0), "clearcoatRoughness", needs);
+            needs.clearcoatRoughness =
+                textured(model, textureIndexOf(value, "clearcoatRoughnessTexture"), 1,
+                         factorIn01(numberOr(value, "clearcoatRoughnessFactor", 0), "clearcoatRoughnessFactor", check, needs),
+                         "clearcoatRoughness", needs);
         else if (name == "KHR_materials_transmission" && numberOr(value, "transmissionFactor", 0) > 0) needs.transmission = true;
         else if (name == "KHR_materials_volume") needs.transmission = true;
         else if (!isUnderstoodExtension(name)) needs.unknownExtensions.push_back(name);
@@ -103,18 +126,38 @@ bool loadImageOrLeaveEmpty(tinygltf::Image* image, const int index, std::string*
     return true;
 }
 
+// The JSON of a .gltf, or the JSON chunk of a .glb (its header, then the chunk's length and type);
+// empty when the container is too short to say, which tinygltf then reports.
+std::string_view jsonOf(const std::vector<unsigned char>& bytes, bool binary) {
+    const auto text = std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (!binary) return text;
+    if (bytes.size() < 20) return {};
+    const uint32_t length = uint32_t(bytes[12]) | uint32_t(bytes[13]) << 8 | uint32_t(bytes[14]) << 16 | uint32_t(bytes[15]) << 24;
+    return text.substr(20, length);
+}
+
 tinygltf::Model load(const std::filesystem::path& file) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) throw SceneError(file.string() + ": error: no such scene file");
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
-    tinygltf::Model model;
-    std::string problem, warning;
+    if (!std::filesystem::exists(file, error)) throw SceneError(file.string() + ": error: no such scene file");
     const bool binary = file.extension() == ".glb";
     if (!binary && file.extension() != ".gltf")
         throw SceneError(file.string() + ": error: not a glTF scene (.gltf or .glb)");
-    const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &problem, &warning, file.string())
-                               : loader.LoadASCIIFromFile(&model, &problem, &warning, file.string());
+    const auto bytes = readSceneFile(file);
+    requireJsonNestingWithin(jsonOf(bytes, binary), file);
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
+    readReferencedFilesByThePolicy(loader);
+    tinygltf::Model model;
+    std::string problem, warning;
+    const auto folder = file.parent_path().string();
+    bool loaded = false;
+    try {
+        loaded = binary ? loader.LoadBinaryFromMemory(&model, &problem, &warning, bytes.data(), unsigned(bytes.size()), folder)
+                        : loader.LoadASCIIFromString(&model, &problem, &warning, reinterpret_cast<const char*>(bytes.data()),
+                                                     unsigned(bytes.size()), folder);
+    } catch (const ReferencedFileRefused& refused) {
+        throw SceneError(file.string() + ": error: " + refused.what());
+    }
     if (!loaded) {
         auto line = problem.empty() ? std::string("tinygltf could not read it") : problem;
         while (!line.empty() && (line.back() == '\n' || line.back() == ' ')) line.pop_back();
@@ -130,10 +173,11 @@ bool isUnderstoodExtension(const std::string& name) {
     return kNeutralExtensions.contains(name) || kNeedsExtensions.contains(name);
 }
 
-SceneMaterials readSceneMaterials(const std::filesystem::path& file) {
+SceneMaterials readSceneMaterials(const std::filesystem::path& file, bool strict) {
     const auto model = load(file);
     SceneMaterials scene{file, {}, {}};
-    for (size_t i = 0; i < model.materials.size(); ++i) scene.materials.push_back(needsOf(model, model.materials[i], i));
+    for (size_t i = 0; i < model.materials.size(); ++i)
+        scene.materials.push_back(needsOf(model, model.materials[i], i, {file, strict}));
     if (usesTheDefaultMaterial(model) || model.materials.empty()) {
         MaterialNeeds fallback;
         fallback.name = "the default material";

@@ -16,7 +16,7 @@ struct MaterialNeeds {
     ValueRange metalness;
     ValueRange clearcoatRoughness;      // KHR_materials_clearcoat with a clearcoat: a second specular lobe
     bool transmission = false;          // KHR_materials_transmission or _volume: refraction reads the specular chain
-    std::vector<std::string> notes;     // what was assumed (a texture whose texels could not be read)
+    std::vector<std::string> notes;     // what was assumed or clamped (a texture whose texels could not be read, a factor past 1)
     std::vector<std::string> unknownExtensions; // extensions on the material the kit does not understand
 };
 
@@ -28,8 +28,9 @@ struct SceneMaterials {
 
 // Reads a glTF 2.0 scene (.gltf with its buffers and images, or .glb) with tinygltf and derives
 // each material's needs. A scene without materials has glTF's default material (roughness 1,
-// metalness 1). Throws SceneError naming the file and the problem.
-SceneMaterials readSceneMaterials(const std::filesystem::path& file);
+// metalness 1). A roughness, metallic or clearcoat roughness factor outside [0, 1] is clamped
+// into it with a note, or with `strict` refused. Throws SceneError naming the file and the problem.
+SceneMaterials readSceneMaterials(const std::filesystem::path& file, bool strict = false);
 
 // The extensions that the needs above account for.
 bool isUnderstoodExtension(const std::string& name);

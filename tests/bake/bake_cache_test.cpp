@@ -1,6 +1,6 @@
 // The bake's cache: a repeated bake opens no device and writes the same files, a changed setting
 // recomputes only what depends on it, one LUT serves every environment, a damaged entry is
-// computed again, keys follow every kernel source and header, and bakes racing on one cache
+// computed again, and so is one moved to another key's place, keys follow every kernel source and header, and bakes racing on one cache
 // both end well.
 #include "bake.hpp"
 #include "bake_cache.hpp"
@@ -117,6 +117,32 @@ TEST_F(BakeCache, ADamagedEntryIsComputedAgain) {
     EXPECT_TRUE(openedADevice(second));
     EXPECT_EQ(fileText(scratch.path() / "first" / "specular.ktx2"), fileText(scratch.path() / "second" / "specular.ktx2"));
     EXPECT_EQ(bake(settings("third")).cache.misses, 0u) << "written anew";
+}
+
+// The specular entry of another environment copied to this one's place: damaged, not served.
+TEST_F(BakeCache, AnEntryMovedToAnotherKeysPlaceIsDamagedNotServed) {
+    const auto specularEntries = [&] {
+        std::vector<fs::path> found;
+        for (const auto& entry : fs::recursive_directory_iterator(scratch.path() / "cache"))
+            if (entry.is_regular_file() && fileText(entry.path()).find(R"("name":"specular")") != std::string::npos)
+                found.push_back(entry.path());
+        return found;
+    };
+    bake(settings("sky"));
+    const auto skySpecular = specularEntries();
+    ASSERT_EQ(skySpecular.size(), 1u);
+    image_io::writeExr(scratch.path() / "grey.exr", {64, 32, 3, std::vector<float>(64 * 32 * 3, 0.5f)});
+    auto grey = settings("grey");
+    grey.environment = scratch.path() / "grey.exr";
+    bake(grey);
+    auto greySpecular = specularEntries();
+    std::erase(greySpecular, skySpecular[0]);
+    ASSERT_EQ(greySpecular.size(), 1u);
+    fs::copy_file(skySpecular[0], greySpecular[0], fs::copy_options::overwrite_existing);
+    grey.outputDir = scratch.path() / "grey-again";
+    const auto again = bake(grey);
+    EXPECT_EQ(again.cache.corrupt, 1u);
+    EXPECT_EQ(fileText(scratch.path() / "grey" / "specular.ktx2"), fileText(scratch.path() / "grey-again" / "specular.ktx2"));
 }
 
 TEST_F(BakeCache, BakesRacingOnOneCacheBothEndWell) {

@@ -107,6 +107,7 @@ TEST_F(BuiltInBake, WritesEveryFileTheManifestListsWithItsHash) {
     std::ifstream stream(out("manifest.json"));
     const auto manifest = nlohmann::json::parse(stream);
     EXPECT_EQ(manifest["generator"], "iblkit");
+    EXPECT_EQ(manifest["command"], "bake");
     EXPECT_EQ(manifest["input"]["kind"], "built-in");
     std::set<std::string> names;
     for (const auto& file : manifest["files"]) {

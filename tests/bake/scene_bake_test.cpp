@@ -3,6 +3,7 @@
 #include "bake.hpp"
 #include "files.hpp"
 #include "ktx2.hpp"
+#include "scene_error.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -84,6 +85,28 @@ TEST_F(SceneBake, AnUnlitSceneBakesNothingButItsPreview) {
     EXPECT_TRUE(fs::exists(unlit / "preview.png"));
     const auto manifest = manifestOf(unlit);
     for (const auto& file : manifest.at("files")) EXPECT_TRUE(fs::exists(unlit / file.at("name").get<std::string>()));
+}
+
+// glTF's roughness stops at 1: a factor of 1.5 once left every mip unfiltered. Clamped, it bakes
+// the roughest mip as roughness 1 does, and the bake says so; --strict refuses it.
+TEST_F(SceneBake, ARoughnessFactorPastOneBakesAsOneAndSaysSoOrIsRefusedWhenStrict) {
+    const auto one = bake("one", R"({"pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 1}})");
+    BakeSettings settings;
+    settings.outputDir = scratch.path() / "past-one";
+    settings.size = 64;
+    settings.lutSize = 16;
+    settings.irradianceSize = 8;
+    settings.scene = scratch.write("past-one.gltf", R"({"asset": {"version": "2.0"}, "materials": [
+        {"name": "chrome", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 1.5}}]})");
+    BakeProgress progress(true);
+    const auto summary = bakeEnvironment(settings, "test", progress);
+    EXPECT_EQ(summary.sceneNotes, std::vector<std::string>{"chrome: roughnessFactor 1.5 is outside [0, 1]: clamped to 1"});
+    EXPECT_EQ(manifestOf(settings.outputDir).at("specular").at("prefiltered_mips"), manifestOf(one).at("specular").at("prefiltered_mips"));
+    EXPECT_EQ(ktx2Values(settings.outputDir / "specular.ktx2"), ktx2Values(one / "specular.ktx2"));
+    settings.strict = true;
+    settings.outputDir = scratch.path() / "strict";
+    EXPECT_THROW(bakeEnvironment(settings, "test", progress), scene::SceneError);
+    EXPECT_FALSE(fs::exists(settings.outputDir));
 }
 
 } // namespace

@@ -1,9 +1,10 @@
-// The content store: what is put is got back, a damaged entry is a miss that is written anew,
-// keys follow every part they are made of, and writers racing on one folder never leave half an
-// entry to be read.
+// The content store: what is put is got back, a damaged entry (or one moved to another key's
+// place) is a miss that is written anew, keys follow every part they are made of, and writers
+// racing on one folder never leave half an entry to be read.
 #include "cache_error.hpp"
 #include "cache_key.hpp"
 #include "content_store.hpp"
+#include "sha256.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -46,6 +47,39 @@ TEST(ContentStore, ADamagedEntryIsAMissAndIsRemoved) {
     fs::resize_file(path, 20); // cut short
     EXPECT_FALSE(store.get(key));
     EXPECT_EQ(store.counts().corrupt, 2u);
+}
+
+TEST(ContentStore, AnEntryCopiedOrRenamedToAnotherKeysPlaceIsDamaged) {
+    iblkit::testing::TempFolder folder;
+    ContentStore store(folder.path());
+    const auto one = CacheKey().add("what", "one").hex(), two = CacheKey().add("what", "two").hex();
+    const auto three = CacheKey().add("what", "three").hex();
+    const auto pathOf = [&](const std::string& key) { return folder.path() / "objects" / key.substr(0, 2) / key; };
+    store.put(one, "the first value");
+    store.put(two, "the second value");
+    fs::copy_file(pathOf(one), pathOf(two), fs::copy_options::overwrite_existing);
+    EXPECT_FALSE(store.get(two));
+    EXPECT_EQ(store.counts().corrupt, 1u);
+    EXPECT_EQ(store.get(one), "the first value");
+    fs::create_directories(pathOf(three).parent_path());
+    fs::rename(pathOf(one), pathOf(three));
+    EXPECT_FALSE(store.get(three));
+    EXPECT_EQ(store.counts().corrupt, 2u);
+    EXPECT_FALSE(fs::exists(pathOf(three)));
+}
+
+// The first format held no key: its entries are misses, replaced, and not called damaged.
+TEST(ContentStore, AnEntryOfTheEarlierFormatIsAMissNotDamage) {
+    iblkit::testing::TempFolder folder;
+    ContentStore store(folder.path());
+    const auto key = CacheKey().add("what", "lut").hex();
+    const auto path = folder.path() / "objects" / key.substr(0, 2) / key;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << "IBLKCAS1" << sha256Hex("payload") << '\n' << "payload";
+    EXPECT_FALSE(store.get(key));
+    EXPECT_EQ(store.counts().corrupt, 0u);
+    EXPECT_EQ(store.counts().misses, 1u);
+    EXPECT_FALSE(fs::exists(path));
 }
 
 TEST(CacheKey, EveryPartAndItsLabelCount) {

@@ -53,5 +53,21 @@ TEST(PlanCli, ASceneItCannotReadIsOneLine) {
     EXPECT_NE(badSetting.err.find("--size"), std::string::npos) << badSetting.err;
 }
 
+// The plan once planned for an environment the bake then refused.
+TEST(PlanCli, AnEnvironmentTheBakeRefusesThePlanRefusesInOneLine) {
+    TempFolder folder;
+    const auto scene = folder.write("metal.gltf", kMetalScene).string();
+    for (const auto& [environment, expected] :
+         {std::pair{(folder.path() / "missing.hdr").string(), std::string("missing.hdr")},
+          std::pair{folder.write("garbage.hdr", "not an image").string(), std::string("garbage.hdr")},
+          std::pair{folder.path().string(), folder.path().filename().string()}}) {
+        const auto result = runProcess({IBLKIT_EXECUTABLE, "plan", scene, environment});
+        EXPECT_NE(result.exitCode, 0) << environment;
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_EQ(result.out, "") << environment;
+    }
+}
+
 } // namespace
 } // namespace iblkit::testing

@@ -120,5 +120,30 @@ TEST(RenderCli, AFailedRenderLeavesTheEarlierOneAsItWas) {
     EXPECT_EQ(readFile(notARender), "keep me");
 }
 
+// Any manifest the kit wrote once passed as an earlier output: a render over a bake deleted the
+// bake, and a bake over a render the render.
+TEST(RenderCli, ABakesFolderIsNotARendersAndARendersNotABakes) {
+    TempFolder folder;
+    const auto environment = whitePanorama(folder);
+    const auto bake = folder.path() / "bake", render = folder.path() / "render";
+    ASSERT_EQ(runProcess({IBLKIT_EXECUTABLE, "bake", environment.string(), "-o", bake.string(), "--size", "16", "--no-cache", "-q"})
+                  .exitCode,
+              0);
+    ASSERT_EQ(runProcess(splitSumOnlyCommand(environment, render)).exitCode, 0);
+    const auto bakeManifest = readFile(bake / "manifest.json"), renderManifest = readFile(render / "manifest.json");
+    const auto overBake = runProcess(splitSumOnlyCommand(environment, bake));
+    EXPECT_NE(overBake.exitCode, 0);
+    EXPECT_NE(overBake.err.find("holds the output of iblkit bake (its manifest.json says so), not of iblkit render"),
+              std::string::npos)
+        << overBake.err;
+    const auto overRender =
+        runProcess({IBLKIT_EXECUTABLE, "bake", environment.string(), "-o", render.string(), "--size", "16", "--no-cache", "-q"});
+    EXPECT_NE(overRender.exitCode, 0);
+    EXPECT_NE(overRender.err.find("holds the output of iblkit render"), std::string::npos) << overRender.err;
+    EXPECT_EQ(readFile(bake / "manifest.json"), bakeManifest);
+    EXPECT_EQ(readFile(render / "manifest.json"), renderManifest);
+    EXPECT_EQ(runProcess(splitSumOnlyCommand(environment, render)).exitCode, 0) << "a render still replaces a render";
+}
+
 } // namespace
 } // namespace iblkit::testing

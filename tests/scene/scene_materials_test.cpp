@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 namespace iblkit::scene {
 namespace {
+
+namespace fs = std::filesystem;
 
 class SceneMaterials : public ::testing::Test {
 protected:
@@ -100,6 +104,60 @@ TEST_F(SceneMaterials, APrimitiveWithoutAMaterialHasTheDefaultOne) {
     ASSERT_EQ(scene.materials.size(), 2u);
     EXPECT_EQ(scene.materials[1].name, "the default material");
     EXPECT_EQ(scene.materials[1].metalness, ValueRange::of(1, 1));
+}
+
+// A roughness of 1.5 once asked for no prefiltered mip at all, and a negative one for mips the
+// plan then called unneeded.
+TEST_F(SceneMaterials, AFactorOutsideZeroToOneIsClampedWithANoteOrRefusedWhenStrict) {
+    const std::string materials = R"({"name": "chrome", "pbrMetallicRoughness": {"roughnessFactor": 1.5, "metallicFactor": -0.5}},
+                                     {"name": "coat", "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1,
+                                                                                                "clearcoatRoughnessFactor": 1e30}}})";
+    const auto scene = read(materials);
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.materials[0].roughness, ValueRange::of(1, 1));
+    EXPECT_EQ(scene.materials[0].metalness, ValueRange::of(0, 0));
+    EXPECT_EQ(scene.materials[0].notes, (std::vector<std::string>{"roughnessFactor 1.5 is outside [0, 1]: clamped to 1",
+                                                                  "metallicFactor -0.5 is outside [0, 1]: clamped to 0"}));
+    EXPECT_EQ(scene.materials[1].clearcoatRoughness, ValueRange::of(1, 1));
+    EXPECT_EQ(scene.materials[1].notes, std::vector<std::string>{"clearcoatRoughnessFactor 1e+30 is outside [0, 1]: clamped to 1"});
+    const auto file = folder.write("strict.gltf", R"({"asset": {"version": "2.0"}, "materials": [)" + materials + "]}");
+    try {
+        readSceneMaterials(file, true);
+        ADD_FAILURE() << "--strict took a roughness of 1.5";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  file.string() + ": error: chrome: roughnessFactor 1.5 is outside [0, 1] (--strict refuses it)");
+    }
+}
+
+// tinygltf's parser recursed once a level: 20,000 nested arrays in `extras` overflowed the stack.
+TEST_F(SceneMaterials, JsonNestedPastTheLimitIsRefusedInTheGltfAndInTheGlb) {
+    const std::string json = R"({"asset": {"version": "2.0"}, "extras": )" + std::string(20000, '[') + std::string(20000, ']') + "}";
+    const std::string expected = "its JSON nests arrays and objects more than 256 deep";
+    const auto gltf = errorOf("deep.gltf", json);
+    EXPECT_EQ(gltf, (folder.path() / "deep.gltf").string() + ": error: " + expected);
+    std::string chunk = json;
+    while (chunk.size() % 4) chunk += ' ';
+    const auto word = [](uint32_t value) { return std::string{char(value), char(value >> 8), char(value >> 16), char(value >> 24)}; };
+    const std::string glb = "glTF" + word(2) + word(uint32_t(20 + chunk.size())) + word(uint32_t(chunk.size())) + "JSON" + chunk;
+    EXPECT_EQ(errorOf("deep.glb", glb), (folder.path() / "deep.glb").string() + ": error: " + expected);
+    EXPECT_EQ(read("{}", R"(, "extras": )" + std::string(200, '[') + std::string(200, ']')).materials.size(), 1u)
+        << "200 levels are within the limit";
+}
+
+// A folder once came back as std::bad_alloc and a FIFO waited forever for a writer: each is
+// refused, naming the file the scene names.
+TEST_F(SceneMaterials, AFileTheSceneNamesMustBeARegularFile) {
+    fs::create_directories(folder.path() / "folder.bin");
+    ASSERT_EQ(::mkfifo((folder.path() / "fifo.png").c_str(), 0600), 0);
+    for (const auto& [uri, kind] : {std::pair{std::string("folder.bin"), "buffers"}, std::pair{std::string("fifo.png"), "images"}}) {
+        const std::string entry = std::string(kind) == "buffers" ? R"({"uri": ")" + uri + R"(", "byteLength": 4})"
+                                                                 : R"({"uri": ")" + uri + R"("})";
+        const auto error = errorOf("names.gltf", R"({"asset": {"version": "2.0"}, ")" + std::string(kind) + R"(": [)" + entry + "]}");
+        EXPECT_EQ(error.find((folder.path() / "names.gltf").string() + ": error: "), 0u) << error;
+        EXPECT_NE(error.find(uri + ": not a regular file (a folder, a device or a pipe)"), std::string::npos) << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
 }
 
 TEST_F(SceneMaterials, ABadSceneIsOneLineNamingTheFile) {

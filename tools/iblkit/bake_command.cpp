@@ -31,6 +31,7 @@ void printPolicyReports(const BakeSummary& summary) {
         fmt::print(stderr, "clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n",
                    summary.negativeTexels, summary.mostNegative);
     for (const auto& warning : summary.cacheWarnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const auto& note : summary.sceneNotes) fmt::print(stderr, "warning: {}\n", note);
     const auto sanitized = summary.sanitizedTexels;
     if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
 }
@@ -67,8 +68,8 @@ void addBakeCommand(CLI::App& app) {
     command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
     command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
     command->add_flag("--strict", s.strict,
-                      "Refuse negative input texels and values beyond 65504 in 16-bit outputs instead of clamping "
-                      "them (to 0 and to 65504, each reported)");
+                      "Refuse negative input texels, values beyond 65504 in 16-bit outputs and a scene's material "
+                      "factors outside [0, 1] instead of clamping them (to 0, to 65504 and into [0, 1], each reported)");
     command->add_flag("--validate", s.validation, "Run with the Vulkan validation layer; any message fails the bake");
     command->add_option("--device", s.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet,

@@ -33,10 +33,14 @@ void addPlanCommand(CLI::App& app) {
         request.lutFormat = lutFormatNamed(arguments->lutFormat);
         const auto settings = api::bakeSettingsOf(request);
         bake::validateSettings(settings);
-        // Only a cube input has a size of its own; its texels' NaN or negative values are the bake's to judge.
+        // Read as the bake reads it, so that the plan refuses what the bake refuses (a missing,
+        // unreadable or undecodable file); only a cube input has a size of its own. Its texels' NaN
+        // or negative values are the bake's to judge.
         uint32_t inputCubeSize = 0;
-        if (settings.environment && bake::isCubeInput(*settings.environment))
-            inputCubeSize = bake::loadEnvironment(*settings.environment, {true, false}).cubeSize;
+        if (settings.environment) {
+            const auto input = bake::loadEnvironment(*settings.environment, {true, false});
+            if (bake::isCubeInput(*settings.environment)) inputCubeSize = input.cubeSize;
+        }
         const auto size = bake::resolvedSize(settings, inputCubeSize);
         const auto plan = bake::planBake(settings, size, scene::readSceneMaterials(arguments->scene));
         if (arguments->json) fmt::print("{}\n", bake::planJson(plan).dump(2));

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+namespace tinygltf {
+class TinyGLTF;
+}
+
+namespace iblkit::scene {
+
+// One policy for a scene file and every file it names (buffers, images): a regular file (not a
+// folder, a device or a pipe, which is opened without waiting for a writer), of at most
+// kMaxSceneFileBytes, its JSON nested at most kMaxJsonNesting deep. tinygltf's parser recurses
+// once a level: 20,000 nested arrays overflowed the stack.
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(1) << 30;
+inline constexpr size_t kMaxJsonNesting = 256;
+
+// The whole file, or SceneError "<path>: error: <why>".
+std::vector<unsigned char> readSceneFile(const std::filesystem::path& path);
+
+// SceneError naming `path` when `json`'s arrays and objects nest deeper than kMaxJsonNesting.
+void requireJsonNestingWithin(std::string_view json, const std::filesystem::path& path);
+
+// A file a scene names, refused by the policy: "<that file>: <why>", for the reader to put after
+// the scene's own name.
+struct ReferencedFileRefused : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// tinygltf reads the files a scene names by the same policy; a refusal is ReferencedFileRefused,
+// thrown through tinygltf.
+void readReferencedFilesByThePolicy(tinygltf::TinyGLTF& loader);
+
+} // namespace iblkit::scene
