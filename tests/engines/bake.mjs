@@ -10,8 +10,11 @@ export function iblkit() {
   return program;
 }
 
-export function bake(environment, folder, ...flags) {
-  const args = ['bake', ...(environment ? [environment] : []), '-o', folder, '--no-cache', '-q', ...flags];
+// `cache`: the session's own cache folder, so that a bake a session repeats (a mutation's, before
+// the test rewrites its files) is served from it; none: --no-cache.
+export function bake(environment, folder, { cache } = {}, ...flags) {
+  const caching = cache ? ['--cache', cache] : ['--no-cache'];
+  const args = ['bake', ...(environment ? [environment] : []), '-o', folder, ...caching, '-q', ...flags];
   execFileSync(iblkit(), args, { stdio: ['ignore', 'ignore', 'inherit'], env: { XDG_RUNTIME_DIR: '/tmp', ...process.env } });
   return folder;
 }

@@ -35,7 +35,7 @@ export class EngineSession {
 
   folder(name) { return path.join(this.scratch.folder, name); }
 
-  bake(environment, name, ...flags) { return bake(environment, this.folder(name), ...flags); }
+  bake(environment, name, ...flags) { return bake(environment, this.folder(name), { cache: this.folder('cache') }, ...flags); }
 
   // Calls the page's window[name](request) with request.bake the URL of `bakeFolder`; what the
   // page logged as errors meanwhile fails the test.
