@@ -1,5 +1,6 @@
 #include "scene_materials.hpp"
 
+#include "gltf_shape.hpp"
 #include "scene_error.hpp"
 #include "scene_files.hpp"
 
@@ -144,6 +145,7 @@ tinygltf::Model load(const std::filesystem::path& file) {
         throw SceneError(file.string() + ": error: not a glTF scene (.gltf or .glb)");
     const auto bytes = readSceneFile(file);
     requireJsonNestingWithin(jsonOf(bytes, binary), file);
+    requireGltfShape(jsonOf(bytes, binary), file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
     readReferencedFilesByThePolicy(loader);

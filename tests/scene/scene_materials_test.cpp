@@ -1,6 +1,6 @@
 // What each glTF material needs, from small scenes written here: factors, the texels of its
 // metallicRoughness texture, unlit, clearcoat, transmission, volume, the default material, and
-// the extensions the kit does not understand, listed.
+// the extensions the kit does not understand, listed; and the scenes and files it refuses.
 #include "float_image.hpp"
 #include "scene_error.hpp"
 #include "scene_materials.hpp"
@@ -157,6 +157,29 @@ TEST_F(SceneMaterials, AFileTheSceneNamesMustBeARegularFile) {
         EXPECT_EQ(error.find((folder.path() / "names.gltf").string() + ": error: "), 0u) << error;
         EXPECT_NE(error.find(uri + ": not a regular file (a folder, a device or a pipe)"), std::string::npos) << error;
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+}
+
+// tinygltf read each of these without a word: a factor it could not read became the default, a
+// material index out of range was dropped, and any version passed.
+TEST_F(SceneMaterials, MalformedGltfIsRefusedInOneLineNamingWhereAndWhat) {
+    const std::string asset = R"("asset": {"version": "2.0"})";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({"asset": {"version": "1.0"}})", R"(asset.version "1.0" is not 2.x: the kit reads glTF 2.0)"},
+        {R"({"asset": {"version": "3.0"}})", R"(asset.version "3.0" is not 2.x: the kit reads glTF 2.0)"},
+        {"{" + asset + R"(, "materials": {}})", "materials is an object, not an array"},
+        {"{" + asset + R"(, "materials": [{"pbrMetallicRoughness": {"roughnessFactor": "high"}}]})",
+         "materials[0].pbrMetallicRoughness.roughnessFactor is a string, not a number"},
+        {"{" + asset + R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1]}}]})",
+         "materials[0].pbrMetallicRoughness.baseColorFactor is not an array of four numbers"},
+        {"{" + asset + R"(, "materials": [{}], "meshes": [{"primitives": [{"attributes": {}, "material": 5}]}]})",
+         "meshes[0].primitives[0].material 5 is outside materials (1 of them)"},
+        {"{" + asset + R"(, "materials": [{"pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": 3}}}]})",
+         "materials[0].pbrMetallicRoughness.metallicRoughnessTexture.index 3 is outside textures (0 of them)"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const auto error = errorOf("malformed.gltf", text);
+        EXPECT_EQ(error, (folder.path() / "malformed.gltf").string() + ": error: " + expected) << text;
     }
 }
 
