@@ -115,6 +115,20 @@ void AtomicOutput::discard() {
     pending_.clear();
 }
 
+void requireWritableFile(const std::filesystem::path& path, const std::string& option) {
+    namespace fs = std::filesystem;
+    const auto name = option + " " + path.string();
+    if (path.empty()) throw FileError(option + " names no file");
+    std::error_code error;
+    const auto status = fs::status(path, error);
+    if (fs::is_directory(status)) throw FileError(name + ": is a folder, not a file");
+    if (fs::exists(status) && !fs::is_regular_file(status)) throw FileError(name + ": is not a regular file");
+    const auto folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (!fs::is_directory(folder, error)) throw FileError(name + ": the folder " + folder.string() + " does not exist");
+    if (::access(folder.c_str(), W_OK) != 0)
+        throw FileError(name + ": the folder " + folder.string() + " is not writable (" + std::strerror(errno) + ")");
+}
+
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents) {
     AtomicOutput output;
     output.add(path, contents);

@@ -50,6 +50,10 @@ bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 void requireDistinctOutputs(const std::vector<std::filesystem::path>& outputs,
                             const std::vector<std::filesystem::path>& inputs);
 
+// Throws FileError "<option> <path>: <why>" unless `path` can be written: not a folder or a device,
+// its folder there and writable. For the commands that write a report after minutes of work, before it.
+void requireWritableFile(const std::filesystem::path& path, const std::string& option);
+
 // One file, all or nothing.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents);
 

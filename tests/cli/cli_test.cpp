@@ -264,5 +264,22 @@ TEST_F(Cli, LutFitWritesTheCommittedInclude) {
     EXPECT_EQ(readFile(at("BrdfLutFit.fxh")), readFile("hlsl/Common/BrdfLutFit.fxh"));
 }
 
+// `stress --out missing/x.md` failed only after a minute of work: each report-writing command
+// now refuses a report it could not write before it starts.
+TEST(ReportCommands, AnOutputThatCannotBeWrittenIsRefusedBeforeAnyWork) {
+    TempFolder folder;
+    const auto missing = folder.path() / "missing" / "report.md";
+    for (const char* command : {"stress", "consistency", "porting"}) {
+        const auto result = runProcess({IBLKIT_EXECUTABLE, command, "--out", missing.string()});
+        EXPECT_NE(result.exitCode, 0) << command;
+        EXPECT_NE(result.err.find("--out " + missing.string() + ": the folder " + missing.parent_path().string() + " does not exist"),
+                  std::string::npos)
+            << command << ": " << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        const auto toFolder = runProcess({IBLKIT_EXECUTABLE, command, "--out", folder.path().string()});
+        EXPECT_NE(toFolder.err.find(": is a folder, not a file"), std::string::npos) << command << ": " << toFolder.err;
+    }
+}
+
 } // namespace
 } // namespace iblkit::testing

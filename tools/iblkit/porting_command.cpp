@@ -26,6 +26,7 @@ void addPortingCommand(CLI::App& app) {
     command->add_option("--out", arguments->out, "Write the feature table (markdown) here, e.g. docs/porting.md");
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
     command->callback([arguments] {
+        if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before the corpus runs
         const auto manifest = porting::readCorpusManifest(arguments->corpus);
         run::RunOptions options;
         options.device = arguments->device;

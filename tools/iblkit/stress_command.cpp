@@ -28,6 +28,7 @@ void addStressCommand(CLI::App& app) {
     command->add_option("--cache", arguments->cache, "Folder Blender's HDRIs are fetched into "
                                                      "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
     command->callback([arguments] {
+        if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before a minute of work
         auto log = std::make_shared<vulkan::ValidationLog>();
         const vulkan::VulkanContext context({arguments->device, false, log});
         stress::StressOptions options{arguments->reduced, {}};
