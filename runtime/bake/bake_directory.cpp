@@ -66,13 +66,13 @@ void requireWritable(const fs::path& folder, const fs::path& target) {
 
 // Every entry of the folder must be manifest.json, a file the earlier bake listed (still with
 // its hash), or a folder of such files.
-void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, std::string>& files) {
+void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, std::string>& files, const std::string& command) {
     requireWritable(target, target);
     for (auto it = fs::recursive_directory_iterator(target); it != fs::recursive_directory_iterator(); ++it) {
         const auto name = fs::relative(it->path(), target).generic_string();
         if (it->is_symlink() || (!it->is_regular_file() && !it->is_directory()))
             throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
-                            ", which is not a file the earlier bake wrote");
+                            ", which is not a file the earlier " + command + " wrote");
         if (it->is_directory()) {
             requireWritable(it->path(), target);
             continue;
@@ -81,10 +81,10 @@ void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, st
         const auto listed = files.find(name);
         if (listed == files.end())
             throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
-                            ", which no earlier bake wrote (its manifest.json does not list it)");
+                            ", which no earlier " + command + " wrote (its manifest.json does not list it)");
         if (cache::sha256OfFile(it->path()) != listed->second)
             throw BakeError("refusing to replace " + quoted(target) + ": " + quoted(fs::path(name)) +
-                            " changed since the earlier bake wrote it");
+                            " changed since the earlier " + command + " wrote it");
     }
 }
 
@@ -132,11 +132,11 @@ void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& i
     std::error_code error;
     if (input && (isInside(*input, target) || isInside(target, *input)))
         throw BakeError("the input " + quoted(*input) + " and the output folder " + quoted(target) +
-                        " overlap: the bake would delete its own input");
+                        " overlap: the " + std::string(command) + " would delete its own input");
     if (!fs::exists(target, error)) {
         const auto parent = nearestExisting(target.parent_path().empty() ? fs::path(".") : target.parent_path());
         if (::access(parent.c_str(), W_OK) != 0)
-            throw BakeError("cannot bake into " + quoted(target) + ": " + quoted(parent) + " is not writable");
+            throw BakeError("cannot write into " + quoted(target) + ": " + quoted(parent) + " is not writable");
         return;
     }
     if (!fs::is_directory(target, error)) throw BakeError(quoted(target) + " exists and is not a folder");
@@ -149,7 +149,7 @@ void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& i
     if (earlier->command != command)
         throw BakeError(quoted(target) + " holds the output of iblkit " + earlier->command + " (its manifest.json says so), " +
                         "not of iblkit " + std::string(command) + "; refusing to replace it");
-    requireOnlyBakeFiles(target, earlier->files);
+    requireOnlyBakeFiles(target, earlier->files, std::string(command));
 }
 
 BakeDirectory::BakeDirectory(fs::path target, const std::optional<fs::path>& input, std::string_view command)
@@ -169,7 +169,7 @@ void BakeDirectory::commit() {
     std::error_code error;
     if (!fs::exists(target_, error)) {
         fs::rename(staging_, target_, error);
-        if (error) throw BakeError("cannot move the bake into " + quoted(target_) + ": " + error.message());
+        if (error) throw BakeError("cannot move the " + command_ + " into " + quoted(target_) + ": " + error.message());
         committed_ = true;
         cleanup_.reset();
         return;
@@ -178,12 +178,12 @@ void BakeDirectory::commit() {
         // No atomic exchange here: move the earlier bake aside first, then the new one in.
         const fs::path aside = staging_.string() + ".old";
         fs::rename(target_, aside, error);
-        if (error) throw BakeError("cannot move the earlier bake out of " + quoted(target_) + ": " + error.message());
+        if (error) throw BakeError("cannot move the earlier " + command_ + " out of " + quoted(target_) + ": " + error.message());
         fs::rename(staging_, target_, error);
         if (error) {
             std::error_code ignored;
             fs::rename(aside, target_, ignored);
-            throw BakeError("cannot move the bake into " + quoted(target_) + ": " + error.message());
+            throw BakeError("cannot move the " + command_ + " into " + quoted(target_) + ": " + error.message());
         }
         staging_ = aside;
     }

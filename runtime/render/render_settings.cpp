@@ -19,6 +19,7 @@ ReferenceBsdf referenceBsdfNamed(std::string_view name) {
 }
 
 void validateSettings(const RenderSettings& settings) {
+    if (settings.outputDir.empty()) throw RenderError("no output folder (-o DIR)");
     if (settings.maxSamples < kMinSamples || settings.maxSamples > kMaxSamples)
         throw RenderError(fmt::format("--samples {} is out of range: the reference takes {} to {} samples per pixel",
                                       settings.maxSamples, kMinSamples, kMaxSamples));

@@ -84,6 +84,9 @@ TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
         EXPECT_FALSE(fs::exists(output)) << expected;
     };
     refused({{"--samples", "0"}}, "--samples 0 is out of range");
+    const auto noFolder = runProcess(splitSumOnlyCommand(environment, ""));
+    EXPECT_NE(noFolder.exitCode, 0);
+    EXPECT_NE(noFolder.err.find("no output folder (-o DIR)"), std::string::npos) << noFolder.err;
     refused({{"--cell-size", "4"}}, "--cell-size 4 is out of range");
     refused({{"--max-standard-error", "0"}}, "--max-standard-error 0 is out of range");
     refused({{"--lights", (folder.path() / "none.json").string()}}, "does not exist");
@@ -143,6 +146,8 @@ TEST(RenderCli, ABakesFolderIsNotARendersAndARendersNotABakes) {
     EXPECT_EQ(readFile(bake / "manifest.json"), bakeManifest);
     EXPECT_EQ(readFile(render / "manifest.json"), renderManifest);
     EXPECT_EQ(runProcess(splitSumOnlyCommand(environment, render)).exitCode, 0) << "a render still replaces a render";
+    const auto overInput = runProcess(splitSumOnlyCommand(environment, folder.path()));
+    EXPECT_NE(overInput.err.find("overlap: the render would delete its own input"), std::string::npos) << overInput.err;
 }
 
 } // namespace
