@@ -269,7 +269,7 @@ TEST_F(Cli, LutFitWritesTheCommittedInclude) {
 TEST(ReportCommands, AnOutputThatCannotBeWrittenIsRefusedBeforeAnyWork) {
     TempFolder folder;
     const auto missing = folder.path() / "missing" / "report.md";
-    for (const char* command : {"stress", "consistency", "porting"}) {
+    for (const char* command : {"stress", "consistency", "porting", "lut-fit"}) {
         const auto result = runProcess({IBLKIT_EXECUTABLE, command, "--out", missing.string()});
         EXPECT_NE(result.exitCode, 0) << command;
         EXPECT_NE(result.err.find("--out " + missing.string() + ": the folder " + missing.parent_path().string() + " does not exist"),

@@ -15,6 +15,7 @@ void addLutFitCommand(CLI::App& app) {
         "lut-fit", "Fit the polynomial LUT to the converged LUT at every degree and write its HLSL include");
     command->add_option("-o,--out", *out, "Write the include to this file (hlsl/Common/BrdfLutFit.fxh)");
     command->callback([out] {
+        if (!out->empty()) files::requireWritableFile(*out, "--out"); // before the fit's seconds of quadrature
         const auto include = reference::brdfLutFitInclude();
         if (out->empty()) fmt::print("{}", include);
         else files::writeFileAtomically(*out, include);
