@@ -9,8 +9,10 @@
 namespace iblkit::bench {
 
 // What writeBenchResults needs, checked before a long run: Debian's python3 with matplotlib, an
-// output folder that is one (or can be made), and the Markdown file's folder. Throws BenchError.
-void checkResultsWritable(const std::filesystem::path& folder, const std::filesystem::path& markdownFile);
+// output folder that is one (or can be made), the Markdown file's folder, and no output that is
+// one of `environments` that name files (the bench's inputs). Throws BenchError.
+void checkResultsWritable(const std::filesystem::path& folder, const std::filesystem::path& markdownFile,
+                          const std::vector<std::string>& environments);
 
 // Writes results.json, results.csv, the plots (PNG, drawn by tools/bench_plot.py with
 // matplotlib from the copy inside the program) into `folder`, and the report to `markdownFile`

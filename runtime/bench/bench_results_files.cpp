@@ -108,7 +108,7 @@ std::vector<std::pair<std::string, std::string>> drawPlots(const fs::path& resul
 
 } // namespace
 
-void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile) {
+void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile, const std::vector<std::string>& environments) {
     if (std::system(fmt::format("{} -c 'import matplotlib' 2>/dev/null", kPython).c_str()) != 0)
         throw BenchError(fmt::format("the plots need {} with matplotlib (Debian's python3-matplotlib)", kPython));
     if (fs::exists(folder) && !fs::is_directory(folder))
@@ -116,6 +116,16 @@ void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile) 
     const auto markdownFolder = markdownFile.parent_path();
     if (!markdownFile.empty() && !markdownFolder.empty() && !fs::is_directory(markdownFolder))
         throw BenchError("the folder of --markdown " + markdownFile.string() + " does not exist");
+    std::vector<fs::path> inputs;
+    for (const auto& environment : environments)
+        if (std::error_code error; fs::is_regular_file(environment, error)) inputs.emplace_back(environment);
+    std::vector<fs::path> outputs{folder / "results.json", folder / "results.csv"};
+    if (!markdownFile.empty()) outputs.push_back(markdownFile);
+    try {
+        files::requireDistinctOutputs(outputs, inputs);
+    } catch (const files::FileError& error) {
+        throw BenchError(error.what());
+    }
 }
 
 std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command, const fs::path& folder,

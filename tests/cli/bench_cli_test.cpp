@@ -80,5 +80,17 @@ TEST_F(BenchCli, BadArgumentsGetOneLineAndNothingIsWritten) {
     }
 }
 
+// `--markdown` naming the bench's own input environment once overwrote it after the run.
+TEST_F(BenchCli, AnOutputThatIsTheInputIsRefusedAndTheInputKept) {
+    const auto environment = scratch.write("sky.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n\x80\x80\x80\x81\x80\x80\x80\x81");
+    const auto before = readFile(environment);
+    const auto result = iblkit({"bench", environment.string(), "--out", at("out"), "--markdown", environment.string()});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_NE(result.err.find(environment.filename().string()), std::string::npos) << result.err;
+    EXPECT_EQ(readFile(environment), before);
+    EXPECT_FALSE(fs::exists(at("out")));
+}
+
 } // namespace
 } // namespace iblkit::testing

@@ -95,7 +95,7 @@ void addBenchCommand(CLI::App& app) {
         options.outputs = parseOutputs(arguments->outputs);
         options.cacheDir = arguments->cache;
         if (arguments->quiet) options.log = nullptr;
-        bench::checkResultsWritable(arguments->out, arguments->markdown);
+        bench::checkResultsWritable(arguments->out, arguments->markdown, options.environments);
         const auto run = bench::runBench(options);
         const auto command = invocation(options, arguments->outputs, arguments->out, arguments->markdown);
         const auto plots = bench::writeBenchResults(run, command, arguments->out, arguments->markdown);
