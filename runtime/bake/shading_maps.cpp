@@ -102,15 +102,19 @@ vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::Lobe
 
 namespace {
 
-// The table at `size`: the one built with the kit at kTransmissionTableSize, else computed, once.
-const std::vector<float>& computedOnce(std::mutex& mutex, std::map<uint32_t, std::vector<float>>& tables, uint32_t size,
-                                       std::span<const float> (*built)(), std::vector<float> (*compute)(uint32_t)) {
+template <typename Compute>
+const std::vector<float>& computedOnce(uint32_t size, const Compute& compute) {
+    static std::mutex mutex;
+    static std::map<uint32_t, std::vector<float>> tables;
     const std::lock_guard lock(mutex);
     auto found = tables.find(size);
-    if (found != tables.end()) return found->second;
-    if (size != shading::kTransmissionTableSize) return tables.emplace(size, compute(size)).first->second;
-    const auto table = built();
-    return tables.emplace(size, std::vector<float>(table.begin(), table.end())).first->second;
+    if (found == tables.end()) found = tables.emplace(size, compute(size)).first;
+    return found->second;
+}
+
+// The committed table at kTransmissionTableSize (built_glass_tables.hpp), else `compute`'s.
+std::vector<float> committedOr(uint32_t size, std::span<const float> committed, std::vector<float> (*compute)(uint32_t)) {
+    return size == shading::kTransmissionTableSize ? std::vector<float>(committed.begin(), committed.end()) : compute(size);
 }
 
 vulkan::Image layeredTable(const vulkan::VulkanContext& context, const char* name, const char* format, uint32_t size,
@@ -124,15 +128,13 @@ vulkan::Image layeredTable(const vulkan::VulkanContext& context, const char* nam
 } // namespace
 
 const std::vector<float>& transmissionTableOf(uint32_t size) {
-    static std::mutex mutex;
-    static std::map<uint32_t, std::vector<float>> tables;
-    return computedOnce(mutex, tables, size, shading::builtTransmissionTable, shading::transmissionTable);
+    return computedOnce(size, [](uint32_t n) { return committedOr(n, shading::builtTransmissionTable(), shading::transmissionTable); });
 }
 
 const std::vector<float>& sphereTransmissionTableOf(uint32_t size) {
-    static std::mutex mutex;
-    static std::map<uint32_t, std::vector<float>> tables;
-    return computedOnce(mutex, tables, size, shading::builtSphereTransmissionTable, shading::sphereTransmissionTable);
+    return computedOnce(size, [](uint32_t n) {
+        return committedOr(n, shading::builtSphereTransmissionTable(), shading::sphereTransmissionTable);
+    });
 }
 
 uint32_t transmissionTableSize(shading::GlassTransmission transmission) {

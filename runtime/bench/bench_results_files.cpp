@@ -113,15 +113,13 @@ void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile, 
         throw BenchError(fmt::format("the plots need {} with matplotlib (Debian's python3-matplotlib)", kPython));
     if (fs::exists(folder) && !fs::is_directory(folder))
         throw BenchError("--out " + folder.string() + " is not a folder");
-    const auto markdownFolder = markdownFile.parent_path();
-    if (!markdownFile.empty() && !markdownFolder.empty() && !fs::is_directory(markdownFolder))
-        throw BenchError("the folder of --markdown " + markdownFile.string() + " does not exist");
     std::vector<fs::path> inputs;
     for (const auto& environment : environments)
         if (std::error_code error; fs::is_regular_file(environment, error)) inputs.emplace_back(environment);
     std::vector<fs::path> outputs{folder / "results.json", folder / "results.csv"};
     if (!markdownFile.empty()) outputs.push_back(markdownFile);
     try {
+        if (!markdownFile.empty()) files::requireWritableFile(markdownFile, "--markdown");
         files::requireDistinctOutputs(outputs, inputs);
     } catch (const files::FileError& error) {
         throw BenchError(error.what());

@@ -64,9 +64,12 @@ size_t readInto(const FileDescriptor& file, const std::filesystem::path& path, s
 
 } // namespace
 
-std::vector<std::byte> readFileBytes(const std::filesystem::path& path) {
+std::vector<std::byte> readFileBytes(const std::filesystem::path& path, uint64_t maxBytes) {
     size_t size = 0;
     const FileDescriptor file = openRegularFile(path, size);
+    if (size > maxBytes)
+        throw ImageError("cannot open " + quoted(path) + ": " + std::to_string(size) + " bytes, past the limit of " +
+                         std::to_string(maxBytes));
     std::vector<std::byte> bytes(size);
     bytes.resize(readInto(file, path, bytes));
     return bytes;

@@ -1,61 +1,15 @@
 #include "scene_files.hpp"
 
+#include "files.hpp"
+#include "image_error.hpp"
 #include "scene_error.hpp"
 
 #include <tiny_gltf.h>
 
 #include <fmt/core.h>
 
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 namespace iblkit::scene {
 namespace {
-
-class OpenFile {
-public:
-    explicit OpenFile(const std::filesystem::path& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)) {}
-    ~OpenFile() {
-        if (fd_ >= 0) ::close(fd_);
-    }
-    OpenFile(const OpenFile&) = delete;
-    OpenFile& operator=(const OpenFile&) = delete;
-    int get() const { return fd_; }
-
-private:
-    int fd_;
-};
-
-// Why a file cannot be read by the policy.
-struct Refused {
-    std::string why;
-};
-
-[[noreturn]] void refuse(const std::string& why) { throw Refused{why}; }
-
-std::vector<unsigned char> readByThePolicy(const std::filesystem::path& path) {
-    const OpenFile file(path);
-    if (file.get() < 0) refuse(std::strerror(errno));
-    struct stat status {};
-    if (::fstat(file.get(), &status) != 0) refuse(std::strerror(errno));
-    if (!S_ISREG(status.st_mode)) refuse("not a regular file (a folder, a device or a pipe)");
-    if (uint64_t(status.st_size) > kMaxSceneFileBytes)
-        refuse(fmt::format("{} bytes, past the {} a scene's file may hold", status.st_size, kMaxSceneFileBytes));
-    std::vector<unsigned char> bytes(size_t(status.st_size));
-    size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::read(file.get(), bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) refuse(std::strerror(errno));
-        if (n == 0) break;
-        done += size_t(n);
-    }
-    bytes.resize(done);
-    return bytes;
-}
 
 bool fileExists(const std::string& path, void*) {
     std::error_code error;
@@ -66,9 +20,11 @@ std::string pathAsIs(const std::string& path, void*) { return path; }
 
 bool readWhole(std::vector<unsigned char>* out, std::string*, const std::string& path, void*) {
     try {
-        *out = readByThePolicy(path);
-    } catch (const Refused& refused) {
-        throw ReferencedFileRefused(path + ": " + refused.why);
+        const auto bytes = image_io::readFileBytes(path, kMaxSceneFileBytes);
+        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+        out->assign(data, data + bytes.size());
+    } catch (const image_io::ImageError& error) {
+        throw ReferencedFileRefused(error.what());
     }
     return true;
 }
@@ -80,11 +36,11 @@ bool writeNothing(std::string* error, const std::string&, const std::vector<unsi
 
 } // namespace
 
-std::vector<unsigned char> readSceneFile(const std::filesystem::path& path) {
+std::vector<std::byte> readSceneFile(const std::filesystem::path& path) {
     try {
-        return readByThePolicy(path);
-    } catch (const Refused& refused) {
-        throw SceneError(fmt::format("{}: error: {}", path.string(), refused.why));
+        return image_io::readFileBytes(path, kMaxSceneFileBytes);
+    } catch (const image_io::ImageError& error) {
+        throw SceneError(fmt::format("{}: error: {}", path.string(), error.what()));
     }
 }
 

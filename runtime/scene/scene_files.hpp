@@ -20,14 +20,14 @@ namespace iblkit::scene {
 inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(1) << 30;
 inline constexpr size_t kMaxJsonNesting = 256;
 
-// The whole file, or SceneError "<path>: error: <why>".
-std::vector<unsigned char> readSceneFile(const std::filesystem::path& path);
+// The whole file (image_io::readFileBytes, bounded), or SceneError "<path>: error: <why>".
+std::vector<std::byte> readSceneFile(const std::filesystem::path& path);
 
 // SceneError naming `path` when `json`'s arrays and objects nest deeper than kMaxJsonNesting.
 void requireJsonNestingWithin(std::string_view json, const std::filesystem::path& path);
 
-// A file a scene names, refused by the policy: "<that file>: <why>", for the reader to put after
-// the scene's own name.
+// A file a scene names, refused by the policy: "cannot open '<that file>': <why>", for the
+// reader to put after the scene's own name.
 struct ReferencedFileRefused : std::runtime_error {
     using std::runtime_error::runtime_error;
 };

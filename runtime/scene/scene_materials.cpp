@@ -129,11 +129,12 @@ bool loadImageOrLeaveEmpty(tinygltf::Image* image, const int index, std::string*
 
 // The JSON of a .gltf, or the JSON chunk of a .glb (its header, then the chunk's length and type);
 // empty when the container is too short to say, which tinygltf then reports.
-std::string_view jsonOf(const std::vector<unsigned char>& bytes, bool binary) {
+std::string_view jsonOf(const std::vector<std::byte>& bytes, bool binary) {
     const auto text = std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (!binary) return text;
     if (bytes.size() < 20) return {};
-    const uint32_t length = uint32_t(bytes[12]) | uint32_t(bytes[13]) << 8 | uint32_t(bytes[14]) << 16 | uint32_t(bytes[15]) << 24;
+    const auto byte = [&](size_t at) { return uint32_t(std::to_integer<unsigned char>(bytes[at])); };
+    const uint32_t length = byte(12) | byte(13) << 8 | byte(14) << 16 | byte(15) << 24;
     return text.substr(20, length);
 }
 
@@ -154,7 +155,9 @@ tinygltf::Model load(const std::filesystem::path& file) {
     const auto folder = file.parent_path().string();
     bool loaded = false;
     try {
-        loaded = binary ? loader.LoadBinaryFromMemory(&model, &problem, &warning, bytes.data(), unsigned(bytes.size()), folder)
+        loaded = binary ? loader.LoadBinaryFromMemory(&model, &problem, &warning,
+                                                      reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size()),
+                                                      folder)
                         : loader.LoadASCIIFromString(&model, &problem, &warning, reinterpret_cast<const char*>(bytes.data()),
                                                      unsigned(bytes.size()), folder);
     } catch (const ReferencedFileRefused& refused) {
