@@ -1,6 +1,7 @@
 // HLSL 2021 enums: unscoped and scoped, an underlying type, enumerators valued from others,
 // casts both ways, an enum as a parameter type.
 enum Mode { Off, Half = 5, Full };
+enum Level { Low = 1, High = Low + 1, Top = High * Half };
 enum class Channel : uint { Red = 1, Green = Red << 1, Blue = Green << 1 };
 
 RWStructuredBuffer<uint> Out : register(u0);
@@ -17,4 +18,5 @@ void main()
     Channel channel = (Channel)2;
     Out[3] = channel == Channel::Green ? 1 : 0;
     Out[4] = (uint)Channel::Blue + Off;
+    Out[5] = Top + Level::High;
 }

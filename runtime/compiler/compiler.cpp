@@ -5,6 +5,7 @@
 #include "spirv_image_access.hpp"
 #include "spirv_image_format.hpp"
 #include "spirv_module.hpp"
+#include "spirv_glslang_repairs.hpp"
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
@@ -44,10 +45,14 @@ CompiledShader compileShader(const CompileOptions& options) {
     shader.sourceName = options.source.string();
     auto imageFormats = frontend.imageFormats; // [[vk::image_format]], where --image-format does not say otherwise
     for (const auto& [resource, format] : options.imageFormats) imageFormats[resource] = format;
-    // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
-    SpirvModule module(legalizeHlslSpirv(frontend.spirv, shader.sourceName));
-    applyImageFormats(module, imageFormats, shader.sourceName);
     shader.kitEdits = frontend.kitEdits;
+    // Repairs of what glslang writes invalid come before legalization, which validates.
+    SpirvModule raw(frontend.spirv);
+    if (matchAtomicValueTypes(raw)) shader.kitEdits.emplace_back("atomic-value-types");
+    if (decorateFragmentIntegerInputsFlat(raw)) shader.kitEdits.emplace_back("flat-integer-inputs");
+    // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
+    SpirvModule module(legalizeHlslSpirv(raw.words(), shader.sourceName));
+    applyImageFormats(module, imageFormats, shader.sourceName);
     if (widenStorageImageWrites(module)) shader.kitEdits.emplace_back("texel-widening");
     if (makeWavePrefixScansExclusive(module)) shader.kitEdits.emplace_back("exclusive-wave-scans");
     if (decorateStorageImageAccess(module)) shader.kitEdits.emplace_back("image-access-qualifiers");

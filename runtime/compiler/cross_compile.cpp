@@ -1,6 +1,8 @@
 #include "cross_compile.hpp"
 
 #include "compile_error.hpp"
+#include "hlsl_form_registers.hpp"
+#include "hlsl_matrix_loads.hpp"
 #include "image_formats.hpp"
 #include "spirv_module.hpp"
 
@@ -115,6 +117,14 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
                                 adapted == adaptedFrom.end() ? "" : adapted->second.original});
     }
 
+    // OpenGL has no push constants: SPIRV-Cross writes the block as a uniform struct, which
+    // SPIR-V for OpenGL (ARB_gl_spirv) accepts only with a location. Its members take the
+    // locations from 0 on.
+    for (const auto& pushConstants : compiler.get_shader_resources().push_constant_buffers) {
+        compiler.set_decoration(pushConstants.id, spv::DecorationLocation, 0);
+        out.bindings.push_back({reflection.pushConstantBlock, "uniform_location", 0, "", "", ""});
+    }
+
     const spirv_cross::VariableID dummySampler = compiler.build_dummy_sampler_for_combined_images();
     compiler.build_combined_image_samplers();
     auto combined = compiler.get_combined_image_samplers();
@@ -192,8 +202,10 @@ CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& 
 CrossCompiled toMsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
     spirv_cross::CompilerMSL compiler(spirv);
     auto options = compiler.get_msl_options();
-    // 64-bit integers came with MSL 2.2; everything else the kit's shaders use is in 2.1.
-    options.set_msl_version(2, declares(compiler, spv::CapabilityInt64) ? 2 : 1);
+    // 64-bit integers and SIMD-group functions in fragment shaders came with MSL 2.2; everything
+    // else the kit's shaders use is in 2.1.
+    const bool fragmentWaves = reflection.stage == ShaderStage::Fragment && usesWaveOperations(compiler);
+    options.set_msl_version(2, declares(compiler, spv::CapabilityInt64) || fragmentWaves ? 2 : 1);
     compiler.set_msl_options(options);
 
     CrossCompiled out;
@@ -238,8 +250,9 @@ std::string withEntryName(std::string source, const std::string& entry) {
 
 CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection& reflection) {
     spirv_cross::CompilerHLSL compiler(spirv);
-    const bool usesSpaces = std::any_of(reflection.resources.begin(), reflection.resources.end(),
-                                        [](const auto& resource) { return resource.location.space != 0; });
+    const auto registers = hlslFormRegisters(reflection);
+    const bool usesSpaces = std::any_of(registers.begin(), registers.end(),
+                                        [](const auto& named) { return named.second.space != 0; });
     auto options = compiler.get_hlsl_options();
     options.shader_model = lowestShaderModel(compiler, usesSpaces);
     options.enable_16bit_types = usesSixteenBitTypes(compiler); // half and int16_t, not min16*
@@ -251,14 +264,13 @@ CrossCompiled toHlsl(const std::vector<uint32_t>& spirv, const ShaderReflection&
         binding.stage = executionModelOf(reflection.stage);
         binding.desc_set = resource.location.set;
         binding.binding = resource.location.binding;
-        const spirv_cross::HLSLResourceBinding::Binding original{resource.location.space,
-                                                                 resource.location.registerIndex};
-        binding.cbv = binding.srv = binding.uav = binding.sampler = original;
+        const auto& hlslRegister = registers.at(resource.name);
+        binding.cbv = binding.srv = binding.uav = binding.sampler = {hlslRegister.space, hlslRegister.index};
         compiler.add_hlsl_resource_binding(binding);
         out.bindings.push_back({resource.name, std::string(1, registerLetter(resource.location.registerClass)),
-                                resource.location.registerIndex, "", "", ""});
+                                hlslRegister.index, "", "", ""});
     }
-    out.source = withEntryName(compiler.compile(), reflection.entryPoint);
+    out.source = withEntryName(withFloatMatrixLoads(compiler.compile()), reflection.entryPoint);
     return out;
 }
 

@@ -7,7 +7,7 @@ namespace iblkit::compiler {
 namespace {
 
 // The source edits are runtime/lowering's passes; the SPIR-V edits are the spirv_*.cpp files here.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kKitEdits{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kKitEdits{{
     {"select-and-or", "select, and and or become component-wise ?:, && and ||"},
     {"enums", "enums become a typedef of their underlying type and one constant per enumerator"},
     {"namespaces", "namespaces become name prefixes (N__name), with C++ lookup; using aliases become typedefs"},
@@ -18,6 +18,10 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kKitEdit
     {"texel-widening", "image writes narrower than the format are widened to four components (VUID-07112)"},
     {"exclusive-wave-scans", "WavePrefix* scans are made exclusive (glslang emits them inclusive: glslang issue 2929)"},
     {"image-access-qualifiers", "storage images only written or only read are decorated NonReadable or NonWritable"},
+    {"atomic-value-types", "an atomic's int value for a uint result (or the reverse) is reinterpreted as the result's type, "
+                           "which glslang leaves invalid"},
+    {"flat-integer-inputs", "integer and double pixel-shader inputs are decorated Flat (VUID-04744), which glslang "
+                            "leaves off built-ins such as WaveGetLaneIndex()"},
 }};
 
 } // namespace

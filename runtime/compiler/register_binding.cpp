@@ -61,7 +61,7 @@ ResourceRegister bindResource(const DeclaredResource& resource, uint32_t registe
 
 ResourceRegister bindExplicitly(const DeclaredResource& resource) {
     const auto& vulkan = *resource.vulkanBinding;
-    if (uint64_t(vulkan.binding) + resource.count - 1 > kLargestBinding)
+    if (vulkan.binding > kLargestBinding)
         throw CompileError(vulkan.place + ": error: [[vk::binding(" + std::to_string(vulkan.binding) + ")]] on '" +
                            resource.name + "': bindings end at " + std::to_string(kLargestBinding) + " (glslang's largest)");
     return ResourceRegister{resource.name, resource.registerClass, 0, resource.count, resource.space, false,
@@ -72,17 +72,18 @@ std::string describeBinding(const ResourceRegister& resource) {
     return resource.vulkanBinding ? "[[vk::binding]]" : "register " + resource.registerName() + ", space" + std::to_string(resource.space);
 }
 
-// No two resources on one set and binding (arrays take a binding for each element).
+// No two resources on one set and binding. In Vulkan an array of resources is one binding whose
+// descriptor count is the array's size, so it takes no binding but its own (its registers are
+// another matter: an array of N takes N, and the register rule keeps those apart).
 void requireDistinctBindings(const std::vector<ResourceRegister>& assigned, const std::string& sourceName) {
     std::map<std::pair<uint32_t, uint32_t>, const ResourceRegister*> taken;
-    for (const auto& resource : assigned)
-        for (uint32_t binding = resource.binding; binding < resource.binding + resource.count; ++binding) {
-            const auto [it, inserted] = taken.emplace(std::make_pair(resource.set, binding), &resource);
-            if (!inserted)
-                throw CompileError(sourceName + ": error: '" + it->second->name + "' (" + describeBinding(*it->second) +
-                                   ") and '" + resource.name + "' (" + describeBinding(resource) + ") are both on set " +
-                                   std::to_string(resource.set) + ", binding " + std::to_string(binding));
-        }
+    for (const auto& resource : assigned) {
+        const auto [it, inserted] = taken.emplace(std::make_pair(resource.set, resource.binding), &resource);
+        if (!inserted)
+            throw CompileError(sourceName + ": error: '" + it->second->name + "' (" + describeBinding(*it->second) +
+                               ") and '" + resource.name + "' (" + describeBinding(resource) + ") are both on set " +
+                               std::to_string(resource.set) + ", binding " + std::to_string(resource.binding));
+    }
 }
 
 } // namespace

@@ -152,6 +152,17 @@ const SpirvInstruction* SpirvModule::storageImageTypeOf(uint32_t variable) const
     return image && image->opcode == spv::OpTypeImage && image->operands[kImageSampled] == 2 ? image : nullptr;
 }
 
+size_t SpirvModule::afterLastAnnotation() const {
+    size_t after = 0;
+    for (size_t i = 0; i < instructions_.size(); ++i) {
+        const uint32_t opcode = instructions_[i].opcode;
+        if (opcode == spv::OpDecorate || opcode == spv::OpMemberDecorate || opcode == spv::OpName ||
+            opcode == spv::OpMemberName || opcode == spv::OpDecorateString || opcode == spv::OpMemberDecorateString)
+            after = i + 1;
+    }
+    return after;
+}
+
 void SpirvModule::insertBefore(size_t index, SpirvInstruction instruction) {
     instructions_.insert(instructions_.begin() + static_cast<std::ptrdiff_t>(index), std::move(instruction));
 }

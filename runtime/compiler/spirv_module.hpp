@@ -49,6 +49,8 @@ public:
     size_t size() const { return instructions_.size(); }
     SpirvInstruction& instruction(size_t index) { return instructions_[index]; }
     void insertBefore(size_t index, SpirvInstruction instruction);
+    // The index after the last name or decoration: where a new decoration goes.
+    size_t afterLastAnnotation() const;
     uint32_t newId();
     // The result type of a value, 0 for an id without one.
     uint32_t typeOf(uint32_t id) const;

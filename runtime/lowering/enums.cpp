@@ -32,7 +32,8 @@ public:
 
 private:
     // Keeps tokens_[i], or writes "E::A" as the enumerator's name; returns the last index used.
-    // Inside a scoped enum's own values (`within`), its enumerators are named without "E::".
+    // Inside an enum's own values (`within`), a scoped enum's enumerators are named without "E::"; an
+    // unscoped enum's are global names already.
     size_t keepOrQualify(size_t i, const std::pair<const std::string, EnumType>* within) {
         const Token& token = tokens_[i];
         const bool member = followsMemberAccess(tokens_, i);
@@ -47,7 +48,8 @@ private:
         }
         if (within && token.isIdentifier() && !member && within->second.enumerators.contains(token.text) &&
             !followsQualifier(tokens_, i)) {
-            writer_.add(scopedEnumeratorName(within->first, token.text), token.place, token.leading);
+            const bool scoped = within->second.scoped;
+            writer_.add(scoped ? scopedEnumeratorName(within->first, token.text) : token.text, token.place, token.leading);
             return i;
         }
         writer_.keep(token);

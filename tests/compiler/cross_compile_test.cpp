@@ -3,6 +3,7 @@
 #include "compile_error.hpp"
 #include "compiler.hpp"
 #include "glsl_frontend.hpp"
+#include "hlsl_matrix_loads.hpp"
 #include "seed_test_support.hpp"
 #include "temp_folder.hpp"
 
@@ -162,6 +163,55 @@ TEST(HlslForm, KeepsTheOriginalRegisters) {
     EXPECT_NE(hlsl.source.find("TextureCube<float4> EnvMap : register(t0);"), std::string::npos);
     EXPECT_NE(hlsl.source.find("SamplerState EnvMapSampler : register(s0);"), std::string::npos);
     EXPECT_NE(hlsl.source.find("RWTexture2DArray<float4> Prefiltered : register(u0);"), std::string::npos);
+}
+
+// SPIRV-Cross loads a float matrix from a byte-address buffer as asfloat(uint4x4(...)), which no
+// SPIR-V compiler of HLSL types; the form must compile back and load the same components.
+TEST(HlslForm, AMatrixInABufferIsLoadedAsFloats) {
+    testing::TempFolder folder;
+    CompileOptions options;
+    options.source = folder.write("matrix.hlsl", R"(
+struct Instance { float4x4 world; row_major float3x4 normal; };
+StructuredBuffer<Instance> Instances;
+RWStructuredBuffer<float4> Out;
+[numthreads(1, 1, 1)]
+void main() { Out[0] = mul(Instances[0].world, float4(1, 2, 3, 1)) + float4(mul(Instances[0].normal, float4(1, 1, 1, 0)), 0); }
+)");
+    const auto hlsl = crossCompileShader(compileShader(options), CrossTarget::Hlsl).source;
+    EXPECT_EQ(hlsl.find("uint4x4"), std::string::npos) << hlsl;
+    EXPECT_EQ(hlsl.find("uint3x4"), std::string::npos) << hlsl;
+    EXPECT_NE(hlsl.find("float4x4(asfloat(Instances.Load(0)), asfloat(Instances.Load(16)),"), std::string::npos) << hlsl;
+    options.sourceText = hlsl;
+    EXPECT_NO_THROW(compileShader(options)) << hlsl;
+}
+
+TEST(HlslForm, OnlyAnIntegerMatrixCastIsRewritten) {
+    EXPECT_EQ(withFloatMatrixLoads("m = asfloat(uint2x2(B.Load(0), f(1, 2), 3u, B.Load(12)));"),
+              "m = float2x2(asfloat(B.Load(0)), asfloat(f(1, 2)), asfloat(3u), asfloat(B.Load(12)));");
+    EXPECT_EQ(withFloatMatrixLoads("v = asfloat(uint4(a, b, c, d)); w = asfloat(uint2x2(a, b, c, d)).x;"),
+              "v = asfloat(uint4(a, b, c, d)); w = float2x2(asfloat(a), asfloat(b), asfloat(c), asfloat(d)).x;");
+    EXPECT_EQ(withFloatMatrixLoads("x = asfloat(uint2x2(a, b, c, d) + k);"), "x = asfloat(uint2x2(a, b, c, d) + k);");
+}
+
+// SPIR-V for OpenGL (ARB_gl_spirv) needs a location on every default-block uniform.
+TEST(OpenGlForms, APushConstantBlockBecomesAUniformWithALocation) {
+    testing::TempFolder folder;
+    CompileOptions options;
+    options.source = folder.write("push.hlsl", R"(
+struct Parameters { float scale; uint offset; };
+[[vk::push_constant]] Parameters Push;
+RWStructuredBuffer<float> Out;
+[numthreads(1, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) { Out[id.x] = id.x * Push.scale + Push.offset; }
+)");
+    const auto shader = compileShader(options);
+    for (auto target : {CrossTarget::Glsl, CrossTarget::Essl}) {
+        const auto compiled = crossCompileShader(shader, target);
+        EXPECT_NE(compiled.source.find("layout(location = 0) uniform Push Push_1;"), std::string::npos) << compiled.source;
+        ASSERT_NE(findBinding(compiled, "Push"), nullptr);
+        EXPECT_EQ(findBinding(compiled, "Push")->namespace_, "uniform_location");
+        EXPECT_NO_THROW(compileOpenGlGlsl(compiled.source, ShaderStage::Compute, "form")) << compiled.source;
+    }
 }
 
 } // namespace

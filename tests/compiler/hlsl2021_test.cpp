@@ -90,6 +90,37 @@ TEST_F(Hlsl2021, AnExplicitBindingOnADerivedOneIsAnError) {
               "shader.hlsl: error: 'Out' ([[vk::binding]]) and 'Derived' (register u0, space0) are both on set 0, binding 96");
 }
 
+// In Vulkan an array of resources is one binding; the kit once reserved a binding per element
+// and called binding 1 after an array at binding 0 a clash.
+TEST_F(Hlsl2021, AVulkanBindingOnAnArrayTakesOneBinding) {
+    const auto shader = compile(std::string("[[vk::binding(0)]] RWTexture2D<float4> Mips[13];\n"
+                                            "[[vk::binding(1)]] RWStructuredBuffer<float> Out;\n"
+                                            "float f(uint i) { Mips[i][uint2(0, 0)] = 1; return 0; }\n") + kEntry);
+    EXPECT_EQ(resource(shader, "Mips").location.binding, 0u);
+    EXPECT_EQ(resource(shader, "Mips").location.count, 13u);
+    EXPECT_EQ(resource(shader, "Out").location.binding, 1u);
+    EXPECT_EQ(errorOf(std::string("[[vk::binding(0)]] RWTexture2D<float4> Mips[13];\n"
+                                  "[[vk::binding(0)]] RWStructuredBuffer<float> Out;\n"
+                                  "float f(uint i) { Mips[i][uint2(0, 0)] = 1; return 0; }\n") + kEntry),
+              "shader.hlsl: error: 'Mips' ([[vk::binding]]) and 'Out' ([[vk::binding]]) are both on set 0, binding 0");
+}
+
+// The HLSL form gives resources bound by [[vk::binding]] registers of their own: the array
+// takes u1-u13 after Out's u0 (both were u0 before).
+TEST_F(Hlsl2021, TheHlslFormGivesVulkanBoundResourcesDistinctRegisters) {
+    const auto shader = compile(std::string("[[vk::binding(0)]] RWTexture2D<float4> Mips[13];\n"
+                                            "[[vk::binding(1)]] RWStructuredBuffer<float> Out;\n"
+                                            "RWStructuredBuffer<float> Derived : register(u1, space1);\n"
+                                            "[[vk::binding(2, 1)]] RWStructuredBuffer<float> Other;\n"
+                                            "float f(uint i) { Mips[i][uint2(0, 0)] = 1; return Derived[i] + Other[i]; }\n") +
+                                kEntry);
+    const auto hlsl = crossCompileShader(shader, CrossTarget::Hlsl).source;
+    EXPECT_NE(hlsl.find("RWByteAddressBuffer Out : register(u0, space0);"), std::string::npos) << hlsl;
+    EXPECT_NE(hlsl.find("RWTexture2D<float4> Mips[13] : register(u1, space0);"), std::string::npos) << hlsl;
+    EXPECT_NE(hlsl.find("RWByteAddressBuffer Derived : register(u1, space1);"), std::string::npos) << hlsl;
+    EXPECT_NE(hlsl.find("RWByteAddressBuffer Other : register(u0, space1);"), std::string::npos) << hlsl;
+}
+
 TEST_F(Hlsl2021, ImageFormatAttributeSetsTheFormat) {
     const auto shader = compile(std::string("[[vk::image_format(\"r11g11b10f\")]] RWTexture2D<float4> Img;\n"
                                             "RWStructuredBuffer<float> Out;\n"

@@ -44,6 +44,12 @@ TEST(Lowering, AnUnscopedEnumBecomesATypedefAndConstants) {
               "Mode m = C; int n = B;");
 }
 
+TEST(Lowering, AnUnscopedEnumeratorValuedFromAnEarlierOneKeepsItsGlobalName) {
+    EXPECT_EQ(lowered("enum E { A = 1, B = A + 1 };\nenum { X = 2, Y = X * B };"),
+              "typedef int E; static const E A = 1; static const E B = A + 1;\n"
+              " static const int X = 2; static const int Y = X * B;");
+}
+
 TEST(Lowering, AScopedEnumKeepsItsTypeAndQualifiesItsNames) {
     EXPECT_EQ(lowered("enum class Space : uint { Linear, Srgb = Linear + 3 };\nuint s = (uint)Space::Srgb;"),
               "typedef uint Space; static const Space Space__Linear = 0; static const Space Space__Srgb = Space__Linear + 3;\n"

@@ -13,9 +13,11 @@
 
 namespace iblkit::cli {
 
+constexpr const char* kDefaultCorpus = "hlsl/porting";
+
 void addPortingCommand(CLI::App& app) {
     struct Arguments {
-        std::string corpus = "hlsl/porting";
+        std::string corpus = kDefaultCorpus;
         std::string out;
         std::string device;
     };
@@ -48,7 +50,10 @@ void addPortingCommand(CLI::App& app) {
         // A table from a corpus that disagrees with its manifest would document a bug as a feature.
         if (!results.agrees()) throw ExpectationsFailed{};
         if (!arguments->out.empty()) {
-            files::writeFileAtomically(arguments->out, porting::portingMarkdown(results, arguments->corpus));
+            std::string command = "iblkit porting";
+            if (arguments->corpus != kDefaultCorpus) command += " --corpus " + arguments->corpus;
+            if (!arguments->device.empty()) command += " --device " + arguments->device;
+            files::writeFileAtomically(arguments->out, porting::portingMarkdown(results, arguments->corpus, command));
             fmt::print("wrote {}\n", arguments->out);
         }
     });
