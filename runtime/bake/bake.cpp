@@ -40,8 +40,10 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
     if (destination == BakeDestination::Folder && settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     // A scene that cannot be read fails before any device work.
     const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene, settings.strict)) : std::nullopt;
-    if (destination == BakeDestination::Folder)
+    if (destination == BakeDestination::Folder) {
+        if (settings.cache) requireCacheOutsideTarget(*settings.cache, settings.outputDir);
         prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
+    }
 
     progress.begin("load");
     prepared.input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});

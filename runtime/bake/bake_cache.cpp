@@ -135,20 +135,32 @@ std::string texturePayload(const BakedTexture& texture) {
                       texture.values);
 }
 
+// Larger than any size a bake accepts; it keeps a damaged entry's texel count from overflowing.
+constexpr uint64_t kMaxPayloadTextureSize = 1u << 16;
+
 std::optional<BakedTexture> textureFromPayload(std::string_view payload) {
     auto parts = splitPayload(payload);
     if (!parts) return std::nullopt;
-    const auto& [header, values] = *parts;
-    try {
-        BakedTexture texture{header.at("name"), image_io::PixelFormat(header.at("format").get<int>()), header.at("size"),
-                             header.at("faces"), header.at("mips"), std::move(parts->second)};
-        size_t texels = 0;
-        for (uint32_t mip = 0; mip < texture.mips; ++mip) texels += size_t(std::max(1u, texture.size >> mip)) * std::max(1u, texture.size >> mip);
-        if (texture.values.size() != texels * texture.faces * image_io::channelCount(texture.format)) return std::nullopt;
-        return texture;
-    } catch (const json::exception&) {
+    const json& header = parts->first; // not a structured binding: clang 14 cannot capture one
+    // What the kit writes: a name, a known format, a size the bake allows, one face or six, and a
+    // mip chain no longer than the size's. Anything else is a damaged entry, never a cast or shift
+    // out of range.
+    const auto wholeWithin = [&](const char* field, uint64_t low, uint64_t high) {
+        const auto value = header.find(field);
+        return value != header.end() && value->is_number_unsigned() && value->get<uint64_t>() >= low &&
+               value->get<uint64_t>() <= high;
+    };
+    const auto name = header.find("name");
+    if (name == header.end() || !name->is_string() || !wholeWithin("format", 0, uint64_t(image_io::PixelFormat::Rg32Float)) ||
+        !wholeWithin("size", 1, kMaxPayloadTextureSize) || !wholeWithin("faces", 1, 6) || !wholeWithin("mips", 1, 32))
         return std::nullopt;
-    }
+    BakedTexture texture{name->get<std::string>(), image_io::PixelFormat(header["format"].get<int>()), header["size"].get<uint32_t>(),
+                         header["faces"].get<uint32_t>(), header["mips"].get<uint32_t>(), std::move(parts->second)};
+    if (texture.faces != 1 && texture.faces != 6) return std::nullopt;
+    size_t texels = 0;
+    for (uint32_t mip = 0; mip < texture.mips; ++mip) texels += size_t(std::max(1u, texture.size >> mip)) * std::max(1u, texture.size >> mip);
+    if (texture.values.size() != texels * texture.faces * image_io::channelCount(texture.format)) return std::nullopt;
+    return texture;
 }
 
 std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube) {
@@ -173,6 +185,9 @@ std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::
             sh.shRadiance[k] = {c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>()};
         }
         sh.solidAngle = header.at("solid_angle");
+        for (const char* size : {"sh_source", "cube_source"})
+            if (!header.at(size).is_number_unsigned() || header.at(size).get<uint64_t>() > kMaxPayloadTextureSize)
+                return std::nullopt;
         sh.shSourceSize = header.at("sh_source");
         sh.cubeSourceSize = header.at("cube_source");
         return std::pair{sh, std::move(*cube)};

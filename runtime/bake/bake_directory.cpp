@@ -51,9 +51,16 @@ std::optional<EarlierOutput> earlierOutput(const fs::path& folder) {
     return earlier;
 }
 
-bool isInside(const fs::path& path, const fs::path& folder) {
+// The path with links resolved as far as it exists, absolute, with no trailing separator.
+fs::path resolved(const fs::path& path) {
     std::error_code error;
-    const auto inner = fs::weakly_canonical(path, error), outer = fs::weakly_canonical(folder, error);
+    auto result = fs::weakly_canonical(fs::absolute(path, error), error);
+    if (!result.has_filename() && result.has_parent_path()) result = result.parent_path();
+    return result;
+}
+
+bool isInside(const fs::path& path, const fs::path& folder) {
+    const auto inner = resolved(path), outer = resolved(folder);
     const auto [end, rest] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
     return end == outer.end();
 }
@@ -190,6 +197,12 @@ void BakeDirectory::commit() {
     committed_ = true;
     cleanup_.reset();
     fs::remove_all(staging_, error); // the earlier bake, now in the staging folder's place
+}
+
+void requireCacheOutsideTarget(const fs::path& cache, const fs::path& target) {
+    if (isInside(cache, target))
+        throw BakeError("--cache " + quoted(cache) + " is inside the output folder " + quoted(target) +
+                        ", which the bake replaces as a whole: give a cache folder outside it");
 }
 
 } // namespace iblkit::bake

@@ -44,4 +44,9 @@ private:
 void checkBakeTarget(const std::filesystem::path& target, const std::optional<std::filesystem::path>& input,
                      std::string_view command = "bake");
 
+// Throws BakeError when the cache folder is the target or inside it: the command replaces the
+// target as a whole, so the cache would be deleted by it or, created there during the work, make
+// the target a folder that no later run may replace.
+void requireCacheOutsideTarget(const std::filesystem::path& cache, const std::filesystem::path& target);
+
 } // namespace iblkit::bake

@@ -9,14 +9,16 @@
 namespace iblkit::bench {
 
 // What writeBenchResults needs, checked before a long run: Debian's python3 with matplotlib, an
-// output folder that is one (or can be made), the Markdown file's folder, and no output that is
-// one of `environments` that name files (the bench's inputs). Throws BenchError.
+// output folder that is absent, empty or an earlier bench's (its manifest.json says so, and it
+// holds nothing else: bake::BakeDirectory's rule), the Markdown file's folder, and no output that
+// is one of `environments` that name files (the bench's inputs). Throws BenchError.
 void checkResultsWritable(const std::filesystem::path& folder, const std::filesystem::path& markdownFile,
                           const std::vector<std::string>& environments);
 
 // Writes results.json, results.csv, the plots (PNG, drawn by tools/bench_plot.py with
-// matplotlib from the copy inside the program) into `folder`, and the report to `markdownFile`
-// unless it is empty — all or nothing: a failure leaves every earlier file as it was. Returns
+// matplotlib from the copy inside the program) and manifest.json into `folder`, which it replaces
+// as a whole, and the report to `markdownFile` unless it is empty — all or nothing: a failure
+// leaves every earlier file as it was. Returns
 // the plots' names, relative to `folder`. Throws BenchError or files::FileError.
 std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command,
                                            const std::filesystem::path& folder,

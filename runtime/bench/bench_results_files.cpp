@@ -1,7 +1,12 @@
 #include "bench_report.hpp"
 
 #include "atomic_output.hpp"
+#include "bake_directory.hpp"
+#include "bake_error.hpp"
+#include "bake_manifest.hpp"
+#include "bake_outputs.hpp"
 #include "bench_error.hpp"
+#include "scratch_folder.hpp"
 #include "files.hpp"
 #include "embedded_tools.hpp"
 #include "shell_command.hpp"
@@ -12,6 +17,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <span>
 #include <unistd.h>
 
 namespace iblkit::bench {
@@ -66,23 +72,6 @@ std::string resultsCsv(const BenchRun& run) {
     return text;
 }
 
-// A scratch folder of this process's, removed with everything in it.
-class ScratchFolder {
-public:
-    ScratchFolder() : path_(fs::temp_directory_path() / fmt::format("iblkit-bench-{}", getpid())) {
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
-
 std::string readWhole(const fs::path& path) {
     const auto bytes = image_io::readFileBytes(path);
     return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
@@ -121,31 +110,41 @@ void checkResultsWritable(const fs::path& folder, const fs::path& markdownFile, 
     try {
         if (!markdownFile.empty()) files::requireWritableFile(markdownFile, "--markdown");
         files::requireDistinctOutputs(outputs, inputs);
+        bake::checkBakeTarget(folder, std::nullopt, "bench");
     } catch (const files::FileError& error) {
         throw BenchError(error.what());
+    } catch (const bake::BakeError& error) {
+        throw BenchError("--out " + std::string(error.what()));
     }
 }
 
 std::vector<std::string> writeBenchResults(const BenchRun& run, const std::string& command, const fs::path& folder,
                                            const fs::path& markdownFile) {
-    const ScratchFolder scratch;
+    const files::ScratchFolder scratch("bench");
     const auto json = resultsJson(run, command).dump(2) + "\n";
     files::writeFileAtomically(scratch.path() / "results.json", json);
     // Whole bakes alone have nothing to plot.
     const auto plots = run.results.empty() ? std::vector<std::pair<std::string, std::string>>{}
                                            : drawPlots(scratch.path() / "results.json", scratch.path());
+    // The folder is the bench's own, replaced as a whole, its manifest listing what it holds (as a
+    // bake's does); the Markdown file is written beside it, all or nothing.
+    bake::BakeDirectory directory(folder, std::nullopt, "bench");
+    const auto& staging = directory.staging();
+    const auto bytesOf = [](const std::string& text) { return std::as_bytes(std::span(text.data(), text.size())); };
+    std::vector<bake::WrittenFile> written{bake::writeBytes(staging, "results.json", bytesOf(json)),
+                                           bake::writeBytes(staging, "results.csv", bytesOf(resultsCsv(run)))};
     std::vector<std::string> names;
-    fs::create_directories(folder);
-    files::AtomicOutput output;
-    output.add(folder / "results.json", json);
-    output.add(folder / "results.csv", resultsCsv(run));
     for (const auto& [name, bytes] : plots) {
-        output.add(folder / name, bytes);
+        written.push_back(bake::writeBytes(staging, name, bytesOf(bytes)));
         names.push_back(name);
     }
-    if (!markdownFile.empty())
-        output.add(markdownFile, renderBenchMarkdown(run, command, folder, names, markdownFile));
-    output.commit();
+    const nlohmann::json manifest = {{"generator", "iblkit"}, {"command", "bench"}, {"invocation", command},
+                                     {"files", bake::filesJson(written)}};
+    bake::writeBytes(staging, "manifest.json", bytesOf(manifest.dump(2) + "\n"));
+    files::AtomicOutput markdown;
+    if (!markdownFile.empty()) markdown.add(markdownFile, renderBenchMarkdown(run, command, folder, names, markdownFile));
+    directory.commit();
+    markdown.commit();
     return names;
 }
 

@@ -26,8 +26,8 @@ void validateSettings(const RenderSettings& settings) {
     if (!(settings.standardErrorBound >= kMinStandardErrorBound && settings.standardErrorBound <= kMaxStandardErrorBound))
         throw RenderError(fmt::format("--max-standard-error {} is out of range: {} to {}", settings.standardErrorBound,
                                       kMinStandardErrorBound, kMaxStandardErrorBound));
-    if (settings.cellSize < 8 || settings.cellSize > kMaxCellSize)
-        throw RenderError(fmt::format("--cell-size {} is out of range: 8 to {} pixels", settings.cellSize, kMaxCellSize));
+    if (settings.cellSize < kMinCellSize || settings.cellSize > kMaxCellSize)
+        throw RenderError(fmt::format("--cell-size {} is out of range: {} to {} pixels", settings.cellSize, kMinCellSize, kMaxCellSize));
     if (settings.sanitize && settings.strict) throw RenderError("--sanitize and --strict cannot be given together");
 }
 

@@ -12,6 +12,7 @@ namespace iblkit::render {
 
 // Pixels per cell of the sphere grid (sphere_grid.hpp).
 inline constexpr uint32_t kDefaultCellSize = 48;
+inline constexpr uint32_t kMinCellSize = 8;
 // The reference's dispatch is one thread per active pixel in groups of 64, at most 65535 groups:
 // 4,194,240 pixels, and the default grid at 192-pixel cells is 2496 x 960.
 inline constexpr uint32_t kMaxCellSize = 192;

@@ -3,7 +3,10 @@
 #include "render/render_error.hpp"
 #include "render/render_files.hpp"
 
+#include "atomic_output.hpp"
 #include "bench_environments.hpp"
+#include "files.hpp"
+#include "scratch_folder.hpp"
 
 #include <fmt/core.h>
 
@@ -27,19 +30,19 @@ std::optional<fs::path> environmentPath(const std::string& name, const fs::path&
     throw RenderError(fmt::format("no report environment '{}': sky or one of blender's worlds (forest, courtyard, ...)", name));
 }
 
-// Renders into a scratch folder beside the pictures, then keeps its PNGs and errors.json.
-RenderSummary renderInto(const fs::path& pictures, const std::string& environment, ReferenceBsdf bsdf,
+// Renders into `scratch`, then keeps its PNGs and errors.json there under the names the page uses.
+RenderSummary renderInto(const fs::path& scratch, const std::optional<fs::path>& environment, ReferenceBsdf bsdf,
                          const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress) {
     RenderSettings settings;
-    settings.environment = environmentPath(environment, options.cache);
+    settings.environment = environment;
     settings.bsdf = bsdf;
     settings.context = options.context;
-    settings.outputDir = pictures / fmt::format(".render-{}", nameOf(bsdf));
-    fs::remove_all(settings.outputDir);
+    settings.cellSize = options.cellSize;
+    settings.maxSamples = options.maxSamples;
+    settings.standardErrorBound = options.standardErrorBound;
+    settings.outputDir = scratch / fmt::format(".render-{}", nameOf(bsdf));
     auto summary = renderSpheres(settings, toolVersion, progress);
-    const auto keep = [&](const char* name, const std::string& as) {
-        fs::copy_file(settings.outputDir / name, pictures / as, fs::copy_options::overwrite_existing);
-    };
+    const auto keep = [&](const char* name, const std::string& as) { fs::rename(settings.outputDir / name, scratch / as); };
     if (bsdf == ReferenceBsdf::Document) {
         keep("reference.png", "reference.png");
         keep("splitsum.png", "splitsum.png");
@@ -48,6 +51,11 @@ RenderSummary renderInto(const fs::path& pictures, const std::string& environmen
     keep("errors.json", fmt::format("errors-{}.json", nameOf(bsdf)));
     fs::remove_all(settings.outputDir);
     return summary;
+}
+
+std::string bytesOf(const fs::path& path) {
+    const auto bytes = image_io::readFileBytes(path);
+    return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
 const std::string& rowName(const SphereError& sphere) { return sphere.material; }
@@ -100,13 +108,23 @@ void writeEnvironment(std::ostream& out, const EnvironmentRenders& environment) 
 } // namespace
 
 void writeSplitSumReport(const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress) {
+    files::requireWritableFile(options.markdown, "--out");
+    RenderSettings probe; // the renders' settings, refused here rather than after the first environment
+    probe.outputDir = options.markdown.parent_path();
+    probe.cellSize = options.cellSize;
+    probe.maxSamples = options.maxSamples;
+    probe.standardErrorBound = options.standardErrorBound;
+    validateSettings(probe);
+    std::vector<std::optional<fs::path>> sources;
+    for (const auto& name : options.environments) sources.push_back(environmentPath(name, options.cache));
+    const files::ScratchFolder scratch("render-report");
     std::vector<EnvironmentRenders> environments;
-    for (const auto& name : options.environments) {
-        const auto pictures = options.markdown.parent_path() / "split-sum" / name;
-        fs::create_directories(pictures);
+    for (size_t i = 0; i < options.environments.size(); ++i) {
+        const auto& name = options.environments[i];
+        fs::create_directories(scratch.path() / name);
         EnvironmentRenders renders{name, {}};
         for (const auto bsdf : {ReferenceBsdf::Document, ReferenceBsdf::SplitSum})
-            renders.renders.emplace(bsdf, renderInto(pictures, name, bsdf, options, toolVersion, progress));
+            renders.renders.emplace(bsdf, renderInto(scratch.path() / name, sources[i], bsdf, options, toolVersion, progress));
         environments.push_back(std::move(renders));
     }
     std::ostringstream page;
@@ -127,7 +145,15 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
                         "A pixel's noise moves a sphere's mean error by at most about its standard error.\n\n",
                         100 * kRelativeFloor);
     for (const auto& environment : environments) writeEnvironment(page, environment);
-    writeText(options.markdown, page.str());
+    files::AtomicOutput output;
+    output.add(options.markdown, page.str());
+    for (const auto& environment : environments) {
+        const auto pictures = options.markdown.parent_path() / "split-sum" / environment.name;
+        fs::create_directories(pictures);
+        for (const auto& file : fs::directory_iterator(scratch.path() / environment.name))
+            output.add(pictures / file.path().filename(), bytesOf(file.path()));
+    }
+    output.commit();
 }
 
 } // namespace iblkit::render

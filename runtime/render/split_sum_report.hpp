@@ -18,12 +18,19 @@ struct ReportOptions {
     std::filesystem::path cache;                // where blender-data is fetched to (bench_environments.hpp)
     std::vector<std::string> environments = kReportEnvironments;
     std::string command;                        // the command line that wrote it, for the page's header
+    // The renders' settings: the render's defaults, or smaller for a quick page.
+    uint32_t cellSize = kDefaultCellSize;
+    uint32_t maxSamples = kDefaultMaxSamples;
+    double standardErrorBound = kDefaultStandardErrorBound;
     vulkan::ContextOptions context;
 };
 
-// Renders every environment with both reference BSDFs at the render's defaults and writes the
-// page: per environment, the split sum's error per sphere against each, and the pictures.
-// Throws what renderSpheres throws, and bench::BenchError for an unknown environment.
+// Renders every environment with both reference BSDFs and writes the page: per environment, the
+// split sum's error per sphere against each, and the pictures (under split-sum/ beside the page).
+// The page and environment names are checked before any render; the renders go to a scratch
+// folder, and the page and every picture are written all or nothing at the end, so a failed run
+// leaves an earlier page and its pictures as they were. Throws what renderSpheres throws,
+// RenderError for an unknown environment and files::FileError for a page that cannot be written.
 void writeSplitSumReport(const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress);
 
 } // namespace iblkit::render

@@ -68,7 +68,7 @@ double KernelRoughness::roughnessFor(double variance) const {
 
 LobeFit fitLobe(double ndotv, double roughness, LobeWeighting weighting) {
     const double mu = std::clamp(ndotv, 1e-4, 1.0);
-    const glm::dvec3 N(0, 0, 1), V(std::sqrt(1 - mu * mu), 0, mu);
+    const glm::dvec3 V(std::sqrt(1 - mu * mu), 0, mu); // N = +Z
     const double thetaR = std::acos(mu);
     if (roughness <= 1e-4) return {1.f, float(roughness), float(roughness), 0.f};
     const double alpha = roughness * roughness;

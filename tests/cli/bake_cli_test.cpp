@@ -72,6 +72,10 @@ TEST_F(BakeCli, ARepeatedBakeComesFromTheCacheAndNoCacheComputesEverything) {
     EXPECT_EQ(nlohmann::json::parse(uncached.out)["cache"]["hits"], 0);
     EXPECT_EQ(readFile(scratch.path() / "first" / "specular.ktx2"), readFile(scratch.path() / "uncached" / "specular.ktx2"));
     expectFailure(small({"bake", "-o", at("both"), "--no-cache", "--cache", at("c")}), "--cache and --no-cache");
+    // A cache inside the output folder was made there during the bake, which then refused to
+    // replace a folder with other files, and so did every bake after it.
+    for (const auto& inside : {at("inside") + "/cache", at("inside"), at("inside") + "/x/../c"})
+        expectFailure(small({"bake", "-o", at("inside"), "--cache", inside}), "is inside the output folder");
 }
 
 // The table's count doubles per mip; the manifest says what each mip took, and both kit

@@ -1,5 +1,6 @@
 // `iblkit bench` as a user runs it: the CSV, JSON, plots and Markdown report of a tiny run, and
 // one line with a non-zero exit for bad arguments.
+#include "bake_cli_fixture.hpp"
 #include "read_file.hpp"
 #include "run_process.hpp"
 #include "temp_folder.hpp"
@@ -19,13 +20,13 @@ namespace fs = std::filesystem;
 
 class BenchCli : public ::testing::Test {
 protected:
-    ProcessResult iblkit(std::vector<std::string> arguments) const {
+    ProcessResult iblkit(std::vector<std::string> arguments, std::vector<std::string> environment = {}) const {
         arguments.insert(arguments.begin(), IBLKIT_EXECUTABLE);
         for (const char* flag : {"--size", "32", "--lut-size", "16", "--texels", "16", "--repeat", "1",
                                  "--irradiance-size", "4", "--cache"})
             arguments.push_back(flag);
         arguments.push_back((scratch.path() / "cache").string());
-        return runProcess(arguments);
+        return runProcess(arguments, environment);
     }
     std::string at(const std::string& name) const { return (scratch.path() / name).string(); }
     TempFolder scratch;
@@ -55,13 +56,35 @@ TEST_F(BenchCli, WritesResultsPlotsAndReport) {
     EXPECT_NE(report.find("| LUT (max) | "), std::string::npos) << "the time-error frontiers";
 }
 
+// A run that fails after its work, while writing (the plots cannot be drawn: a matplotlib that
+// imports but has no pyplot), leaves the earlier results as they were and no partial folder.
 TEST_F(BenchCli, AFailedRunLeavesEarlierResultsAsTheyWere) {
-    fs::create_directories(scratch.path() / "out");
-    std::ofstream(scratch.path() / "out" / "results.json") << "GOOD";
-    const auto result = iblkit({"bench", "furnace", "--samples", "2000000", "--out", at("out")});
+    const std::vector<std::string> tiny = {"bench", "sky", "--samples", "16", "--outputs", "specular", "--out", at("out")};
+    ASSERT_EQ(iblkit(tiny).exitCode, 0);
+    const auto before = snapshot(scratch.path() / "out");
+    ASSERT_EQ(before.count("manifest.json"), 1u);
+    scratch.write("fake-python/matplotlib/__init__.py", "");
+    const auto failed = iblkit(tiny, {"PYTHONPATH=" + at("fake-python")});
+    EXPECT_NE(failed.exitCode, 0);
+    EXPECT_NE(failed.err.find("bench  specular   sky"), std::string::npos) << "the failure came after the work";
+    EXPECT_NE(failed.err.find("could not draw the plots"), std::string::npos) << failed.err;
+    EXPECT_EQ(snapshot(scratch.path() / "out"), before);
+    for (const auto& entry : fs::directory_iterator(scratch.path()))
+        EXPECT_EQ(entry.path().filename().string().find(".iblkit-partial"), std::string::npos) << entry.path();
+}
+
+// The folder is the bench's own: a user's files, or another command's output, are refused before
+// the run and kept; an earlier bench's output is replaced.
+TEST_F(BenchCli, AFolderOfOtherFilesIsRefusedBeforeTheRun) {
+    const auto notes = scratch.write("notes/todo.txt", "keep me");
+    const auto result = iblkit({"bench", "sky", "--samples", "16", "--outputs", "specular", "--out", at("notes")});
     EXPECT_NE(result.exitCode, 0);
-    EXPECT_EQ(readFile(scratch.path() / "out" / "results.json"), "GOOD");
-    EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path() / "out"), fs::directory_iterator()), 1);
+    EXPECT_NE(result.err.find("is a folder with other files"), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find("bench  specular"), std::string::npos) << "refused before any work";
+    EXPECT_EQ(readFile(notes), "keep me");
+    scratch.write("bake/manifest.json", R"({"generator": "iblkit", "command": "bake", "files": []})");
+    const auto overBake = iblkit({"bench", "sky", "--samples", "16", "--outputs", "specular", "--out", at("bake")});
+    EXPECT_NE(overBake.err.find("holds the output of iblkit bake"), std::string::npos) << overBake.err;
 }
 
 TEST_F(BenchCli, BadArgumentsGetOneLineAndNothingIsWritten) {

@@ -4,6 +4,7 @@
 #include "run_process.hpp"
 #include "temp_folder.hpp"
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
@@ -121,6 +122,61 @@ TEST(RenderCli, AFailedRenderLeavesTheEarlierOneAsItWas) {
     const auto result = runProcess(renderCommand(environment, notARender.parent_path()));
     EXPECT_NE(result.err.find("other files"), std::string::npos) << result.err;
     EXPECT_EQ(readFile(notARender), "keep me");
+}
+
+// render-report made quick: the sky alone, small cells, a loose bound.
+std::vector<std::string> quickReportCommand(const fs::path& page, std::map<std::string, std::string> options = {}) {
+    for (const auto& [option, value] : std::map<std::string, std::string>{
+             {"--environments", "sky"}, {"--cell-size", "8"}, {"--samples", "256"}, {"--max-standard-error", "0.5"}})
+        options.try_emplace(option, value);
+    std::vector<std::string> command = {IBLKIT_EXECUTABLE, "render-report", "--out", page.string(), "-q"};
+    for (const auto& [option, value] : options) command.insert(command.end(), {option, value});
+    return command;
+}
+
+TEST(RenderReportCli, AQuickPageWithItsPicturesNamesTheCommandThatMadeIt) {
+    TempFolder folder;
+    const auto page = folder.path() / "docs" / "errors.md";
+    fs::create_directories(page.parent_path());
+    const auto result = runProcess(quickReportCommand(page));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto text = readFile(page);
+    EXPECT_NE(text.find("--environments sky --cell-size 8 --samples 256 --max-standard-error 0.5`"), std::string::npos)
+        << text.substr(0, 400);
+    EXPECT_NE(text.find("## sky"), std::string::npos);
+    std::vector<std::string> pictures;
+    for (const auto& entry : fs::directory_iterator(page.parent_path() / "split-sum" / "sky"))
+        pictures.push_back(entry.path().filename().string());
+    std::sort(pictures.begin(), pictures.end());
+    EXPECT_EQ(pictures, (std::vector<std::string>{"error-document.png", "error-split-sum.png", "errors-document.json",
+                                                  "errors-split-sum.json", "reference.png", "splitsum.png"}));
+    // Every sphere of both tables is in the page, as errors.json has it.
+    const auto errors = nlohmann::json::parse(readFile(page.parent_path() / "split-sum" / "sky" / "errors-document.json"));
+    const double first = errors.at("spheres").at(0).at("mean_relative_error").get<double>();
+    EXPECT_NE(text.find(fmt::format(" {:.1f} (", 100 * first)), std::string::npos);
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(page.parent_path())) left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left.size(), 2u) << "the page and split-sum/, nothing of the renders' own";
+}
+
+TEST(RenderReportCli, RefusesBeforeAnyRenderAndAFailedRunLeavesTheEarlierPage) {
+    TempFolder folder;
+    const auto page = folder.write("errors.md", "the earlier page");
+    const auto picture = folder.write("split-sum/sky/reference.png", "the earlier picture");
+    const auto refused = [&](const std::map<std::string, std::string>& options, const std::string& expected) {
+        const auto result = runProcess(quickReportCommand(page, options));
+        EXPECT_NE(result.exitCode, 0) << expected;
+        EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_EQ(readFile(page), "the earlier page");
+        EXPECT_EQ(readFile(picture), "the earlier picture");
+    };
+    refused({{"--environments", "sky,nowhere"}}, "no report environment 'nowhere'");
+    refused({{"--cell-size", "4"}}, "--cell-size 4 is out of range");
+    refused({{"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
+    const auto missing = runProcess(quickReportCommand(folder.path() / "missing" / "errors.md"));
+    EXPECT_NE(missing.err.find("--out"), std::string::npos) << missing.err;
+    EXPECT_FALSE(fs::exists(folder.path() / "missing"));
 }
 
 // Any manifest the kit wrote once passed as an earlier output: a render over a bake deleted the

@@ -8,6 +8,7 @@
 #include "signal_cleanup.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
@@ -73,14 +74,15 @@ void addRenderCommand(CLI::App& app) {
                         "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
     command->add_option("-o,--output", s.outputDir, "Output folder (replaced as a whole when the render succeeds)")->required();
     auto* samples = command->add_option("--samples", s.maxSamples,
-                                        fmt::format("Most paths per pixel for the reference; it stops sooner once every "
-                                                    "pixel's standard error is within the bound (default {})",
-                                                    render::kDefaultMaxSamples));
+                                        fmt::format("Most paths per pixel for the reference, {} to {}; it stops sooner once "
+                                                    "every pixel's standard error is within the bound (default {})",
+                                                    render::kMinSamples, render::kMaxSamples, render::kDefaultMaxSamples));
     auto* bound = command->add_option("--max-standard-error", s.standardErrorBound,
                                       fmt::format("The reference's bound: each pixel's standard error against its value "
-                                                  "(or {} % of the environment's mean radiance, if more), as a fraction "
-                                                  "(default {})",
-                                                  100 * render::kRelativeFloor, render::kDefaultStandardErrorBound));
+                                                  "(or {} % of the environment's mean radiance, if more), as a fraction, "
+                                                  "{} to {} (default {})",
+                                                  100 * render::kRelativeFloor, render::kMinStandardErrorBound,
+                                                  render::kMaxStandardErrorBound, render::kDefaultStandardErrorBound));
     auto* lights =
         command->add_option("--lights", arguments->lights, "A JSON file of directional, point and area lights (docs/render.md)");
     auto* bsdf = command->add_option("--bsdf", arguments->bsdf,
@@ -90,7 +92,9 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("--recipe", arguments->recipe,
                         fmt::format("How the split sum's maps are made and read (docs/shading.md; default {})",
                                     shading::defaultRecipe().name));
-    command->add_option("--cell-size", s.cellSize, fmt::format("Pixels across each sphere's cell (default {})", render::kDefaultCellSize));
+    command->add_option("--cell-size", s.cellSize,
+                        fmt::format("Pixels across each sphere's cell, {} to {} (default {})", render::kMinCellSize,
+                                    render::kMaxCellSize, render::kDefaultCellSize));
     auto* seed = command->add_option("--seed", s.seed, "The reference's random seed (default 1)");
     command->add_flag("--split-sum-only", s.splitSumOnly,
                       "Render the split sum alone: splitsum.png/.exr and the grid in errors.json, no reference and no errors")
@@ -133,7 +137,19 @@ void addRenderReportCommand(CLI::App& app) {
     command->add_option("--cache", arguments->cache, "Where blender-data's worlds are fetched to (default bench-cache)");
     command->add_option("--environments", arguments->environments, "sky and blender's worlds (default sky forest courtyard interior)")
         ->delimiter(',');
-    command->add_option("--device", arguments->options.context.device, "Device index or part of its name (default: lavapipe)");
+    auto& o = arguments->options;
+    command->add_option("--cell-size", o.cellSize,
+                        fmt::format("Pixels across each sphere's cell, {} to {} (default {}); smaller for a quick page",
+                                    render::kMinCellSize, render::kMaxCellSize, render::kDefaultCellSize));
+    command->add_option("--samples", o.maxSamples,
+                        fmt::format("Most paths per pixel for each reference, {} to {} (default {})", render::kMinSamples,
+                                    render::kMaxSamples, render::kDefaultMaxSamples));
+    command->add_option("--max-standard-error", o.standardErrorBound,
+                        fmt::format("Each reference's bound on a pixel's relative standard error, {} to {} (default {}); "
+                                    "larger for a quick page",
+                                    render::kMinStandardErrorBound, render::kMaxStandardErrorBound,
+                                    render::kDefaultStandardErrorBound));
+    command->add_option("--device", o.context.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
     command->callback([arguments] {
         files::cleanUpOnSignals();
@@ -141,6 +157,12 @@ void addRenderReportCommand(CLI::App& app) {
         options.cache = arguments->cache;
         options.environments = arguments->environments;
         options.command = fmt::format("iblkit render-report --out {} --cache {}", options.markdown.string(), arguments->cache);
+        if (arguments->environments != render::kReportEnvironments)
+            options.command += " --environments " + fmt::format("{}", fmt::join(arguments->environments, ","));
+        if (options.cellSize != render::kDefaultCellSize) options.command += fmt::format(" --cell-size {}", options.cellSize);
+        if (options.maxSamples != render::kDefaultMaxSamples) options.command += fmt::format(" --samples {}", options.maxSamples);
+        if (options.standardErrorBound != render::kDefaultStandardErrorBound)
+            options.command += fmt::format(" --max-standard-error {}", options.standardErrorBound);
         bake::BakeProgress progress(arguments->quiet);
         render::writeSplitSumReport(options, IBLKIT_VERSION, progress);
     });
