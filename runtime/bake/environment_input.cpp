@@ -20,32 +20,36 @@ namespace fs = std::filesystem;
 using image_io::quoted;
 
 // Refuses NaN/Inf texels, or with `sanitize` sets them to 0; returns how many were set.
-size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, const std::string& name, bool sanitize) {
+size_t checkFinite(std::span<float> values, uint32_t channels, uint32_t width, const std::string& name, bool sanitize,
+                   const char* command) {
     const auto found = findNonFiniteTexels(values, channels);
     if (found.count == 0) return 0;
     if (!sanitize)
         throw BakeError(fmt::format("{} has {} NaN/Inf texel{} (the first at column {}, row {}: {}); "
-                                    "bake with --sanitize to replace them by 0",
+                                    "{} with --sanitize to replace them by 0",
                                     name, found.count, found.count == 1 ? "" : "s", found.firstTexel % width,
-                                    found.firstTexel / width, found.firstValue));
+                                    found.firstTexel / width, found.firstValue, command));
     return replaceNonFiniteTexels(values, channels);
 }
 
-void refuseOversized(std::span<const float> values, uint32_t channels, uint32_t width, const std::string& name) {
+void refuseOversized(std::span<const float> values, uint32_t channels, uint32_t width, const std::string& name,
+                     const char* command) {
     if (const auto found = findOversizedTexel(values, channels))
-        throw BakeError(fmt::format("{} has a texel of {:g} at column {}, row {}: the bake sums radiance in 32-bit "
+        throw BakeError(fmt::format("{} has a texel of {:g} at column {}, row {}: the {} sums radiance in 32-bit "
                                     "floats, which overflow past {:g}",
-                                    name, found->value, found->texel % width, found->texel / width, kLargestRadiance));
+                                    name, found->value, found->texel % width, found->texel / width, command,
+                                    kLargestRadiance));
 }
 
 // Refuses negative texels with `strict`, or clamps them to 0; returns what it found.
-NegativeTexels clampNegative(std::span<float> values, uint32_t channels, const std::string& name, bool strict) {
+NegativeTexels clampNegative(std::span<float> values, uint32_t channels, const std::string& name, bool strict,
+                             const char* command) {
     const auto found = findNegativeTexels(values, channels);
     if (found.count == 0) return found;
     if (strict)
-        throw BakeError(fmt::format("{} has {} texel{} of negative radiance (down to {:g}); bake without --strict to "
+        throw BakeError(fmt::format("{} has {} texel{} of negative radiance (down to {:g}); {} without --strict to "
                                     "clamp them to 0",
-                                    name, found.count, found.count == 1 ? "" : "s", found.mostNegative));
+                                    name, found.count, found.count == 1 ? "" : "s", found.mostNegative, command));
     clampNegativeToZero(values, channels);
     return found;
 }
@@ -54,9 +58,9 @@ NegativeTexels clampNegative(std::span<float> values, uint32_t channels, const s
 // then negative.
 void checkTexels(EnvironmentInput& input, std::span<float> values, uint32_t channels, uint32_t width,
                  const std::string& name, const InputPolicy& policy) {
-    input.sanitizedTexels += checkFinite(values, channels, width, name, policy.sanitize);
-    refuseOversized(values, channels, width, name);
-    const auto negative = clampNegative(values, channels, name, policy.strict);
+    input.sanitizedTexels += checkFinite(values, channels, width, name, policy.sanitize, policy.command);
+    refuseOversized(values, channels, width, name, policy.command);
+    const auto negative = clampNegative(values, channels, name, policy.strict, policy.command);
     input.negative.count += negative.count;
     input.negative.mostNegative = std::min(input.negative.mostNegative, negative.mostNegative);
 }

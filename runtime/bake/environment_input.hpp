@@ -40,6 +40,7 @@ struct EnvironmentInput {
 struct InputPolicy {
     bool sanitize = false; // set NaN/Inf texels to 0 instead of refusing them
     bool strict = false;   // refuse negative texels instead of clamping them to 0
+    const char* command = "bake"; // the command that reads it, as the messages name it
 };
 
 // ENV: an .hdr or .exr panorama (2:1), a folder of six faces (px, nx, py, ny, pz, nz or posx ...

@@ -1,6 +1,7 @@
 #include "reflection.hpp"
 
 #include "compile_error.hpp"
+#include "json_words.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -132,7 +133,7 @@ ShaderReflection reflectionFromJson(const nlohmann::json& object) {
                 {constant.at("name"), constant.at("constant_id"), constant.at("type"), constant.at("default")});
         return reflection;
     } catch (const nlohmann::json::exception& error) {
-        throw CompileError(std::string("reflection: ") + error.what());
+        throw CompileError(std::string("reflection: ") + files::jsonErrorInWords(error));
     }
 }
 

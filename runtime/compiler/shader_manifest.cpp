@@ -2,6 +2,7 @@
 
 #include "compile_error.hpp"
 #include "hlsl_frontend.hpp"
+#include "json_words.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -88,7 +89,7 @@ std::vector<ManifestShader> parseShaderManifest(const std::string& text, const s
             shaders.push_back(std::move(shader));
         }
     } catch (const nlohmann::json::exception& error) {
-        throw CompileError(manifest.string() + ": error: " + error.what());
+        throw CompileError(manifest.string() + ": error: " + files::jsonErrorInWords(error));
     } catch (const CompileError& error) {
         throw CompileError(manifest.string() + ": error: " + error.what());
     }

@@ -20,7 +20,7 @@ std::filesystem::path writeTemporary(const std::filesystem::path& path, const st
     // Short, whatever the output's name: one near the 255-byte limit must still get a temporary.
     std::string pattern = (folder / ".iblkit-tmp-XXXXXX").string();
     const int fd = mkstemp(pattern.data());
-    if (fd < 0) fail(path, std::strerror(errno));
+    if (fd < 0) fail(path, "no new file can be made in " + folder.string() + ", where it is written first (" + std::strerror(errno) + ")");
     size_t written = 0;
     while (written < contents.size()) {
         const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
@@ -127,6 +127,14 @@ void requireWritableFile(const std::filesystem::path& path, const std::string& o
     if (!fs::is_directory(folder, error)) throw FileError(name + ": the folder " + folder.string() + " does not exist");
     if (::access(folder.c_str(), W_OK) != 0)
         throw FileError(name + ": the folder " + folder.string() + " is not writable (" + std::strerror(errno) + ")");
+    // What the write will do: make a file beside it (a system folder such as /proc passes the
+    // check above, and takes none).
+    std::string probe = (folder / ".iblkit-tmp-XXXXXX").string();
+    const int fd = mkstemp(probe.data());
+    if (fd < 0)
+        throw FileError(name + ": no new file can be made in the folder " + folder.string() + " (" + std::strerror(errno) + ")");
+    ::close(fd);
+    ::unlink(probe.c_str());
 }
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents) {

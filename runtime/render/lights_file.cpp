@@ -25,7 +25,15 @@ struct LightContext {
     }
 };
 
-glm::vec3 vectorField(const Json& light, const char* field, const LightContext& where) {
+// A position, direction or edge: past this the renderer's float geometry has no precision left.
+constexpr double kMaxCoordinate = 1e30;
+// A radiance or intensity: the reference sums the squares of its samples in floats (for the
+// standard error), and past this a bright path's square overflows them.
+constexpr double kMaxRadiance = 1e15;
+// How far from the sphere's centre a point light, or an area light's plane, must be.
+constexpr float kClearance = 1.001f;
+
+glm::vec3 vectorField(const Json& light, const char* field, double limit, const LightContext& where) {
     if (!light.contains(field)) where.fail(fmt::format("\"{}\" is missing", field));
     const auto& value = light[field];
     if (!value.is_array() || value.size() != 3) where.fail(fmt::format("\"{}\" must be an array of 3 numbers", field));
@@ -33,15 +41,19 @@ glm::vec3 vectorField(const Json& light, const char* field, const LightContext& 
     for (int i = 0; i < 3; ++i) {
         if (!value[i].is_number()) where.fail(fmt::format("\"{}\" must be an array of 3 numbers", field));
         const double number = value[i].get<double>();
-        if (!std::isfinite(number) || std::abs(number) > 1e30)
-            where.fail(fmt::format("\"{}\" holds {}, which is not a finite float", field, number));
+        if (!std::isfinite(number)) where.fail(fmt::format("\"{}\" holds {}, which is not a finite number", field, number));
+        if (std::abs(number) > limit) where.fail(fmt::format("\"{}\" holds {:g}, past the {:g} it may be", field, number, limit));
         vector[i] = float(number);
     }
     return vector;
 }
 
+glm::vec3 vectorField(const Json& light, const char* field, const LightContext& where) {
+    return vectorField(light, field, kMaxCoordinate, where);
+}
+
 glm::vec3 radianceField(const Json& light, const char* field, const LightContext& where) {
-    const auto radiance = vectorField(light, field, where);
+    const auto radiance = vectorField(light, field, kMaxRadiance, where);
     if (radiance.x < 0 || radiance.y < 0 || radiance.z < 0) where.fail(fmt::format("\"{}\" is negative", field));
     return radiance;
 }
@@ -61,7 +73,10 @@ RenderLight directional(const Json& light, const LightContext& where) {
 RenderLight point(const Json& light, const LightContext& where) {
     requireOnlyFields(light, {"position", "intensity"}, where);
     const auto position = vectorField(light, "position", where);
-    if (glm::length(position) <= 1.001f) where.fail("\"position\" is inside the sphere (radius 1 about the origin)");
+    if (const float distance = glm::length(position); distance <= kClearance)
+        where.fail(fmt::format("\"position\" is {:g} from the centre of the sphere (radius 1 about the origin): a point "
+                               "light must be at least {:g} away, outside it",
+                               distance, kClearance));
     return {RenderLight::Kind::Point, position, {}, {}, radianceField(light, "intensity", where)};
 }
 
@@ -72,8 +87,11 @@ RenderLight area(const Json& light, const LightContext& where) {
     const auto across = glm::cross(edgeU, edgeV);
     if (glm::length(across) < 1e-6f * std::max(1.f, glm::length(edgeU) * glm::length(edgeV)))
         where.fail("\"edge_u\" and \"edge_v\" are zero or parallel");
-    if (std::abs(glm::dot(glm::normalize(across), corner)) <= 1.001f)
-        where.fail("its plane cuts the sphere (radius 1 about the origin): the renderer has the sphere hide only whole lights");
+    if (const float distance = std::abs(glm::dot(glm::normalize(across), corner)); distance <= kClearance)
+        where.fail(fmt::format("its plane is {:g} from the centre of the sphere (radius 1 about the origin), so it cuts the "
+                               "sphere or grazes it: it must be at least {:g} away (the renderer has the sphere hide only "
+                               "whole lights)",
+                               distance, kClearance));
     return {RenderLight::Kind::Area, corner, edgeU, edgeV, radianceField(light, "radiance", where)};
 }
 

@@ -24,9 +24,10 @@ inline constexpr size_t kMaxLights = 64;
 // A lights file: {"lights": [{"type": "directional", "direction": [x, y, z], "radiance": [r, g, b]},
 // {"type": "point", "position": [...], "intensity": [...]}, {"type": "area", "corner": [...],
 // "edge_u": [...], "edge_v": [...], "radiance": [...]}]}. Refused, in one line naming the light and
-// the field: an unknown type or field, a number that is not finite, negative radiance, a zero
-// direction or edge, parallel edges, a point light inside the sphere or an area light whose plane
-// cuts it (the sphere would hide part of it from itself, which the renderer does not model).
+// the field: an unknown type or field, a number that is not finite, a coordinate past 1e30 or a
+// radiance or intensity past 1e15, negative radiance, a zero direction or edge, parallel edges, a
+// point light within 1.001 of the sphere's centre or an area light whose plane is (it would cut
+// the sphere, which would hide part of it from itself: the renderer does not model that).
 // Throws RenderError.
 std::vector<RenderLight> parseLights(std::string_view text, std::string_view name);
 std::vector<RenderLight> readLightsFile(const std::filesystem::path& path);

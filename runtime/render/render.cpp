@@ -14,6 +14,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 namespace iblkit::render {
@@ -32,6 +33,11 @@ std::string environmentName(const RenderSettings& settings) {
 
 void requireConverged(const ReferenceImage& reference, const RenderSettings& settings) {
     if (reference.converged) return;
+    // More samples cannot help a sum that overflowed: the environment (or a light) is too bright.
+    if (!std::isfinite(reference.maxRelativeStandardError))
+        throw RenderError("the reference's float sums overflowed: a pixel's value or standard error is not finite, the "
+                          "environment being too bright for them (its brightest texels, squared, pass the float range); "
+                          "scale it down");
     throw RenderError(fmt::format("the reference did not converge in {} samples per pixel: a pixel's standard error is "
                                   "{:.2f} % of its value, past the {:.2f} % bound (raise --samples or --max-standard-error)",
                                   settings.maxSamples, 100 * reference.maxRelativeStandardError,
@@ -58,7 +64,7 @@ RenderSummary renderSpheres(const RenderSettings& settings, const std::string& t
     validateSettings(settings);
     const auto lights = settings.lights ? readLightsFile(*settings.lights) : std::vector<RenderLight>{};
     bake::BakeDirectory directory(settings.outputDir, settings.environment, "render");
-    const auto input = bake::loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
+    const auto input = bake::loadEnvironment(settings.environment, {settings.sanitize, settings.strict, "render"});
     const vulkan::VulkanContext context(settings.context);
     auto maps = bakeMaps(context, input, settings.recipe, progress);
     auto splitSumKernel = bake::makeKernel(context, kernels::KernelRole::RenderSplitSum);

@@ -1,6 +1,7 @@
 #include "run_file.hpp"
 
 #include "json_fields.hpp"
+#include "json_words.hpp"
 #include "run_error.hpp"
 
 #include <nlohmann/json.hpp>
@@ -201,10 +202,8 @@ RunSpec parseRunFile(const std::string& text, const std::filesystem::path& path)
     const Reader reader(path);
     try {
         return reader.read(json::parse(text), path);
-    } catch (const json::parse_error& error) {
-        throw RunError(path.string() + ": error: not valid JSON: " + error.what());
     } catch (const json::exception& error) {
-        throw RunError(path.string() + ": error: " + error.what());
+        throw RunError(path.string() + ": error: " + files::jsonErrorInWords(error));
     }
 }
 

@@ -278,6 +278,12 @@ TEST(ReportCommands, AnOutputThatCannotBeWrittenIsRefusedBeforeAnyWork) {
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
         const auto toFolder = runProcess({IBLKIT_EXECUTABLE, command, "--out", folder.path().string()});
         EXPECT_NE(toFolder.err.find(": is a folder, not a file"), std::string::npos) << command << ": " << toFolder.err;
+        // A system file in a folder that takes no new file (root may write to /proc, which has
+        // none to give): once "No such file or directory" after the work.
+        const auto system = runProcess({IBLKIT_EXECUTABLE, command, "--out", "/proc/version"});
+        EXPECT_NE(system.exitCode, 0) << command;
+        EXPECT_NE(system.err.find("--out /proc/version: "), std::string::npos) << command << ": " << system.err;
+        EXPECT_EQ(std::count(system.err.begin(), system.err.end(), '\n'), 1) << system.err;
     }
 }
 

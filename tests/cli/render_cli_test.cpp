@@ -95,6 +95,15 @@ TEST(RenderCli, RefusesBadInputInOneLineAndWritesNothing) {
     refused({{"--bsdf", "phong"}}, "--bsdf");
     refused({{"--recipe", "phong"}}, "--recipe no shading recipe 'phong'");
     refused({{"--samples", "256"}, {"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
+    // A texel of 7.4e19 passes the bake's bound (1e20), but the reference's sums of squares
+    // overflow: more samples cannot help, and the message once advised them.
+    std::string bright = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32 +X 64\n";
+    for (int i = 0; i < 64 * 32; ++i) bright += i == 700 ? std::string("\x80\x80\x80\xC3", 4) : std::string("\x80\x80\x80\x81", 4);
+    const auto overflowed = runProcess(renderCommand(folder.write("bright.hdr", bright), output, {{"--samples", "256"}}));
+    EXPECT_NE(overflowed.exitCode, 0);
+    EXPECT_NE(overflowed.err.find("the reference's float sums overflowed"), std::string::npos) << overflowed.err;
+    EXPECT_EQ(overflowed.err.find("raise --samples"), std::string::npos) << overflowed.err;
+    EXPECT_FALSE(fs::exists(output));
     // The reference's options mean nothing without it.
     const std::map<std::string, std::string> referenceOptions = {
         {"--samples", "256"}, {"--max-standard-error", "0.1"}, {"--lights", environment.string()}, {"--bsdf", "document"},

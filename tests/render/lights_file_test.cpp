@@ -65,17 +65,29 @@ TEST(LightsFile, RefusesWhatTheRendererCannotDraw) {
     expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1], "radiance": [1, -1, 1]}]})",
                   "\"radiance\" is negative");
     expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1], "radiance": [1, 1e39, 1]}]})",
-                  "not a finite float");
+                  "\"radiance\" holds 1e+39, past the 1e+15 it may be");
+    // 3e38 is a finite float, and was called "not a finite float"; 1e21 passed, and the reference's
+    // sums of squares overflowed ("standard error is inf %, raise --samples").
+    expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1], "radiance": [3e38, 1, 1]}]})",
+                  "\"radiance\" holds 3e+38, past the 1e+15 it may be");
+    expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1], "radiance": [1e21, 1e21, 1e21]}]})",
+                  "\"radiance\" holds 1e+21, past the 1e+15 it may be");
+    expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1e31], "radiance": [1, 1, 1]}]})",
+                  "\"direction\" holds 1e+31, past the 1e+30 it may be");
     expectRefused(R"({"lights": [{"type": "directional", "direction": [0, 0, 1], "radiance": [1, 1, 1], "size": 2}]})",
                   "unknown field \"size\"");
     expectRefused(R"({"lights": [{"type": "point", "position": [0.5, 0, 0], "intensity": [1, 1, 1]}]})",
-                  "inside the sphere");
+                  "\"position\" is 0.5 from the centre of the sphere (radius 1 about the origin): a point light must be "
+                  "at least 1.001 away, outside it");
+    // Outside the sphere, but within the clearance: once called "inside".
+    expectRefused(R"({"lights": [{"type": "point", "position": [0, 0, 1.0005], "intensity": [1, 1, 1]}]})",
+                  "\"position\" is 1.0005 from the centre");
     expectRefused(R"({"lights": [{"type": "area", "corner": [0, 0, 3], "edge_u": [1, 0, 0], "edge_v": [2, 0, 0],
                   "radiance": [1, 1, 1]}]})",
                   "parallel");
     expectRefused(R"({"lights": [{"type": "area", "corner": [-2, -2, 0.5], "edge_u": [4, 0, 0], "edge_v": [0, 4, 0],
                   "radiance": [1, 1, 1]}]})",
-                  "plane cuts the sphere");
+                  "its plane is 0.5 from the centre of the sphere (radius 1 about the origin), so it cuts the sphere");
 }
 
 TEST(LightsFile, AMissingFileIsOneLine) {

@@ -1,0 +1,13 @@
+#pragma once
+
+#include <exception>
+#include <string>
+
+namespace iblkit::files {
+
+// nlohmann's exception in the kit's words, without its "[json.exception.parse_error.101]" code:
+// "not valid JSON at line 2, column 1: syntax error ...", "expected a number, found a string",
+// "\"shaders\" is missing", "element 3 is missing". For one-line messages that name the file.
+std::string jsonErrorInWords(const std::exception& error); // a nlohmann::json::exception
+
+} // namespace iblkit::files

@@ -1,0 +1,43 @@
+// nlohmann's exceptions in the kit's words: no "[json.exception...]" code reaches a user.
+#include "json_words.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+namespace iblkit::files {
+namespace {
+
+template <typename Read>
+std::string wordsOf(Read read) {
+    try {
+        read();
+    } catch (const nlohmann::json::exception& error) {
+        return jsonErrorInWords(error);
+    }
+    return "(no error)";
+}
+
+TEST(JsonWords, ASyntaxErrorNamesItsLineAndColumn) {
+    EXPECT_EQ(wordsOf([] { const auto ignored = nlohmann::json::parse("{\n  \"a\": ]"); }),
+              "not valid JSON at line 2, column 8: syntax error while parsing value - unexpected ']'; expected '[', '{', "
+              "or a literal");
+}
+
+TEST(JsonWords, AWrongTypeAMissingKeyAndAMissingElement) {
+    const auto json = nlohmann::json::parse(R"({"size": "big", "list": [1]})");
+    EXPECT_EQ(wordsOf([&] { (void)json.at("size").get<int>(); }), "expected a number, found a string");
+    EXPECT_EQ(wordsOf([&] { (void)json.at("list").get<std::string>(); }), "expected a string, found an array");
+    EXPECT_EQ(wordsOf([&] { (void)json.at("shaders"); }), "\"shaders\" is missing");
+    EXPECT_EQ(wordsOf([&] { (void)json.at("list").at(3); }), "element 3 is missing");
+}
+
+TEST(JsonWords, NoMessageKeepsTheExceptionsCode) {
+    const auto json = nlohmann::json::parse(R"({"a": 1})");
+    const auto words = wordsOf([&] { (void)json.at("a").at("b"); });
+    EXPECT_EQ(words.find("json.exception"), std::string::npos) << words;
+    EXPECT_FALSE(words.empty());
+}
+
+} // namespace
+} // namespace iblkit::files
