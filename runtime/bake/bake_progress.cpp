@@ -2,19 +2,27 @@
 
 #include <fmt/core.h>
 
+#include <unistd.h>
+
 namespace iblkit::bake {
+
+BakeProgress::BakeProgress(bool quiet, std::FILE* stream)
+    : quiet_(quiet), stream_(stream), terminal_(stream && ::isatty(::fileno(stream)) == 1) {}
 
 void BakeProgress::begin(const std::string& step) {
     steps_.push_back({step, 0, 0});
     started_ = Clock::now();
+    lastDetail_.clear();
     advance(0);
 }
 
 void BakeProgress::advance(double fraction, const std::string& detail) {
-    if (quiet_) return;
-    fmt::print(stream_, "{:<12} {:>3.0f}%  {:<20} {:6.2f} s\n", steps_.back().name, fraction * 100, detail,
-               elapsedSeconds());
-    std::fflush(stream_);
+    lastDetail_ = detail;
+    if (quiet_ || !terminal_) return;
+    const auto now = Clock::now();
+    if (fraction > 0 && now - lastShown_ < std::chrono::milliseconds(100)) return;
+    lastShown_ = now;
+    print(fraction, detail, "\r");
 }
 
 void BakeProgress::addDeviceTime(double milliseconds) {
@@ -23,7 +31,14 @@ void BakeProgress::addDeviceTime(double milliseconds) {
 
 void BakeProgress::end() {
     steps_.back().wallMilliseconds = elapsedSeconds() * 1e3;
-    advance(1);
+    if (!quiet_) print(1, lastDetail_, "\n");
+}
+
+void BakeProgress::print(double fraction, const std::string& detail, const char* end) {
+    // On a terminal the line is padded, so that a shorter one covers the longer before it.
+    fmt::print(stream_, "{:<17} {:>3.0f}%  {:<20} {:6.2f} s{}", steps_.back().name, fraction * 100, detail, elapsedSeconds(),
+               terminal_ ? std::string(8, ' ') + end : std::string(end));
+    std::fflush(stream_);
 }
 
 double BakeProgress::elapsedSeconds() const {

@@ -13,11 +13,13 @@ struct StepTiming {
     double wallMilliseconds = 0;
 };
 
-// Reports each step on stderr as it goes ("prefilter  60%  mip 3 of 5  2.1 s") unless quiet,
-// and keeps every step's device and wall time for the summary.
+// Reports each step on stderr unless quiet, and keeps every step's device and wall time for the
+// summary. On a terminal a step's line is rewritten as it goes ("prefilter  60%  mip 3 of 5  2.1 s",
+// at most ten times a second); anywhere else (a log file, a pipe) each step is one line, written
+// when it ends.
 class BakeProgress {
 public:
-    explicit BakeProgress(bool quiet, std::FILE* stream = stderr) : quiet_(quiet), stream_(stream) {}
+    explicit BakeProgress(bool quiet, std::FILE* stream = stderr);
 
     void begin(const std::string& step);
     void advance(double fraction, const std::string& detail = {});
@@ -30,10 +32,15 @@ private:
     using Clock = std::chrono::steady_clock;
     double elapsedSeconds() const;
 
+    void print(double fraction, const std::string& detail, const char* end);
+
     bool quiet_;
     std::FILE* stream_;
+    bool terminal_;
     std::vector<StepTiming> steps_;
     Clock::time_point started_;
+    Clock::time_point lastShown_;
+    std::string lastDetail_;
 };
 
 } // namespace iblkit::bake

@@ -142,7 +142,7 @@ void validateSettings(const BakeSettings& settings) {
     if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, kernels::minLutSamplesOf(settings.lutMethod),
                      kernels::maxLutSamplesOf(settings.lutMethod));
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
-    requireRange("--irradiance-size", settings.irradianceSize, 1, 1024);
+    requireRange("--irradiance-size", settings.irradianceSize, 1, kMaxIrradianceSize);
     if (settings.size) resolvedMips(settings, *settings.size); // the chain of an input cube is checked once it is read
 }
 

@@ -68,6 +68,7 @@ inline constexpr uint32_t kDefaultSize = 256;
 // Sizes past these are refused before any work: a 16384² cube with its chain is ~8.6 GB as floats.
 inline constexpr uint32_t kMaxCubeSize = 16384;
 inline constexpr uint32_t kMaxLutSize = 16384;
+inline constexpr uint32_t kMaxIrradianceSize = 1024;
 
 // The face size the bake uses for a source of `inputCubeSize` (0 when the input is a panorama).
 uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize);

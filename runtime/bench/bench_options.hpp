@@ -14,6 +14,10 @@ namespace iblkit::bench {
 enum class BenchOutput { Specular, Lut, Irradiance, Bake };
 std::string_view outputName(BenchOutput output);
 
+// The ranges validate() holds the options to (and --help states).
+inline constexpr uint32_t kMinBenchCubeSize = 16, kMaxBenchCubeSize = 4096, kMaxBenchLutSize = 4096;
+inline constexpr uint32_t kMaxBenchIrradianceSize = 1024, kMaxBenchRepeat = 100;
+
 struct BenchOptions {
     std::vector<std::string> environments{"sky"}; // see bench_environments.hpp
     std::vector<std::string> methods;             // prefilter and LUT methods; empty: every one in the table

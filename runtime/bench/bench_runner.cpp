@@ -115,25 +115,30 @@ OutputMethods outputMethods(const BenchOptions& options) {
 OutputMethods validate(const BenchOptions& options) {
     for (const uint32_t samples : options.samples)
         if (samples == 0 || samples > kernels::kMaxSamples)
-            throw BenchError(fmt::format("a sample count must be between 1 and {}, not {}", kernels::kMaxSamples, samples));
-    if (options.size < 16 || options.size > 4096 || (options.size & (options.size - 1)))
-        throw BenchError(fmt::format("the cube size must be a power of two from 16 to 4096, not {}", options.size));
-    if (options.lutSize == 0 || options.lutSize > 4096) throw BenchError("the LUT size must be from 1 to 4096");
+            throw BenchError(fmt::format("--samples {} is out of range: a sample count is 1 to {}", samples, kernels::kMaxSamples));
+    if (options.size < kMinBenchCubeSize || options.size > kMaxBenchCubeSize || (options.size & (options.size - 1)))
+        throw BenchError(fmt::format("--size {} is out of range: a power of two from {} to {}", options.size,
+                                     kMinBenchCubeSize, kMaxBenchCubeSize));
+    if (options.lutSize == 0 || options.lutSize > kMaxBenchLutSize)
+        throw BenchError(fmt::format("--lut-size {} is out of range: 1 to {}", options.lutSize, kMaxBenchLutSize));
     for (const uint32_t nodes : options.quadratureNodes)
         if (nodes == 0 || nodes > kernels::kMaxQuadratureNodes)
-            throw BenchError(fmt::format("the LUT quadrature takes 1 to {} nodes per panel, not {}",
-                                         kernels::kMaxQuadratureNodes, nodes));
+            throw BenchError(fmt::format("--lut-nodes {} is out of range: the LUT quadrature takes 1 to {} nodes per panel",
+                                         nodes, kernels::kMaxQuadratureNodes));
     for (const uint32_t grid : options.lutGrids)
         if (grid < kernels::kMinLutGrid || grid > kernels::kMaxLutGrid)
-            throw BenchError(fmt::format("the LUT quadrature grid takes {} to {} nodes per side, not {}", kernels::kMinLutGrid,
-                                         kernels::kMaxLutGrid, grid));
+            throw BenchError(fmt::format("--lut-grid {} is out of range: the LUT quadrature grid takes {} to {} nodes per side",
+                                         grid, kernels::kMinLutGrid, kernels::kMaxLutGrid));
     for (const uint32_t degree : options.lutDegrees)
         if (degree == 0 || degree > kernels::kMaxLutFitDegree)
-            throw BenchError(fmt::format("the polynomial LUT takes degrees 1 to {}, not {}", kernels::kMaxLutFitDegree, degree));
-    if (options.repeat == 0 || options.repeat > 100) throw BenchError("the repeat count must be from 1 to 100");
-    if (options.texelsPerMip == 0) throw BenchError("the reference needs at least one texel per mip");
-    if (options.irradianceSize == 0 || options.irradianceSize > 1024)
-        throw BenchError("the irradiance size must be from 1 to 1024");
+            throw BenchError(fmt::format("--lut-degree {} is out of range: the polynomial LUT takes degrees 1 to {}", degree,
+                                         kernels::kMaxLutFitDegree));
+    if (options.repeat == 0 || options.repeat > kMaxBenchRepeat)
+        throw BenchError(fmt::format("--repeat {} is out of range: 1 to {}", options.repeat, kMaxBenchRepeat));
+    if (options.texelsPerMip == 0) throw BenchError("--texels 0 is out of range: the reference needs at least one texel per mip");
+    if (options.irradianceSize == 0 || options.irradianceSize > kMaxBenchIrradianceSize)
+        throw BenchError(fmt::format("--irradiance-size {} is out of range: 1 to {}", options.irradianceSize,
+                                     kMaxBenchIrradianceSize));
     return outputMethods(options);
 }
 

@@ -1,5 +1,6 @@
 #include "consistency_suite.hpp"
 
+#include "bake_progress.hpp"
 #include "kernels/kernel_table.hpp"
 #include "kernels/lut_methods.hpp"
 #include "shader_manifest.hpp"
@@ -43,23 +44,23 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
 
 std::string_view openGlPathName() { return kOpenGlPath; }
 
-ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options) {
+ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options,
+                                 bake::BakeProgress* progress) {
     const opengl::EglContext gl;
     SuiteRun run(context, gl, options);
-    addSampledLutOutputs(run);
-    addSampledPrefilterOutputs(run);
-    addQuadratureLutOutput(run);
-    addGridLutOutputs(run);
-    addFitLutOutput(run);
-    addChunkedLutOutput(run);
-    addChunkedPrefilterOutput(run);
-    addSkyOutputs(run);
-    addCubeOutputs(run);
-    addConvolutionOutputs(run);
-    addFilteredOutputs(run);
-    addPreviewOutput(run);
-    addRenderOutputs(run);
-    addProbeOutputs(run);
+    const std::pair<const char*, void (*)(SuiteRun&)> groups[] = {
+        {"sampled lut", addSampledLutOutputs},     {"sampled prefilter", addSampledPrefilterOutputs},
+        {"quadrature lut", addQuadratureLutOutput}, {"grid lut", addGridLutOutputs},
+        {"fitted lut", addFitLutOutput},            {"chunked lut", addChunkedLutOutput},
+        {"chunked prefilter", addChunkedPrefilterOutput}, {"sky", addSkyOutputs},
+        {"cube", addCubeOutputs},                   {"convolution", addConvolutionOutputs},
+        {"filtered", addFilteredOutputs},           {"preview", addPreviewOutput},
+        {"render", addRenderOutputs},               {"probes", addProbeOutputs}};
+    for (const auto& [name, add] : groups) {
+        if (progress) progress->begin(name);
+        add(run);
+        if (progress) progress->end();
+    }
     return {std::move(run.rows), gl.renderer()};
 }
 

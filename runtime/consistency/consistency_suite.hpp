@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+namespace iblkit::bake {
+class BakeProgress;
+}
+
 namespace iblkit::consistency {
 
 inline constexpr uint32_t kSuiteLutFitDegree = 5; // BrdfLutFitCS's SAMPLE_COUNT in the suite
@@ -89,7 +93,9 @@ struct ConsistencyResult {
     std::vector<ConsistencyRow> rows;
     std::string openGlRenderer;
 };
-ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options);
+// `progress`, when given, gets a step per group of outputs.
+ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const SuiteOptions& options,
+                                 bake::BakeProgress* progress = nullptr);
 
 // The bounds of each output, and why each is those numbers (boundsRationale).
 Bounds lutBounds(uint32_t size);

@@ -1,5 +1,6 @@
 #include "stress.hpp"
 
+#include "bake_progress.hpp"
 #include "egl_context.hpp"
 
 namespace iblkit::stress {
@@ -18,16 +19,23 @@ bool StressReport::passed() const {
     return true;
 }
 
-StressReport runStress(const vulkan::VulkanContext& context, const StressOptions& options) {
+StressReport runStress(const vulkan::VulkanContext& context, const StressOptions& options, bake::BakeProgress* progress) {
     const opengl::EglContext gl;
     auto suiteOptions = consistency::defaultSuiteOptions(options.manifest);
     consistency::SuiteRun run(context, gl, suiteOptions);
     StressReport report;
     report.openGlRenderer = gl.renderer();
-    report.probes = sweepProbes(run);
-    report.environments = sweepEnvironments(run, suiteOptions, environmentCases(options.reduced, options.blenderWorlds));
-    report.sampleCounts = sweepSampleCounts(run, options.reduced);
-    report.inputs = checkInputPolicies();
+    const auto step = [&](const char* name, const auto& sweep) {
+        if (progress) progress->begin(name);
+        sweep();
+        if (progress) progress->end();
+    };
+    step("probes", [&] { report.probes = sweepProbes(run); });
+    step("environments", [&] {
+        report.environments = sweepEnvironments(run, suiteOptions, environmentCases(options.reduced, options.blenderWorlds));
+    });
+    step("sample counts", [&] { report.sampleCounts = sweepSampleCounts(run, options.reduced); });
+    step("input policies", [&] { report.inputs = checkInputPolicies(); });
     return report;
 }
 

@@ -9,6 +9,10 @@
 #include <filesystem>
 #include <string>
 
+namespace iblkit::bake {
+class BakeProgress;
+}
+
 namespace iblkit::stress {
 
 struct StressOptions {
@@ -27,7 +31,9 @@ struct StressReport {
     bool passed() const;
 };
 
-StressReport runStress(const vulkan::VulkanContext& context, const StressOptions& options);
+// `progress`, when given, gets a step per sweep.
+StressReport runStress(const vulkan::VulkanContext& context, const StressOptions& options,
+                       bake::BakeProgress* progress = nullptr);
 
 std::string renderStabilityMarkdown(const StressReport& report, const vulkan::VulkanContext& context,
                                     const std::string& command);

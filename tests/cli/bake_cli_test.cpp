@@ -24,6 +24,13 @@ TEST_F(BakeCli, DefaultBakeWritesEveryOutputWithProgress) {
         EXPECT_GT(fs::file_size(scratch.path() / "out" / name), 0u) << name;
     for (const char* step : {"source cube", "prefilter", "brdf lut", "irradiance", "preview", "100%"})
         EXPECT_NE(result.err.find(step), std::string::npos) << step << " is not reported:\n" << result.err;
+    // Not a terminal (a pipe, as a log file): one line per step, written when it ends, and no
+    // carriage returns (a render's log once took 1,243 lines in 25 s).
+    EXPECT_EQ(result.err.find('\r'), std::string::npos);
+    for (const char* step : {"\nprefilter ", "\nbrdf lut ", "\nirradiance "}) {
+        const auto first = result.err.find(step);
+        EXPECT_EQ(result.err.find(step, first + 1), std::string::npos) << step << " has more than one line:\n" << result.err;
+    }
     const auto manifest = nlohmann::json::parse(readFile(scratch.path() / "out" / "manifest.json"));
     EXPECT_EQ(manifest["specular"]["size"], 256);
     EXPECT_EQ(manifest["specular"]["mips"], 6);

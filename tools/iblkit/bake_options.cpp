@@ -2,6 +2,7 @@
 
 #include "bake_settings.hpp"
 #include "kernels/lut_methods.hpp"
+#include "kernels/specular_method.hpp"
 #include "profiles/engine_profile.hpp"
 #include "shading/shading_recipe.hpp"
 
@@ -9,9 +10,22 @@
 
 namespace iblkit::cli {
 
+namespace {
+
+// "table 1 to 65535, filtered 1 to ...": each method's range, as validateSettings checks it.
+template <typename Low, typename High>
+std::string rangesOf(const std::vector<std::string>& methods, Low low, High high) {
+    std::string ranges;
+    for (const auto& method : methods)
+        if (high(method) > 0) ranges += fmt::format("{}{} {} to {}", ranges.empty() ? "" : ", ", method, low(method), high(method));
+    return ranges;
+}
+
+} // namespace
+
 void addBakeSettingOptions(CLI::App& command, BakeRequest& s, std::string& lutFormat) {
-    command.add_option("--size", s.size, "Cube face size, a power of two (default 256)");
-    command.add_option("--mips", s.mips, "Specular mips (default: down to 8x8)");
+    command.add_option("--size", s.size, fmt::format("Cube face size, a power of two up to {} (default 256)", bake::kMaxCubeSize));
+    command.add_option("--mips", s.mips, "Specular mips, 1 to the full chain (log2 of the size, plus 1; default: down to 8x8)");
     command.add_option("--method", s.method,
                         "Prefilter method: convolution (default; an exact sum over the source's texels as a tree), "
                         "table (filtered importance sampling from a host sample table), filtered (the same, per "
@@ -30,23 +44,26 @@ void addBakeSettingOptions(CLI::App& command, BakeRequest& s, std::string& lutFo
                        fmt::format("The engine whose conventions the files follow (docs/engines.md): its recipe, cube "
                                    "frame and chain; one of {} (default: iblkit)", profiles));
     command.add_option("--samples", s.samples,
-                        "Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads per "
-                        "texel, 1 to 4; mipchain takes none), or for the convolution its budget of terms per texel "
-                        "(default 1024, 128 for convolution, 1 for pyramid and mipchain)");
-    command.add_option("--lut-size", s.lutSize, "BRDF LUT size (default 512)");
+                        fmt::format("Prefilter samples per texel (for table, mip 1's, doubling per mip; for pyramid, reads "
+                                    "per texel; mipchain takes none), or for the convolution its budget of terms per texel: "
+                                    "{} (default 1024, 128 for convolution, 1 for pyramid and mipchain)",
+                                    rangesOf(kernels::specularMethods(), [](const auto&) { return 1; }, kernels::maxSamplesOf)));
+    command.add_option("--lut-size", s.lutSize, fmt::format("BRDF LUT size, 1 to {} (default 512)", bake::kMaxLutSize));
     command.add_option("--lut-method", s.lutMethod,
                         "BRDF LUT method: quadrature-grid (default; the quadrature on a grid of nodes, interpolated), "
                         "quadrature (a deterministic quadrature at every texel, exact in azimuth), fit (a polynomial "
                         "fitted to the converged LUT) or document (the documents' importance sampling)");
     command.add_option("--lut-samples", s.lutSamples,
                         fmt::format("BRDF LUT samples per texel, for the quadrature its Gauss-Legendre nodes per panel, "
-                                    "for the quadrature grid its nodes per side, for the fit its degree (default {} for "
-                                    "document, {} for quadrature, {} for quadrature-grid, {} for fit)",
+                                    "for the quadrature grid its nodes per side, for the fit its degree: {} (default {} "
+                                    "for document, {} for quadrature, {} for quadrature-grid, {} for fit)",
+                                    rangesOf(kernels::lutMethods(), kernels::minLutSamplesOf, kernels::maxLutSamplesOf),
                                     bake::kDocumentSamples, kernels::kDefaultQuadratureNodes, kernels::kDefaultLutGrid,
                                     bake::kDefaultLutFitDegree));
     command.add_option("--lut-format", lutFormat, "rg16f (default) or rg32f")
         ->check(CLI::IsMember({"rg16f", "rg32f"}));
-    command.add_option("--irradiance-size", s.irradianceSize, "Irradiance cube face size (default 32)");
+    command.add_option("--irradiance-size", s.irradianceSize,
+                       fmt::format("Irradiance cube face size, 1 to {} (default 32)", bake::kMaxIrradianceSize));
 }
 
 LutFormat lutFormatNamed(const std::string& name) { return name == "rg32f" ? LutFormat::Rg32Float : LutFormat::Rg16Float; }

@@ -2,6 +2,7 @@
 
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "kernels/sampled_methods.hpp"
 #include "shell_command.hpp"
 
 #include <fmt/core.h>
@@ -63,7 +64,8 @@ void addBenchCommand(CLI::App& app) {
                         "sky (default), furnace, sun, blender (its eight world HDRIs), one of them by name (forest, ...), "
                         "or an .hdr/.exr/.ktx2/.dds file or a folder of faces");
     command->add_option("--method", o.methods, "Methods from hlsl/shaders.json (default: every one)")->delimiter(',');
-    command->add_option("--samples", o.samples, "Sample counts (default 16,64,256,1024,4096,16384,65536)")
+    command->add_option("--samples", o.samples,
+                        fmt::format("Sample counts, each 1 to {} (default 16,64,256,1024,4096,16384,65536)", kernels::kMaxSamples))
         ->delimiter(',');
     command->add_option("--lut-nodes", o.quadratureNodes,
                         "The LUT quadrature's Gauss-Legendre nodes per panel, 1 to 16 (default 3,4,5,6,7,8)")
@@ -73,12 +75,16 @@ void addBenchCommand(CLI::App& app) {
         ->delimiter(',');
     command->add_option("--lut-degree", o.lutDegrees, "The polynomial LUT's degrees, 1 to 9 (default 1,3,5,7,9)")
         ->delimiter(',');
-    command->add_option("--size", o.size, "Source cube face size, a power of two (default 256)");
-    command->add_option("--lut-size", o.lutSize, "BRDF LUT size (default 512)");
-    command->add_option("--irradiance-size", o.irradianceSize, "Irradiance cube face size (default 32)");
-    command->add_option("--texels", o.texelsPerMip, "Reference texels per specular mip (default 192)");
-    command->add_option("--seed", o.seed, "Seed of the reference texels (default 1)");
-    command->add_option("--repeat", o.repeat, "Timed runs per configuration; times are medians (default 3)");
+    command->add_option("--size", o.size,
+                        fmt::format("Source cube face size, a power of two from {} to {} (default 256)", bench::kMinBenchCubeSize,
+                                    bench::kMaxBenchCubeSize));
+    command->add_option("--lut-size", o.lutSize, fmt::format("BRDF LUT size, 1 to {} (default 512)", bench::kMaxBenchLutSize));
+    command->add_option("--irradiance-size", o.irradianceSize,
+                        fmt::format("Irradiance cube face size, 1 to {} (default 32)", bench::kMaxBenchIrradianceSize));
+    command->add_option("--texels", o.texelsPerMip, "Reference texels per specular mip, 1 or more (default 192)");
+    command->add_option("--seed", o.seed, "Seed of the reference texels, any whole number from 0 (default 1)");
+    command->add_option("--repeat", o.repeat,
+                        fmt::format("Timed runs per configuration, 1 to {}; times are medians (default 3)", bench::kMaxBenchRepeat));
     command->add_option("--outputs", arguments->outputs,
                         "What to measure (default specular,lut,irradiance; bake: whole default bakes, with and "
                         "without the cache, and the bench's scenes)")

@@ -1,6 +1,7 @@
 #include "consistency_command.hpp"
 
 #include "atomic_output.hpp"
+#include "bake_progress.hpp"
 #include "consistency_suite.hpp"
 #include "run_command.hpp"
 #include "vulkan_context.hpp"
@@ -17,6 +18,7 @@ void addConsistencyCommand(CLI::App& app) {
         std::string out;
         std::string device;
         uint32_t samples = 1024;
+        bool quiet = false;
     };
     auto arguments = std::make_shared<Arguments>();
     auto* command = app.add_subcommand("consistency", "Run every kernel of hlsl/shaders.json in every form and compare with the C++ reference");
@@ -25,6 +27,7 @@ void addConsistencyCommand(CLI::App& app) {
     // The suite runs the sampled kernels in one dispatch each, one loop over the samples: past
     // 65535 llvmpipe would end that loop early (the bake splits such counts; the suite does not).
     command->add_option("--samples", arguments->samples, "Samples per texel, 1 to 65535 (default 1024, the documents')");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
     command->callback([arguments] {
         if (arguments->samples < 1 || arguments->samples > 65535)
             throw std::invalid_argument(fmt::format("--samples {} is out of range (1 to 65535)", arguments->samples));
@@ -32,7 +35,8 @@ void addConsistencyCommand(CLI::App& app) {
         auto log = std::make_shared<vulkan::ValidationLog>();
         const vulkan::VulkanContext context({arguments->device, false, log});
         const auto options = consistency::defaultSuiteOptions("hlsl/shaders.json", arguments->samples);
-        const auto [rows, openGlRenderer] = consistency::runConsistency(context, options);
+        bake::BakeProgress progress(arguments->quiet);
+        const auto [rows, openGlRenderer] = consistency::runConsistency(context, options, &progress);
         std::string invocation = "iblkit consistency";
         if (arguments->samples != 1024) invocation += fmt::format(" --samples {}", arguments->samples);
         if (!arguments->out.empty()) invocation += " --out " + arguments->out;

@@ -1,6 +1,7 @@
 #include "porting_command.hpp"
 
 #include "atomic_output.hpp"
+#include "bake_progress.hpp"
 #include "corpus_run.hpp"
 #include "porting_markdown.hpp"
 #include "run_command.hpp"
@@ -20,6 +21,7 @@ void addPortingCommand(CLI::App& app) {
         std::string corpus = kDefaultCorpus;
         std::string out;
         std::string device;
+        bool quiet = false;
     };
     auto arguments = std::make_shared<Arguments>();
     auto* command = app.add_subcommand("porting", "Compile the porting corpus into every form, run it, judge each feature "
@@ -27,6 +29,7 @@ void addPortingCommand(CLI::App& app) {
     command->add_option("--corpus", arguments->corpus, "Corpus folder holding corpus.json (default hlsl/porting)");
     command->add_option("--out", arguments->out, "Write the feature table (markdown) here, e.g. docs/porting.md");
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
     command->callback([arguments] {
         if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before the corpus runs
         const auto manifest = porting::readCorpusManifest(arguments->corpus);
@@ -38,7 +41,13 @@ void addPortingCommand(CLI::App& app) {
         probe.device = options.device;
         probe.validation = options.validation;
         vulkan::VulkanContext{probe};
-        const auto results = porting::runCorpus(manifest, options);
+        bake::BakeProgress progress(arguments->quiet);
+        progress.begin("corpus");
+        size_t done = 0;
+        const auto results = porting::runCorpus(manifest, options, [&](const std::string& shader) {
+            progress.advance(double(++done) / double(manifest.shaders.size()), shader);
+        });
+        progress.end();
         for (const auto& outcome : results.features) {
             fmt::print("{} {} ({})\n", outcome.mismatches.empty() ? "PASS" : "FAIL", outcome.feature.id,
                        porting::statusName(outcome.status));

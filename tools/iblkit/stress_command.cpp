@@ -1,6 +1,7 @@
 #include "stress_command.hpp"
 
 #include "atomic_output.hpp"
+#include "bake_progress.hpp"
 #include "bench_environments.hpp"
 #include "reference_cache.hpp"
 #include "run_command.hpp"
@@ -19,6 +20,7 @@ void addStressCommand(CLI::App& app) {
         std::string device;
         std::string cache;
         bool reduced = false;
+        bool quiet = false;
     };
     auto arguments = std::make_shared<Arguments>();
     auto* command = app.add_subcommand("stress", "Run every kernel at its numerical extremes on every path and compare with the C++ double reference");
@@ -27,6 +29,7 @@ void addStressCommand(CLI::App& app) {
     command->add_flag("--reduced", arguments->reduced, "The test suite's smaller set: no Blender HDRIs, fewer sizes and sample counts");
     command->add_option("--cache", arguments->cache, "Folder Blender's HDRIs are fetched into "
                                                      "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
+    command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
     command->callback([arguments] {
         if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before a minute of work
         auto log = std::make_shared<vulkan::ValidationLog>();
@@ -35,7 +38,8 @@ void addStressCommand(CLI::App& app) {
         if (!arguments->reduced)
             options.blenderWorlds = bench::blenderWorlds(arguments->cache.empty() ? bench::ReferenceCache::defaultFolder()
                                                                                   : std::filesystem::path(arguments->cache));
-        const auto report = stress::runStress(context, options);
+        bake::BakeProgress progress(arguments->quiet);
+        const auto report = stress::runStress(context, options, &progress);
         std::string invocation = "iblkit stress";
         if (arguments->reduced) invocation += " --reduced";
         if (!arguments->out.empty()) invocation += " --out " + arguments->out;
