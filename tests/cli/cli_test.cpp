@@ -62,11 +62,18 @@ TEST_F(Cli, FlagsReachTheCompiler) {
     EXPECT_NE(json.find("\"format\": \"rg16f\""), std::string::npos) << json;
 }
 
+// Each -D takes one value, before or after the source; the shader computes with both (A * 10 + B
+// is 25 only when A is 2 and B is 5), and without B it does not compile.
 TEST_F(Cli, RepeatableFlagsTakeOneValueEachWhereverTheSourceStands) {
-    const auto result = iblkit({"compile", "-I", "hlsl", "-D", "SAMPLE_COUNT=16", "hlsl/document/PrecomputedBrdfCS.hlsl", "-o",
-                                at("lut.spv")});
-    EXPECT_EQ(result.exitCode, 0) << result.err;
-    EXPECT_TRUE(fs::exists(out / "lut.spv"));
+    std::ofstream(out / "defines.hlsl") << "RWStructuredBuffer<uint> Out;\n[numthreads(1, 1, 1)]\nvoid main() { Out[0] = A * 10 + B; }\n";
+    const auto result = iblkit({"compile", "-D", "A=2", at("defines.hlsl"), "-D", "B=5", "-o", at("defines.spv"), "--glsl",
+                                at("defines.glsl")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto glsl = readFile(out / "defines.glsl");
+    EXPECT_NE(glsl.find("Out_1._data[0] = 25u;"), std::string::npos) << glsl;
+    const auto withoutB = iblkit({"compile", "-D", "A=2", at("defines.hlsl"), "-o", at("defines.spv")});
+    EXPECT_NE(withoutB.exitCode, 0);
+    EXPECT_NE(withoutB.err.find("'B' : unknown variable"), std::string::npos) << withoutB.err;
 }
 
 TEST_F(Cli, SameInputAndFlagsGiveByteIdenticalOutputs) {

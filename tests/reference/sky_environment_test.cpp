@@ -1,10 +1,14 @@
 // The built-in environment's cube: its supersampling keeps the sun's energy, and it is the
 // environment it claims to be.
+#include "read_file.hpp"
 #include "sky_environment.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <regex>
+#include <stdexcept>
 
 namespace iblkit::reference {
 namespace {
@@ -33,11 +37,43 @@ TEST(SkyEnvironment, FourByFourEvaluationsKeepTheSunsEnergy) {
     EXPECT_GT(single, 1e-2);
 }
 
-TEST(SkyEnvironment, TheSunIsWhereItIsSaidToBe) {
-    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.45, 0.84));
-    EXPECT_GT(EnvironmentRadiance(sun).r, 4000.0);
-    EXPECT_LT(EnvironmentRadiance(-sun).r, 1.0);
-    EXPECT_NEAR(EnvironmentRadiance(glm::dvec3(0, 1, 0)).b, 0.95 + 40 * std::exp(-25 * std::acos(0.45 / glm::length(glm::dvec3(0.3, 0.45, 0.84)))) * 0.8, 1e-9);
+// The sun's direction as SkyCubeCS.hlsl, the sky the bake renders, names it.
+glm::dvec3 shadersSun() {
+    const auto source = testing::readFile("hlsl/SkyCubeCS.hlsl");
+    static const std::regex sun(R"(float3 sun = normalize\( float3\( ([-0-9.]+)f, ([-0-9.]+)f, ([-0-9.]+)f \) \))");
+    std::smatch match;
+    if (!std::regex_search(source, match, sun)) throw std::runtime_error("SkyCubeCS.hlsl names no sun direction");
+    return glm::normalize(glm::dvec3(std::stod(match[1]), std::stod(match[2]), std::stod(match[3])));
+}
+
+// The C++ sky's brightest direction, found by search (a 0.25° grid, then 0.01° about the best), is
+// the shader's sun; its glow falls off away from it, and the opposite side is dark.
+TEST(SkyEnvironment, TheSunIsWhereTheSkyShaderPutsIt) {
+    const auto brightest = [](double thetaFrom, double thetaTo, double phiFrom, double phiTo, double step) {
+        glm::dvec3 best(0);
+        double most = -1;
+        for (double theta = thetaFrom; theta <= thetaTo; theta += step)
+            for (double phi = phiFrom; phi <= phiTo; phi += step) {
+                const glm::dvec3 direction(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+                if (const double r = EnvironmentRadiance(direction).r; r > most) most = r, best = direction;
+            }
+        return best;
+    };
+    const double degree = std::acos(-1.0) / 180;
+    auto best = brightest(0, 180 * degree, -180 * degree, 180 * degree, 0.25 * degree);
+    const double theta = std::acos(best.y), phi = std::atan2(best.z, best.x);
+    best = brightest(theta - 0.5 * degree, theta + 0.5 * degree, phi - 0.5 * degree, phi + 0.5 * degree, 0.01 * degree);
+    const auto sun = shadersSun();
+    EXPECT_LT(std::acos(std::min(1.0, glm::dot(best, sun))), 0.05 * degree) << "the C++ sky's sun is not the shader's";
+    // Along a great circle away from the sun: dimmer at every step out to 20°.
+    const glm::dvec3 across = glm::normalize(glm::cross(sun, glm::dvec3(0, 1, 0)));
+    double previous = EnvironmentRadiance(sun).r;
+    for (double angle = 1; angle <= 20; angle += 1) {
+        const double r = EnvironmentRadiance(std::cos(angle * degree) * sun + std::sin(angle * degree) * across).r;
+        EXPECT_LT(r, previous) << angle << "° from the sun";
+        previous = r;
+    }
+    EXPECT_LT(EnvironmentRadiance(-sun).r, 1e-3 * EnvironmentRadiance(sun).r);
 }
 
 } // namespace
