@@ -29,7 +29,7 @@ std::optional<std::pair<json, std::vector<float>>> splitPayload(std::string_view
     const auto bytes = payload.substr(newline + 1);
     if (header.is_discarded() || !header.is_object() || bytes.size() % sizeof(float) != 0) return std::nullopt;
     std::vector<float> values(bytes.size() / sizeof(float));
-    std::memcpy(values.data(), bytes.data(), bytes.size());
+    if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size()); // no copy from an empty view's null
     return std::pair{std::move(header), std::move(values)};
 }
 

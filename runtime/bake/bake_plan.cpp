@@ -168,6 +168,7 @@ BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::option
     if (scene) {
         plan.scene = scene->file;
         plan.unknownExtensions = scene->unknownExtensions;
+        plan.notes = scene->notes;
         for (const auto& material : scene->materials) {
             for (const auto& note : material.notes) plan.notes.push_back(material.name + ": " + note);
             for (const auto& extension : material.unknownExtensions)

@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -32,8 +34,19 @@ struct ReferencedFileRefused : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The external buffers of a scene (`uris`), and those that hold only geometry (no image's
+// bufferView lies in them) with their byteLength. What the kit reads of a scene is its materials
+// and their textures, so a geometry buffer that is missing is read as zeros, and named in
+// `missing`; any other missing buffer is refused in the kit's words.
+struct GeometryBuffers {
+    std::set<std::string> uris;
+    std::map<std::string, uint64_t> byteLengths;
+    std::vector<std::string> missing;
+};
+GeometryBuffers geometryOnlyBuffers(std::string_view json);
+
 // tinygltf reads the files a scene names by the same policy; a refusal is ReferencedFileRefused,
-// thrown through tinygltf.
-void readReferencedFilesByThePolicy(tinygltf::TinyGLTF& loader);
+// thrown through tinygltf. A missing buffer of `geometry` is zeros instead.
+void readReferencedFilesByThePolicy(tinygltf::TinyGLTF& loader, GeometryBuffers& geometry);
 
 } // namespace iblkit::scene

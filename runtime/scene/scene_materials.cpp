@@ -138,7 +138,7 @@ std::string_view jsonOf(const std::vector<std::byte>& bytes, bool binary) {
     return text.substr(20, length);
 }
 
-tinygltf::Model load(const std::filesystem::path& file) {
+tinygltf::Model load(const std::filesystem::path& file, std::vector<std::string>& notes) {
     std::error_code error;
     if (!std::filesystem::exists(file, error)) throw SceneError(file.string() + ": error: no such scene file");
     const bool binary = file.extension() == ".glb";
@@ -149,7 +149,8 @@ tinygltf::Model load(const std::filesystem::path& file) {
     requireGltfShape(jsonOf(bytes, binary), file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
-    readReferencedFilesByThePolicy(loader);
+    auto geometry = geometryOnlyBuffers(jsonOf(bytes, binary));
+    readReferencedFilesByThePolicy(loader, geometry);
     tinygltf::Model model;
     std::string problem, warning;
     const auto folder = file.parent_path().string();
@@ -169,6 +170,8 @@ tinygltf::Model load(const std::filesystem::path& file) {
         std::replace(line.begin(), line.end(), '\n', ' ');
         throw SceneError(file.string() + ": error: " + line);
     }
+    for (const auto& uri : geometry.missing)
+        notes.push_back("buffer '" + uri + "' is missing; it holds only geometry, which the lighting's needs do not read");
     return model;
 }
 
@@ -179,8 +182,8 @@ bool isUnderstoodExtension(const std::string& name) {
 }
 
 SceneMaterials readSceneMaterials(const std::filesystem::path& file, bool strict) {
-    const auto model = load(file);
-    SceneMaterials scene{file, {}, {}};
+    SceneMaterials scene{file, {}, {}, {}};
+    const auto model = load(file, scene.notes);
     for (size_t i = 0; i < model.materials.size(); ++i)
         scene.materials.push_back(needsOf(model, model.materials[i], i, {file, strict}));
     if (usesTheDefaultMaterial(model) || model.materials.empty()) {

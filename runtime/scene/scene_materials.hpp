@@ -24,6 +24,7 @@ struct SceneMaterials {
     std::filesystem::path file;
     std::vector<MaterialNeeds> materials;
     std::vector<std::string> unknownExtensions; // the scene's extensionsUsed the kit does not understand
+    std::vector<std::string> notes;             // about the scene as a whole (a missing geometry buffer)
 };
 
 // Reads a glTF 2.0 scene (.gltf with its buffers and images, or .glb) with tinygltf and derives

@@ -161,6 +161,28 @@ TEST_F(SceneMaterials, AFileTheSceneNamesMustBeARegularFile) {
     }
 }
 
+// The lighting's needs read materials and textures, never geometry: a missing buffer of vertices
+// is a note (tinygltf refused the whole scene with "File not found : mesh.bin"), and a missing
+// buffer that an image lies in is refused in the kit's words.
+TEST_F(SceneMaterials, AMissingGeometryBufferIsANoteAndAMissingImageBufferIsRefused) {
+    const std::string geometry = R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "mesh.bin", "byteLength": 36}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"roughnessFactor": 0.5, "metallicFactor": 0}}]})";
+    const auto scene = readSceneMaterials(folder.write("geometry.gltf", geometry));
+    ASSERT_EQ(scene.notes.size(), 1u);
+    EXPECT_EQ(scene.notes[0], "buffer 'mesh.bin' is missing; it holds only geometry, which the lighting's needs do not read");
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.materials[0].roughness.max, 0.5);
+    const auto image = errorOf("image.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "pixels.bin", "byteLength": 36}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}], "images": [{"bufferView": 0, "mimeType": "image/png"}],
+        "textures": [{"source": 0}],
+        "materials": [{"pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": 0}}}]})");
+    EXPECT_EQ(image, (folder.path() / "image.gltf").string() + ": error: cannot open '" + (folder.path() / "pixels.bin").string() +
+                         "': No such file or directory");
+}
+
 // tinygltf read each of these without a word: a factor it could not read became the default, a
 // material index out of range was dropped, and any version passed.
 TEST_F(SceneMaterials, MalformedGltfIsRefusedInOneLineNamingWhereAndWhat) {
