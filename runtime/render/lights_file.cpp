@@ -2,6 +2,9 @@
 
 #include "render_error.hpp"
 
+#include "files.hpp"
+#include "image_error.hpp"
+
 #include <fmt/core.h>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -32,6 +35,8 @@ constexpr double kMaxCoordinate = 1e30;
 constexpr double kMaxRadiance = 1e15;
 // How far from the sphere's centre a point light, or an area light's plane, must be.
 constexpr float kClearance = 1.001f;
+// 64 lights take a few kilobytes; a file of more is not a lights file.
+constexpr uint64_t kMaxLightsFileBytes = 1 << 20;
 
 glm::vec3 vectorField(const Json& light, const char* field, double limit, const LightContext& where) {
     if (!light.contains(field)) where.fail(fmt::format("\"{}\" is missing", field));
@@ -124,13 +129,15 @@ std::vector<RenderLight> parseLights(std::string_view text, std::string_view nam
 
 std::vector<RenderLight> readLightsFile(const std::filesystem::path& path) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        throw RenderError(fmt::format("lights file {} does not exist or is not a file", path.string()));
-    std::ifstream stream(path, std::ios::binary);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    if (!stream) throw RenderError(fmt::format("lights file {} cannot be read", path.string()));
-    return parseLights(text.str(), path.string());
+    if (!std::filesystem::exists(path, error))
+        throw RenderError(fmt::format("lights file {} does not exist", path.string()));
+    try {
+        // The environment's and the scene's reader: a regular file (never a pipe to wait on), bounded.
+        const auto bytes = image_io::readFileBytes(path, kMaxLightsFileBytes);
+        return parseLights(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path.string());
+    } catch (const image_io::ImageError& refused) {
+        throw RenderError(fmt::format("lights file {}", refused.what()));
+    }
 }
 
 std::vector<float> packLights(const std::vector<RenderLight>& lights) {
