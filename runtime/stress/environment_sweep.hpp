@@ -18,9 +18,14 @@ struct EnvironmentRow {
     // them (ConsistencyRow::colourError).
     double relativeError = 0;
     double bound = 0;
-    std::string knownIssue = {}; // the consistency suite's known divergence: reported, not judged
+    std::string knownIssue = {}; // the consistency suite's known divergence: finite, its error reported
     bool passed = false;
+    bool diverges() const { return relativeError > bound; }
 };
+
+// Whether the consistency suite's known divergences show in the sweep: none is known, or at least
+// one known row is past its bound. A known divergence that no longer shows is stale.
+bool knownDivergencesShow(const std::vector<EnvironmentRow>& rows);
 
 // Every output of the consistency suite that reads an environment (addEnvironmentOutputs), on
 // every path, over each case; the prefilter kernels at roughness 0, the smallest denormal,

@@ -104,7 +104,9 @@ std::string ofHammersley(const ProbeArguments& arguments, size_t i) {
 
 // A function's place in its probe's results, how its error is measured and where the bake calls
 // it. Each bound is twice the largest error measured on lavapipe where the bake calls the
-// function, rounded up (why each is what it is: docs/stability.md).
+// function, rounded up, for each kind of path: the C++ float twin, the four Vulkan paths and
+// OpenGL (why each is what it is: docs/stability.md). One bound for all, set by the float twin,
+// left the GPU paths up to 5000 times the error they have.
 enum class Probe { Pbr, Lut, Bsdf };
 
 const char* kernelOf(Probe probe) {
@@ -116,35 +118,38 @@ struct ProbeFunction {
     Probe probe;
     uint32_t first, count; // floats within one argument's results
     bool relative;
-    double bound;
+    double floatBound, vulkanBound, openGlBound;
     bool (*calledByBake)(const glm::vec4& argument);
     std::string (*describe)(const ProbeArguments& arguments, size_t index);
 };
 const ProbeFunction kFunctions[] = {
-    {"DistributionGGX (D)", Probe::Pbr, 0, 1, true, 1e-6, prefilterDomain, ofNdotvAndRoughness},
-    {"GeometrySmithForIBL (G)", Probe::Pbr, 1, 1, false, 2e-7, lutDomain, ofSmith},
-    {"GeometrySchlickGGXForIBL (G1)", Probe::Pbr, 2, 1, false, 1e-7, lutDomain, ofNdotvAndRoughness},
-    {"FresnelSchlick (F)", Probe::Pbr, 4, 3, false, 2.4e-7, anywhere, ofFresnel},
-    {"ImportanceSampleGGX", Probe::Pbr, 8, 3, false, 0.56, sampleDomain, ofSample},
-    {"Hammersley", Probe::Pbr, 12, 2, false, 4e-8, anywhere, ofHammersley},
-    {"IntegrateBRDF (1024 samples)", Probe::Pbr, 14, 2, false, 0.35, lutDomain, ofNdotvAndRoughness},
-    {"IntegrateBrdfQuadrature (the kit's LUT)", Probe::Lut, 0, 2, false, 3e-6, anywhere, ofNdotvAndRoughness},
+    {"DistributionGGX (D)", Probe::Pbr, 0, 1, true, 1e-6, 1.5e-7, 1.5e-7, prefilterDomain, ofNdotvAndRoughness},
+    {"GeometrySmithForIBL (G)", Probe::Pbr, 1, 1, false, 2e-7, 2e-7, 2e-7, lutDomain, ofSmith},
+    {"GeometrySchlickGGXForIBL (G1)", Probe::Pbr, 2, 1, false, 1e-7, 1e-7, 1e-7, lutDomain, ofNdotvAndRoughness},
+    {"FresnelSchlick (F)", Probe::Pbr, 4, 3, false, 2.4e-7, 1.2e-7, 1.2e-7, anywhere, ofFresnel},
+    // The float twin's 0.28: its inverse CDF loses alpha^4 below float's step at 1 (roughness
+    // below 0.0156) and returns H = N; llvmpipe contracts it into an fma and stays 1e-4 off
+    // (docs/stability-notes.md), as IntegrateBRDF then does (0.17 against 1.1e-2).
+    {"ImportanceSampleGGX", Probe::Pbr, 8, 3, false, 0.56, 2e-4, 2e-4, sampleDomain, ofSample},
+    {"Hammersley", Probe::Pbr, 12, 2, false, 4e-8, 4e-8, 4e-8, anywhere, ofHammersley},
+    {"IntegrateBRDF (1024 samples)", Probe::Pbr, 14, 2, false, 0.35, 0.022, 0.022, lutDomain, ofNdotvAndRoughness},
+    {"IntegrateBrdfQuadrature (the kit's LUT)", Probe::Lut, 0, 2, false, 3e-6, 3.1e-6, 2.9e-6, anywhere, ofNdotvAndRoughness},
     // The path tracer's, judged where iblkit render calls them (renderDomain). D's cancellation as
     // N.H nears 1 at roughness 0.05 (6e-2 on OpenGL, 2e-2 on Vulkan, 6e-2 in the float reference)
     // reaches the BRDF, the BSDF and every term that evaluates them; the BTDF and the GGX density
-    // carry the float reference's 2.7e-3 where N.V is 1e-7.
-    {"BRDF", Probe::Bsdf, 0, 3, true, 0.13, renderDomain, ofDirections},
-    {"D", Probe::Bsdf, 3, 1, true, 0.13, renderDomain, ofDirections},
-    {"BTDF", Probe::Bsdf, 4, 3, true, 6e-3, renderDomain, ofDirections},
-    {"G (direct light)", Probe::Bsdf, 7, 1, false, 2e-7, renderDomain, ofDirections},
-    {"BSDF", Probe::Bsdf, 8, 4, true, 0.13, renderDomain, ofDirections},
-    {"SampleCosineHemisphere", Probe::Bsdf, 12, 3, false, 6e-7, renderDomain, ofDirections},
-    {"CosineHemispherePdf", Probe::Bsdf, 15, 1, false, 3e-8, renderDomain, ofDirections},
-    {"SampleGGX", Probe::Bsdf, 16, 3, false, 2.1e-4, renderDomain, ofDirections},
-    {"GgxHalfVectorPdf", Probe::Bsdf, 19, 1, true, 6e-3, renderDomain, ofDirections},
-    {"PointLightTerm", Probe::Bsdf, 20, 3, true, 5e-5, renderDomain, ofDirections},
-    {"Random", Probe::Bsdf, 23, 1, false, 0, anywhere, ofDirections}, // integer hashing, exact
-    {"AreaLightTerm, DirectionalLightTerm", Probe::Bsdf, 24, 4, true, 6e-4, renderDomain, ofDirections},
+    // carry the float reference's 2.7e-3 where N.V is 1e-7, which the GPU paths do not have.
+    {"BRDF", Probe::Bsdf, 0, 3, true, 0.13, 0.046, 0.13, renderDomain, ofDirections},
+    {"D", Probe::Bsdf, 3, 1, true, 0.13, 0.046, 0.13, renderDomain, ofDirections},
+    {"BTDF", Probe::Bsdf, 4, 3, true, 6e-3, 1.2e-5, 1.2e-5, renderDomain, ofDirections},
+    {"G (direct light)", Probe::Bsdf, 7, 1, false, 2e-7, 2e-7, 2e-7, renderDomain, ofDirections},
+    {"BSDF", Probe::Bsdf, 8, 4, true, 0.13, 0.046, 0.13, renderDomain, ofDirections},
+    {"SampleCosineHemisphere", Probe::Bsdf, 12, 3, false, 6e-7, 6e-7, 6e-7, renderDomain, ofDirections},
+    {"CosineHemispherePdf", Probe::Bsdf, 15, 1, false, 3e-8, 3e-8, 3e-8, renderDomain, ofDirections},
+    {"SampleGGX", Probe::Bsdf, 16, 3, false, 2.1e-4, 5.4e-5, 5.4e-5, renderDomain, ofDirections},
+    {"GgxHalfVectorPdf", Probe::Bsdf, 19, 1, true, 6e-3, 1.5e-7, 1.5e-7, renderDomain, ofDirections},
+    {"PointLightTerm", Probe::Bsdf, 20, 3, true, 5e-5, 5e-5, 5e-5, renderDomain, ofDirections},
+    {"Random", Probe::Bsdf, 23, 1, false, 0, 0, 0, anywhere, ofDirections}, // integer hashing, exact
+    {"AreaLightTerm, DirectionalLightTerm", Probe::Bsdf, 24, 4, true, 8e-5, 5.2e-4, 5.2e-4, renderDomain, ofDirections},
 };
 
 const char* finiteness(double value) {
@@ -168,7 +173,9 @@ ProbeRow judge(const ProbeFunction& function, const ProbeArguments& arguments, c
                const std::vector<float>& path, std::string pathName, bool isFloatReference) {
     ProbeRow row{kernelOf(function.probe), function.name, std::move(pathName)};
     row.relative = function.relative;
-    row.bound = function.bound;
+    row.bound = isFloatReference                              ? function.floatBound
+                : row.path == consistency::openGlPathName() ? function.openGlBound
+                                                              : function.vulkanBound;
     for (size_t a = 0; a < arguments.values.size(); ++a)
         for (uint32_t k = 0; k < function.count; ++k) {
             const size_t at = a * references.stride + function.first + k;

@@ -98,6 +98,30 @@ std::string environmentTable(const std::vector<EnvironmentRow>& rows) {
     return text;
 }
 
+// The rows of the consistency suite's known divergences that are past their bound: where the
+// sweep sees the divergence, and how large it is.
+std::string knownDivergenceTable(const std::vector<EnvironmentRow>& rows) {
+    std::string text;
+    size_t known = 0;
+    for (const auto& row : rows) {
+        if (row.knownIssue.empty()) continue;
+        ++known;
+        if (row.diverges())
+            text += fmt::format("| {} | {}² | {} | {} | {} | {:.3g} | {:.3g} |\n", row.environment, row.size, row.kernel,
+                                row.output, row.path, row.relativeError, row.bound);
+    }
+    if (known == 0) return "";
+    const std::string shows = knownDivergencesShow(rows) ? "it shows, as it must"
+                                                         : "**it no longer shows: the known divergence is stale**";
+    return fmt::format("\nThe consistency suite's known divergences (docs/consistency.md says why) are judged "
+                       "apart: each of their {} rows must be finite, and the divergence must show on some environment: "
+                       "{}. Where it is past its bound:\n\n"
+                       "| environment | cube | kernel | output | path | error / largest value | bound |\n"
+                       "|---|---|---|---|---|---|---|\n",
+                       known, shows) +
+           text;
+}
+
 std::string growthTable(const std::vector<GrowthRow>& rows) {
     std::string text =
         "The documents' two estimators at growing sample counts, each against the same samples summed in double: "
@@ -133,7 +157,8 @@ std::string renderStabilityMarkdown(const StressReport& report, const vulkan::Vu
         "lavapipe, rounded up; why each error is what it is: docs/stability-notes.md. Overall: {}.\n\n",
         command, context.deviceInfo().name, report.openGlRenderer, report.passed() ? "every case passes" : "**FAILED**");
     text += "## PBR.fxh's functions at their edges\n\n" + probeTable(report.probes);
-    text += "\n## Every cube kernel on extreme environments\n\n" + environmentTable(report.environments);
+    text += "\n## Every cube kernel on extreme environments\n\n" + environmentTable(report.environments) +
+            knownDivergenceTable(report.environments);
     text += "\n## Sums over many samples\n\n" + growthTable(report.sampleCounts);
     text += "\n## Inputs no kernel may see\n\n" + inputTable(report.inputs);
     return text;

@@ -26,7 +26,7 @@ BakeSettings documentRecipe() {
 }
 
 BakePlan planFor(std::vector<scene::MaterialNeeds> materials, const BakeSettings& settings = documentRecipe()) {
-    return planBake(settings, 256, scene::SceneMaterials{"scene.gltf", std::move(materials), {}});
+    return planBake(settings, 256, scene::SceneMaterials{"scene.gltf", std::move(materials), {}, {}});
 }
 
 std::vector<bool> neededMips(const BakePlan& plan) {

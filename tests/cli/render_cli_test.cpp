@@ -183,6 +183,17 @@ TEST(RenderReportCli, RefusesBeforeAnyRenderAndAFailedRunLeavesTheEarlierPage) {
     refused({{"--environments", "sky,nowhere"}}, "no report environment 'nowhere'");
     refused({{"--cell-size", "4"}}, "--cell-size 4 is out of range");
     refused({{"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
+    // After the renders, its pictures' folder cannot be made (a file holds the name): nothing is
+    // written, and the message is in the kit's words, not std::filesystem's.
+    TempFolder other;
+    const auto blocked = other.write("errors.md", "the earlier page");
+    other.write("split-sum", "a file where the pictures' folder goes");
+    const auto late = runProcess(quickReportCommand(blocked));
+    EXPECT_NE(late.exitCode, 0);
+    EXPECT_EQ(late.err.rfind("cannot create directories '" + (other.path() / "split-sum" / "sky").string() + "': Not a directory", 0), 0u)
+        << late.err;
+    EXPECT_EQ(late.err.find("filesystem error"), std::string::npos) << late.err;
+    EXPECT_EQ(readFile(blocked), "the earlier page");
     const auto missing = runProcess(quickReportCommand(folder.path() / "missing" / "errors.md"));
     EXPECT_NE(missing.err.find("--out"), std::string::npos) << missing.err;
     EXPECT_FALSE(fs::exists(folder.path() / "missing"));
