@@ -7,6 +7,7 @@
 [numthreads(8, 8, 1)]
 void main(uint3 id : SV_DispatchThreadID)
 {
-    Mips[id.z][id.xy >> id.z] = float4(id.xy, id.z, 1);
+    // Each texel of Mips[m] once, by the thread at its corner.
+    if (all((id.xy & ((1u << id.z) - 1)) == 0)) Mips[id.z][id.xy >> id.z] = float4(id.xy, id.z, 1);
     if (all(id == 0)) Written[0] = 13;
 }

@@ -116,12 +116,17 @@ private:
 
     void checkNames(const compiler::ShaderReflection& reflection) const {
         for (const auto& resource : spec_.resources) {
-            const auto* found = reflection.find(resource.name);
+            const auto* found = reflection.find(resource.binding);
             if (!found) {
                 std::string names;
                 for (const auto& r : reflection.resources) names += (names.empty() ? "" : ", ") + r.name;
-                fail("resources." + resource.name + ": the shader has no resource of that name (it has: " + names + ")");
+                fail("resources." + resource.binding + ": the shader has no resource of that name (it has: " + names + ")");
             }
+            const bool array = resource.name != resource.binding;
+            if (array != (found->location.count > 1) || resource.element >= found->location.count)
+                fail("resources." + resource.binding + ": the shader declares " +
+                     (found->location.count > 1 ? "an array of " + std::to_string(found->location.count) + " (give \"elements\")"
+                                                : std::string("one resource, not an array")));
             const auto kind = compiler::resourceKindName(found->kind);
             const std::string& given = resource.kind;
             const bool matches = (given == "buffer" && kind == "buffer") || (given == "cbuffer" && kind == "cbuffer") ||
@@ -131,10 +136,13 @@ private:
             if (!matches) fail("resources." + resource.name + ": is a " + given + ", but the shader declares a " + std::string(kind));
         }
         for (const auto& resource : reflection.resources) {
-            const bool given = std::any_of(spec_.resources.begin(), spec_.resources.end(),
-                                           [&](const auto& r) { return r.name == resource.name; });
-            if (!given) fail("resources: the shader needs '" + resource.name + "' (" +
-                             std::string(compiler::resourceKindName(resource.kind)) + "), which the run file does not give");
+            const auto given = std::count_if(spec_.resources.begin(), spec_.resources.end(),
+                                             [&](const auto& r) { return r.binding == resource.name; });
+            if (given == 0) fail("resources: the shader needs '" + resource.name + "' (" +
+                                 std::string(compiler::resourceKindName(resource.kind)) + "), which the run file does not give");
+            if (size_t(given) != resource.location.count)
+                fail("resources." + resource.name + ": the shader declares an array of " + std::to_string(resource.location.count) +
+                     ", the run file gives " + std::to_string(given) + " elements");
         }
         const auto holdsValues = [&](const std::string& name, const std::string& where) {
             const auto found = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
@@ -227,12 +235,12 @@ private:
     }
 
     void makeAndBind(const ResourceSpec& spec, vulkan::ComputeProgram& compute) {
-        const auto& reflected = *compute.reflection().find(spec.name);
+        const auto& reflected = *compute.reflection().find(spec.binding);
         if (spec.kind == "cbuffer") {
             const uint32_t size = std::max(16u, (reflected.blockSize + 15) / 16 * 16);
             auto buffer = std::make_unique<vulkan::Buffer>(context_, size, vk::BufferUsageFlagBits::eUniformBuffer, spec.name);
-            buffer->write(vulkan::packBlock(spec.name, reflected.members, size, spec.members));
-            compute.bind(spec.name, *buffer);
+            buffer->write(vulkan::packBlock(spec.binding, reflected.members, size, spec.members));
+            compute.bind(spec.binding, *buffer, spec.element);
             resources_[spec.name] = std::move(buffer);
         } else if (spec.kind == "buffer") {
             const auto& format = bufferFormat(spec);
@@ -246,11 +254,11 @@ private:
             std::vector<std::byte> bytes(count * 4);
             vulkan::encodeTexels(format, values, bytes);
             buffer->write(bytes);
-            compute.bind(spec.name, *buffer);
+            compute.bind(spec.binding, *buffer, spec.element);
             resources_[spec.name] = std::move(buffer);
         } else if (spec.kind == "sampler") {
             auto sampler = std::make_unique<vulkan::Sampler>(context_, samplerDesc(spec));
-            compute.bind(spec.name, *sampler);
+            compute.bind(spec.binding, *sampler, spec.element);
             resources_[spec.name] = std::move(sampler);
         } else {
             const auto& format = vulkan::texelFormatNamed(spec.format);
@@ -262,7 +270,7 @@ private:
             std::vector<std::byte> bytes(values.size() * format.bytesPerChannel);
             vulkan::encodeTexels(format, values, bytes);
             image->uploadBytes(context_, bytes);
-            compute.bind(spec.name, *image, spec.mip);
+            compute.bind(spec.binding, *image, spec.mip, spec.element);
             resources_[spec.name] = std::move(image);
         }
     }

@@ -42,7 +42,7 @@ public:
                 spec.pushConstants[member] = fields_.numbers(value, "push_constants." + member);
         if (root.contains("resources"))
             for (const auto& [name, object] : fields_.object(root.at("resources"), "resources").items())
-                spec.resources.push_back(resource(name, object));
+                for (auto& each : resourceOrElements(name, object)) spec.resources.push_back(std::move(each));
         readDispatch(root, spec);
         if (root.contains("expect")) {
             const auto& expectations = fields_.array(root.at("expect"), "expect");
@@ -115,6 +115,33 @@ private:
             spec.mips = uint32_t(fields_.whole(object.at("mips"), where + ".mips", 1, 32));
         }
         if (object.contains("mip")) spec.mip = uint32_t(fields_.whole(object.at("mip"), where + ".mip", 0, 31));
+    }
+
+    // A resource, or an array of them: {"kind": K, "elements": [{...}, ...]}, each element a
+    // resource of kind K named "NAME[i]".
+    std::vector<ResourceSpec> resourceOrElements(const std::string& name, const json& object) const {
+        const std::string where = "resources." + name;
+        if (!object.is_object() || !object.contains("elements")) {
+            auto spec = resource(name, object);
+            spec.binding = name;
+            return {std::move(spec)};
+        }
+        fields_.objectOf(object, where, {"kind", "elements"});
+        if (!object.contains("kind")) fields_.fail(where, "needs a \"kind\"");
+        const auto& elements = fields_.array(object.at("elements"), where + ".elements");
+        if (elements.empty()) fields_.fail(where + ".elements", "is empty");
+        std::vector<ResourceSpec> specs;
+        for (size_t i = 0; i < elements.size(); ++i) {
+            const std::string elementName = name + "[" + std::to_string(i) + "]";
+            json element = fields_.object(elements[i], where + ".elements[" + std::to_string(i) + "]");
+            if (element.contains("kind")) fields_.fail(where + ".elements[" + std::to_string(i) + "]", "takes its kind from the array");
+            element["kind"] = object.at("kind");
+            auto spec = resource(elementName, element);
+            spec.binding = name;
+            spec.element = uint32_t(i);
+            specs.push_back(std::move(spec));
+        }
+        return specs;
     }
 
     ResourceSpec resource(const std::string& name, const json& object) const {

@@ -21,7 +21,9 @@ struct ValueSource {
 };
 
 struct ResourceSpec {
-    std::string name;
+    std::string name;    // as expectations name it: "Out", or "Mips[2]" for an element of an array
+    std::string binding; // the shader's resource: "Out", "Mips"
+    uint32_t element = 0; // within an array of resources ("elements" in the run file)
     std::string kind; // buffer, cbuffer, image, cube, storage_image, sampler
     // images
     std::string format;

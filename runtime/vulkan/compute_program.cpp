@@ -59,11 +59,10 @@ ComputeProgram::ComputeProgram(const VulkanContext& context, const std::vector<u
     std::map<uint32_t, std::vector<vk::DescriptorSetLayoutBinding>> bindings;
     std::map<vk::DescriptorType, uint32_t> counts;
     for (const auto& resource : reflection_.resources) {
-        if (resource.location.count != 1)
-            throw VulkanError("'" + resource.name + "' is an array of resources, which the runtime does not bind yet");
-        bindings[resource.location.set].emplace_back(resource.location.binding, descriptorTypeOf(resource), 1,
-                                                     vk::ShaderStageFlagBits::eCompute);
-        ++counts[descriptorTypeOf(resource)];
+        // An array of resources is one binding of `count` descriptors.
+        bindings[resource.location.set].emplace_back(resource.location.binding, descriptorTypeOf(resource),
+                                                     resource.location.count, vk::ShaderStageFlagBits::eCompute);
+        counts[descriptorTypeOf(resource)] += resource.location.count;
     }
     std::vector<vk::DescriptorSetLayout> layouts;
     const uint32_t setCount = bindings.empty() ? 0 : bindings.rbegin()->first + 1;
@@ -112,17 +111,27 @@ const compiler::ReflectedResource& ComputeProgram::resource(const std::string& n
     throw VulkanError("the shader has no resource '" + name + "' (it has: " + names + ")");
 }
 
-void ComputeProgram::bind(const std::string& name, const Buffer& buffer) {
+void ComputeProgram::record(const std::string& name, uint32_t element, Bound bound) {
+    const auto count = resource(name).location.count;
+    if (element >= count)
+        throw VulkanError("'" + name + "' has " + std::to_string(count) + " element" + (count == 1 ? "" : "s") +
+                          ", not an element " + std::to_string(element));
+    auto& elements = bound_[name];
+    elements.resize(count);
+    elements[element] = bound;
+}
+
+void ComputeProgram::bind(const std::string& name, const Buffer& buffer, uint32_t element) {
     const auto& target = resource(name);
     if (target.kind != ResourceKind::ConstantBuffer && target.kind != ResourceKind::StorageBuffer)
         throw VulkanError("'" + name + "' is a " + std::string(compiler::resourceKindName(target.kind)) + ", not a buffer");
     if (buffer.size() < target.blockSize)
         throw VulkanError("buffer '" + name + "' has " + std::to_string(buffer.size()) + " bytes; the shader reads " +
                           std::to_string(target.blockSize));
-    bound_[name] = {descriptorTypeOf(target), vk::DescriptorBufferInfo(buffer.handle(), 0, VK_WHOLE_SIZE), {}};
+    record(name, element, {descriptorTypeOf(target), vk::DescriptorBufferInfo(buffer.handle(), 0, VK_WHOLE_SIZE), {}});
 }
 
-void ComputeProgram::bind(const std::string& name, Image& image, uint32_t mip) {
+void ComputeProgram::bind(const std::string& name, Image& image, uint32_t mip, uint32_t element) {
     const auto& target = resource(name);
     const auto& desc = image.desc();
     const auto fail = [&](const std::string& why) { throw VulkanError("'" + name + "': " + why); };
@@ -139,20 +148,22 @@ void ComputeProgram::bind(const std::string& name, Image& image, uint32_t mip) {
             fail("wrong format: the shader declares " + target.vulkanFormat + ", the image is " +
                  std::string(desc.format->name));
         const auto type = target.dimension == "2d" ? vk::ImageViewType::e2D : vk::ImageViewType::e2DArray;
-        bound_[name] = {vk::DescriptorType::eStorageImage, {},
-                        vk::DescriptorImageInfo({}, image.view(type, mip, 1, 0, desc.layers), vk::ImageLayout::eGeneral)};
+        record(name, element,
+               {vk::DescriptorType::eStorageImage, {},
+                vk::DescriptorImageInfo({}, image.view(type, mip, 1, 0, desc.layers), vk::ImageLayout::eGeneral)});
     } else {
-        bound_[name] = {vk::DescriptorType::eSampledImage, {},
-                        vk::DescriptorImageInfo({}, image.view(viewTypeFor(target.dimension), 0, desc.mips, 0, desc.layers),
-                                                vk::ImageLayout::eGeneral)};
+        record(name, element,
+               {vk::DescriptorType::eSampledImage, {},
+                vk::DescriptorImageInfo({}, image.view(viewTypeFor(target.dimension), 0, desc.mips, 0, desc.layers),
+                                        vk::ImageLayout::eGeneral)});
     }
 }
 
-void ComputeProgram::bind(const std::string& name, const Sampler& sampler) {
+void ComputeProgram::bind(const std::string& name, const Sampler& sampler, uint32_t element) {
     const auto& target = resource(name);
     if (target.kind != ResourceKind::Sampler)
         throw VulkanError("'" + name + "' is a " + std::string(compiler::resourceKindName(target.kind)) + ", not a sampler");
-    bound_[name] = {vk::DescriptorType::eSampler, {}, vk::DescriptorImageInfo(sampler.handle(), {}, {})};
+    record(name, element, {vk::DescriptorType::eSampler, {}, vk::DescriptorImageInfo(sampler.handle(), {}, {})});
 }
 
 void ComputeProgram::setPushConstants(std::span<const std::byte> bytes) {
@@ -167,15 +178,18 @@ void ComputeProgram::writeDescriptorSets() const {
     std::vector<vk::WriteDescriptorSet> writes;
     for (const auto& resource : reflection_.resources) {
         const auto found = bound_.find(resource.name);
-        if (found == bound_.end()) {
-            missing += (missing.empty() ? "" : ", ") + resource.name;
-            continue;
+        const bool array = resource.location.count > 1;
+        for (uint32_t element = 0; element < resource.location.count; ++element) {
+            if (found == bound_.end() || element >= found->second.size() || !found->second[element]) {
+                missing += (missing.empty() ? "" : ", ") + resource.name + (array ? "[" + std::to_string(element) + "]" : "");
+                continue;
+            }
+            const auto& bound = *found->second[element];
+            const bool isBuffer = bound.type == vk::DescriptorType::eUniformBuffer || bound.type == vk::DescriptorType::eStorageBuffer;
+            writes.push_back(vk::WriteDescriptorSet(*sets_.at(resource.location.set), resource.location.binding, element, 1,
+                                                    bound.type, isBuffer ? nullptr : &bound.image,
+                                                    isBuffer ? &bound.buffer : nullptr));
         }
-        const auto& bound = found->second;
-        const bool isBuffer = bound.type == vk::DescriptorType::eUniformBuffer || bound.type == vk::DescriptorType::eStorageBuffer;
-        writes.push_back(vk::WriteDescriptorSet(*sets_.at(resource.location.set), resource.location.binding, 0, 1,
-                                                bound.type, isBuffer ? nullptr : &bound.image,
-                                                isBuffer ? &bound.buffer : nullptr));
     }
     if (!missing.empty()) throw VulkanError("the shader needs resources that are not bound: " + missing);
     if (reflection_.pushConstantSize > 0 && pushConstants_.empty())

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <variant>
@@ -33,9 +34,11 @@ public:
     // Each checks that the shader has a resource of that name and kind, with a matching
     // format and dimension, and throws VulkanError naming the problem otherwise. Images are
     // bound whole when sampled, and at one mip when written.
-    void bind(const std::string& name, const Buffer& buffer);
-    void bind(const std::string& name, Image& image, uint32_t mip = 0);
-    void bind(const std::string& name, const Sampler& sampler);
+    // `element` is the index within an array of resources (Texture2D t[4]); each element of an
+    // array must be bound before a dispatch.
+    void bind(const std::string& name, const Buffer& buffer, uint32_t element = 0);
+    void bind(const std::string& name, Image& image, uint32_t mip = 0, uint32_t element = 0);
+    void bind(const std::string& name, const Sampler& sampler, uint32_t element = 0);
     void setPushConstants(std::span<const std::byte> bytes);
 
     std::array<uint32_t, 3> groupsForThreads(std::array<uint32_t, 3> threads) const;
@@ -58,7 +61,9 @@ private:
     vk::raii::Pipeline pipeline_{nullptr};
     vk::raii::DescriptorPool descriptorPool_{nullptr};
     std::map<uint32_t, vk::raii::DescriptorSet> sets_;
-    std::map<std::string, Bound> bound_;
+    void record(const std::string& name, uint32_t element, Bound bound);
+
+    std::map<std::string, std::vector<std::optional<Bound>>> bound_; // by name, one per element
     std::vector<std::byte> pushConstants_;
 };
 

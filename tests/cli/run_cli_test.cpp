@@ -176,6 +176,25 @@ TEST_F(RunCli, BindingANameTheShaderLacks) {
                      "EnvMap, EnvMapSampler, Prefiltered)");
 }
 
+// An array of resources binds one resource per element (the runtime once refused every array);
+// the run file must give as many as the shader declares, and no array where it declares one.
+TEST_F(RunCli, AnArrayOfResourcesNeedsEveryElement) {
+    std::ifstream stream("hlsl/porting/VulkanBindingArray.run.json");
+    json run = json::parse(stream);
+    run["shader"] = fs::absolute("hlsl/porting/VulkanBindingArray.hlsl").string();
+    const auto passed = iblkitRun(run);
+    EXPECT_EQ(passed.exitCode, 0) << passed.err << passed.out;
+    EXPECT_NE(passed.out.find("4 of 4 expectations passed"), std::string::npos) << passed.out;
+    auto fewer = run;
+    auto& elements = fewer["resources"]["Mips"]["elements"];
+    elements.erase(elements.begin() + 2, elements.end());
+    fewer["expect"] = json::array({run["expect"][0]});
+    expectError(fewer, "resources.Mips: the shader declares an array of 13, the run file gives 2 elements");
+    auto notAnArray = run;
+    notAnArray["resources"]["Written"] = {{"kind", "buffer"}, {"elements", json::array({{{"count", 1}}})}};
+    expectError(notAnArray, "resources.Written: the shader declares one resource, not an array");
+}
+
 TEST_F(RunCli, MissingAResourceTheShaderNeeds) {
     auto run = fastPrefilter();
     run["resources"].erase("EnvMapSampler");

@@ -61,6 +61,31 @@ TEST_F(RunFiles, CompileOptionsAreReadAsTypedValues) {
     EXPECT_EQ(options.source, folder / "x.hlsl");
 }
 
+// An array of resources: one spec per element, named as expectations name them, each bound to
+// its element of the shader's array.
+TEST_F(RunFiles, AnArrayOfResourcesIsOneSpecPerElement) {
+    const auto spec = readRunFile(write(R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "resources": {
+        "Levels": {"kind": "buffer", "elements": [{"type": "uint", "count": 2}, {"values": [1, 2, 3]}]}}})"));
+    ASSERT_EQ(spec.resources.size(), 2u);
+    EXPECT_EQ(spec.resources[0].name, "Levels[0]");
+    EXPECT_EQ(spec.resources[1].name, "Levels[1]");
+    for (uint32_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(spec.resources[i].binding, "Levels");
+        EXPECT_EQ(spec.resources[i].element, i);
+        EXPECT_EQ(spec.resources[i].kind, "buffer");
+    }
+    EXPECT_EQ(spec.resources[0].elementType, "uint");
+    EXPECT_EQ(spec.resources[1].initial.values.size(), 3u);
+    const std::string head = R"({"shader": "x.hlsl", "dispatch": {"threads": [1]}, "resources": {"L": )";
+    EXPECT_NE(errorOf(head + R"({"kind": "buffer", "elements": []}}})").find("resources.L.elements: is empty"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"({"elements": [{}]}}})").find("resources.L: needs a \"kind\""), std::string::npos);
+    EXPECT_NE(errorOf(head + R"({"kind": "buffer", "elements": [{"kind": "image"}]}}})")
+                  .find("resources.L.elements[0]: takes its kind from the array"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"({"kind": "buffer", "elements": [{"count": 1}], "count": 2}}})").find("unknown key 'count'"),
+              std::string::npos);
+}
+
 TEST_F(RunFiles, MistakesAreNamedWithTheirKey) {
     const std::string head = R"({"shader": "x.hlsl", )";
     EXPECT_NE(errorOf("{").find("not valid JSON"), std::string::npos);
