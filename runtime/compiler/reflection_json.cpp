@@ -1,7 +1,7 @@
 #include "reflection.hpp"
 
 #include "compile_error.hpp"
-#include "json_words.hpp"
+#include "error_words.hpp"
 
 #include <nlohmann/json.hpp>
 

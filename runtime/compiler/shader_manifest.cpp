@@ -2,7 +2,7 @@
 
 #include "compile_error.hpp"
 #include "hlsl_frontend.hpp"
-#include "json_words.hpp"
+#include "error_words.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -4,13 +4,19 @@
 #include "render/render_files.hpp"
 
 #include "atomic_output.hpp"
+#include "bake_directory.hpp"
+#include "bake_error.hpp"
+#include "bake_manifest.hpp"
+#include "bake_outputs.hpp"
 #include "bench_environments.hpp"
 #include "files.hpp"
 #include "scratch_folder.hpp"
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include <map>
+#include <span>
 #include <sstream>
 
 namespace iblkit::render {
@@ -52,6 +58,9 @@ RenderSummary renderInto(const fs::path& scratch, const std::optional<fs::path>&
     fs::remove_all(settings.outputDir);
     return summary;
 }
+
+// The pictures' folder, split-sum/ beside the page.
+fs::path picturesFolder(const ReportOptions& options) { return options.markdown.parent_path() / "split-sum"; }
 
 std::string bytesOf(const fs::path& path) {
     const auto bytes = image_io::readFileBytes(path);
@@ -115,6 +124,12 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
     probe.maxSamples = options.maxSamples;
     probe.standardErrorBound = options.standardErrorBound;
     validateSettings(probe);
+    const auto pictures = picturesFolder(options);
+    try {
+        bake::checkBakeTarget(pictures, std::nullopt, "render-report");
+    } catch (const bake::BakeError& error) {
+        throw RenderError(std::string("the pictures' folder: ") + error.what());
+    }
     std::vector<std::optional<fs::path>> sources;
     for (const auto& name : options.environments) sources.push_back(environmentPath(name, options.cache));
     const files::ScratchFolder scratch("render-report");
@@ -145,14 +160,25 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
                         "A pixel's noise moves a sphere's mean error by at most about its standard error.\n\n",
                         100 * kRelativeFloor);
     for (const auto& environment : environments) writeEnvironment(page, environment);
+    // split-sum/ is the report's own folder, replaced as a whole (as a bake's is), its manifest
+    // listing every picture; the page beside it is written all or nothing, after it.
+    bake::BakeDirectory directory(pictures, std::nullopt, "render-report");
+    std::vector<bake::WrittenFile> written;
+    for (const auto& environment : environments) {
+        fs::create_directories(directory.staging() / environment.name);
+        for (const auto& file : fs::directory_iterator(scratch.path() / environment.name)) {
+            const auto bytes = bytesOf(file.path());
+            written.push_back(bake::writeBytes(directory.staging(), environment.name + "/" + file.path().filename().string(),
+                                               std::as_bytes(std::span(bytes.data(), bytes.size()))));
+        }
+    }
+    const nlohmann::json manifest = {{"generator", "iblkit"}, {"command", "render-report"}, {"invocation", options.command},
+                                     {"files", bake::filesJson(written)}};
+    const auto manifestText = manifest.dump(2) + "\n";
+    bake::writeBytes(directory.staging(), "manifest.json", std::as_bytes(std::span(manifestText.data(), manifestText.size())));
     files::AtomicOutput output;
     output.add(options.markdown, page.str());
-    for (const auto& environment : environments) {
-        const auto pictures = options.markdown.parent_path() / "split-sum" / environment.name;
-        fs::create_directories(pictures);
-        for (const auto& file : fs::directory_iterator(scratch.path() / environment.name))
-            output.add(pictures / file.path().filename(), bytesOf(file.path()));
-    }
+    directory.commit();
     output.commit();
 }
 

@@ -27,9 +27,11 @@ struct ReportOptions {
 
 // Renders every environment with both reference BSDFs and writes the page: per environment, the
 // split sum's error per sphere against each, and the pictures (under split-sum/ beside the page).
-// The page and environment names are checked before any render; the renders go to a scratch
-// folder, and the page and every picture are written all or nothing at the end, so a failed run
-// leaves an earlier page and its pictures as they were. Throws what renderSpheres throws,
+// The page, the environment names and the pictures' folder are checked before any render: the
+// folder split-sum/ is the report's own, absent, empty or an earlier report's (its manifest.json
+// says so), as a bake's folder is. The renders go to a scratch folder; split-sum/ is replaced as a
+// whole and the page written at the end, so a failed run leaves an earlier page and its pictures
+// as they were. Throws what renderSpheres throws,
 // RenderError for an unknown environment and files::FileError for a page that cannot be written.
 void writeSplitSumReport(const ReportOptions& options, const std::string& toolVersion, bake::BakeProgress& progress);
 

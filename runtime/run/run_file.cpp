@@ -1,7 +1,7 @@
 #include "run_file.hpp"
 
 #include "json_fields.hpp"
-#include "json_words.hpp"
+#include "error_words.hpp"
 #include "run_error.hpp"
 
 #include <nlohmann/json.hpp>

@@ -170,30 +170,45 @@ TEST(RenderReportCli, AQuickPageWithItsPicturesNamesTheCommandThatMadeIt) {
 
 TEST(RenderReportCli, RefusesBeforeAnyRenderAndAFailedRunLeavesTheEarlierPage) {
     TempFolder folder;
-    const auto page = folder.write("errors.md", "the earlier page");
-    const auto picture = folder.write("split-sum/sky/reference.png", "the earlier picture");
+    const auto page = folder.path() / "errors.md";
+    ASSERT_EQ(runProcess(quickReportCommand(page)).exitCode, 0);
+    const auto earlierPage = readFile(page);
+    const auto earlierPicture = readFile(folder.path() / "split-sum" / "sky" / "reference.png");
+    const auto expectUnchanged = [&] {
+        EXPECT_EQ(readFile(page), earlierPage);
+        EXPECT_EQ(readFile(folder.path() / "split-sum" / "sky" / "reference.png"), earlierPicture);
+    };
     const auto refused = [&](const std::map<std::string, std::string>& options, const std::string& expected) {
         const auto result = runProcess(quickReportCommand(page, options));
         EXPECT_NE(result.exitCode, 0) << expected;
         EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-        EXPECT_EQ(readFile(page), "the earlier page");
-        EXPECT_EQ(readFile(picture), "the earlier picture");
+        expectUnchanged();
     };
     refused({{"--environments", "sky,nowhere"}}, "no report environment 'nowhere'");
     refused({{"--cell-size", "4"}}, "--cell-size 4 is out of range");
     refused({{"--max-standard-error", "0.001"}}, "did not converge in 256 samples per pixel");
-    // After the renders, its pictures' folder cannot be made (a file holds the name): nothing is
-    // written, and the message is in the kit's words, not std::filesystem's.
+    // No scratch folder (TMPDIR names a file): one line naming it, before any render.
+    const auto noScratch = runProcess(quickReportCommand(page), {"TMPDIR=" + page.string()});
+    EXPECT_NE(noScratch.err.find("no scratch folder can be made: the system's temporary folder (TMPDIR '" + page.string() +
+                                 "') is not usable"),
+              std::string::npos)
+        << noScratch.err;
+    expectUnchanged();
+    // split-sum/ is the report's own: a user's pictures there are not replaced, nor is a file of
+    // that name, and both are refused before any render.
     TempFolder other;
-    const auto blocked = other.write("errors.md", "the earlier page");
-    other.write("split-sum", "a file where the pictures' folder goes");
-    const auto late = runProcess(quickReportCommand(blocked));
-    EXPECT_NE(late.exitCode, 0);
-    EXPECT_EQ(late.err.rfind("cannot create directories '" + (other.path() / "split-sum" / "sky").string() + "': Not a directory", 0), 0u)
-        << late.err;
-    EXPECT_EQ(late.err.find("filesystem error"), std::string::npos) << late.err;
-    EXPECT_EQ(readFile(blocked), "the earlier page");
+    const auto user = other.write("split-sum/sky/reference.png", "a user's picture");
+    const auto mine = runProcess(quickReportCommand(other.path() / "errors.md"));
+    EXPECT_NE(mine.err.find("the pictures' folder: '" + (other.path() / "split-sum").string() + "' is a folder with other files"),
+              std::string::npos)
+        << mine.err;
+    EXPECT_EQ(readFile(user), "a user's picture");
+    EXPECT_FALSE(fs::exists(other.path() / "errors.md"));
+    TempFolder third;
+    third.write("split-sum", "a file where the pictures' folder goes");
+    const auto file = runProcess(quickReportCommand(third.path() / "errors.md"));
+    EXPECT_NE(file.err.find("exists and is not a folder"), std::string::npos) << file.err;
     const auto missing = runProcess(quickReportCommand(folder.path() / "missing" / "errors.md"));
     EXPECT_NE(missing.err.find("--out"), std::string::npos) << missing.err;
     EXPECT_FALSE(fs::exists(folder.path() / "missing"));

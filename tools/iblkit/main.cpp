@@ -6,6 +6,7 @@
 #include "consistency_command.hpp"
 #include "stress_command.hpp"
 #include "devices_command.hpp"
+#include "error_words.hpp"
 #include "lut_fit_command.hpp"
 #include "plan_command.hpp"
 #include "porting_command.hpp"
@@ -30,25 +31,6 @@ void keepFreedBuffersInTheHeap() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20); // glibc's most
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
-
-namespace {
-
-// std::filesystem's "filesystem error: cannot create directories: Not a directory [a/b]" as
-// "cannot create directories 'a/b': Not a directory".
-std::string inTheKitsWords(const std::filesystem::filesystem_error& error) {
-    std::string text = error.what();
-    const std::string prefix = "filesystem error: ";
-    if (text.starts_with(prefix)) text.erase(0, prefix.size());
-    if (const auto bracket = text.find(" ["); bracket != std::string::npos) text.erase(bracket);
-    const std::string reason = error.code().message();
-    if (text.ends_with(": " + reason)) text.erase(text.size() - reason.size() - 2);
-    std::string paths;
-    for (const auto* path : {&error.path1(), &error.path2()})
-        if (!path->empty()) paths += (paths.empty() ? " '" : " and '") + path->string() + "'";
-    return text + paths + ": " + reason;
-}
-
-} // namespace
 
 int main(int argc, char** argv) {
     keepFreedBuffersInTheHeap();
@@ -97,7 +79,7 @@ int main(int argc, char** argv) {
     } catch (const iblkit::cli::FormsRefused&) {
         return 4;
     } catch (const std::filesystem::filesystem_error& error) {
-        fmt::print(stderr, "{}\n", inTheKitsWords(error));
+        fmt::print(stderr, "{}\n", iblkit::files::filesystemErrorInWords(error));
         return 1;
     } catch (const std::exception& error) {
         fmt::print(stderr, "{}\n", error.what());

@@ -1,5 +1,6 @@
-// nlohmann's exceptions in the kit's words: no "[json.exception...]" code reaches a user.
-#include "json_words.hpp"
+// nlohmann's and std::filesystem's exceptions in the kit's words: no "[json.exception...]" code
+// or "filesystem error:" prefix reaches a user.
+#include "error_words.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,16 @@ TEST(JsonWords, NoMessageKeepsTheExceptionsCode) {
     const auto words = wordsOf([&] { (void)json.at("a").at("b"); });
     EXPECT_EQ(words.find("json.exception"), std::string::npos) << words;
     EXPECT_FALSE(words.empty());
+}
+
+TEST(FilesystemWords, TheOperationThePathsAndTheReason) {
+    const std::filesystem::filesystem_error one("cannot create directories", "a/b",
+                                                std::make_error_code(std::errc::not_a_directory));
+    EXPECT_EQ(filesystemErrorInWords(one), "cannot create directories 'a/b': Not a directory");
+    const std::filesystem::filesystem_error two("cannot rename", "x", "y", std::make_error_code(std::errc::permission_denied));
+    EXPECT_EQ(filesystemErrorInWords(two), "cannot rename 'x' and 'y': Permission denied");
+    const std::filesystem::filesystem_error none("temp_directory_path", std::make_error_code(std::errc::not_a_directory));
+    EXPECT_EQ(filesystemErrorInWords(none), "temp_directory_path: Not a directory");
 }
 
 } // namespace

@@ -1,4 +1,4 @@
-#include "json_words.hpp"
+#include "error_words.hpp"
 
 #include <regex>
 
@@ -20,6 +20,19 @@ std::string jsonErrorInWords(const std::exception& error) {
     if (std::regex_match(text, match, key)) return "\"" + match[1].str() + "\" is missing";
     if (std::regex_match(text, match, index)) return "element " + match[1].str() + " is missing";
     return text;
+}
+
+std::string filesystemErrorInWords(const std::filesystem::filesystem_error& error) {
+    std::string text = error.what();
+    const std::string prefix = "filesystem error: ";
+    if (text.starts_with(prefix)) text.erase(0, prefix.size());
+    if (const auto bracket = text.find(" ["); bracket != std::string::npos) text.erase(bracket);
+    const std::string reason = error.code().message();
+    if (text.ends_with(": " + reason)) text.erase(text.size() - reason.size() - 2);
+    std::string paths;
+    for (const auto* path : {&error.path1(), &error.path2()})
+        if (!path->empty()) paths += (paths.empty() ? " '" : " and '") + path->string() + "'";
+    return text + paths + ": " + reason;
 }
 
 } // namespace iblkit::files
