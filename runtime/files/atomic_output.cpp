@@ -137,6 +137,16 @@ void requireWritableFile(const std::filesystem::path& path, const std::string& o
     ::unlink(probe.c_str());
 }
 
+void requireNotAnInputIn(const std::filesystem::path& output, const std::filesystem::path& folder) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(output, error) || !std::filesystem::is_directory(folder, error)) return;
+    std::vector<std::filesystem::path> inputs;
+    for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
+         !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error))
+        if (it->is_regular_file(error)) inputs.push_back(it->path());
+    requireDistinctOutputs({output}, inputs);
+}
+
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents) {
     AtomicOutput output;
     output.add(path, contents);

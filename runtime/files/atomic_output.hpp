@@ -54,6 +54,10 @@ void requireDistinctOutputs(const std::vector<std::filesystem::path>& outputs,
 // its folder there and writable. For the commands that write a report after minutes of work, before it.
 void requireWritableFile(const std::filesystem::path& path, const std::string& option);
 
+// Throws FileError when `output` is an existing file of `folder` (recursively): the inputs a
+// command reads from a folder (a corpus, the kernels' HLSL), which writing it would destroy.
+void requireNotAnInputIn(const std::filesystem::path& output, const std::filesystem::path& folder);
+
 // One file, all or nothing.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& contents);
 

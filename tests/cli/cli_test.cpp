@@ -271,6 +271,21 @@ TEST_F(Cli, LutFitWritesTheCommittedInclude) {
     EXPECT_EQ(readFile(at("BrdfLutFit.fxh")), readFile("hlsl/Common/BrdfLutFit.fxh"));
 }
 
+// `porting --out` its own corpus manifest wrote the page over it, after the whole corpus ran (a
+// copy of the corpus here: the check must never be able to destroy the real one).
+TEST(ReportCommands, AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
+    TempFolder folder;
+    fs::copy("hlsl/porting", folder.path() / "corpus", fs::copy_options::recursive);
+    const auto manifest = folder.path() / "corpus" / "corpus.json";
+    const auto before = readFile(manifest);
+    const auto result = runProcess({IBLKIT_EXECUTABLE, "porting", "--corpus", (folder.path() / "corpus").string(), "--out",
+                                    manifest.string(), "-q"});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_NE(result.err.find("this output is also an input of the command"), std::string::npos) << result.err;
+    EXPECT_EQ(result.out.find("PASS"), std::string::npos) << "refused after the corpus ran";
+    EXPECT_EQ(readFile(manifest), before);
+}
+
 // `stress --out missing/x.md` failed only after a minute of work: each report-writing command
 // now refuses a report it could not write before it starts.
 TEST(ReportCommands, AnOutputThatCannotBeWrittenIsRefusedBeforeAnyWork) {

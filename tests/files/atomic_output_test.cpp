@@ -72,4 +72,19 @@ TEST_F(AtomicOutputTest, RefusesADirectoryAsOutput) {
     }
 }
 
+// stress and consistency read the kernels' HLSL from hlsl/, porting its corpus: an output that
+// is one of those files is refused; a new file beside them is not an input.
+TEST(RequireNotAnInputIn, AnExistingFileOfTheFolderIsAnInput) {
+    iblkit::testing::TempFolder folder;
+    const auto manifest = folder.write("hlsl/shaders.json", "{}");
+    folder.write("hlsl/Common/PBR.fxh", "// pbr");
+    using iblkit::files::requireNotAnInputIn;
+    EXPECT_THROW(requireNotAnInputIn(manifest, folder.path() / "hlsl"), FileError);
+    EXPECT_THROW(requireNotAnInputIn(folder.path() / "hlsl" / "Common" / ".." / "Common" / "PBR.fxh", folder.path() / "hlsl"),
+                 FileError);
+    EXPECT_NO_THROW(requireNotAnInputIn(folder.path() / "hlsl" / "report.md", folder.path() / "hlsl"));
+    EXPECT_NO_THROW(requireNotAnInputIn(folder.write("elsewhere.md", "x"), folder.path() / "hlsl"));
+    EXPECT_NO_THROW(requireNotAnInputIn(manifest, folder.path() / "no-such-folder"));
+}
+
 } // namespace

@@ -31,7 +31,10 @@ void addConsistencyCommand(CLI::App& app) {
     command->callback([arguments] {
         if (arguments->samples < 1 || arguments->samples > 65535)
             throw std::invalid_argument(fmt::format("--samples {} is out of range (1 to 65535)", arguments->samples));
-        if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before a minute of work
+        if (!arguments->out.empty()) { // before a minute of work
+            files::requireWritableFile(arguments->out, "--out");
+            files::requireNotAnInputIn(arguments->out, "hlsl");
+        }
         auto log = std::make_shared<vulkan::ValidationLog>();
         const vulkan::VulkanContext context({arguments->device, false, log});
         const auto options = consistency::defaultSuiteOptions("hlsl/shaders.json", arguments->samples);

@@ -33,6 +33,7 @@ void addPortingCommand(CLI::App& app) {
     command->callback([arguments] {
         if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before the corpus runs
         const auto manifest = porting::readCorpusManifest(arguments->corpus);
+        if (!arguments->out.empty()) files::requireNotAnInputIn(arguments->out, arguments->corpus);
         run::RunOptions options;
         options.device = arguments->device;
         options.validation = true;

@@ -31,7 +31,10 @@ void addStressCommand(CLI::App& app) {
                                                      "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
     command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
     command->callback([arguments] {
-        if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before a minute of work
+        if (!arguments->out.empty()) { // before a minute of work
+            files::requireWritableFile(arguments->out, "--out");
+            files::requireNotAnInputIn(arguments->out, "hlsl");
+        }
         auto log = std::make_shared<vulkan::ValidationLog>();
         const vulkan::VulkanContext context({arguments->device, false, log});
         stress::StressOptions options{arguments->reduced, {}};
