@@ -131,7 +131,12 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
         throw RenderError(std::string("the pictures' folder: ") + error.what());
     }
     std::vector<std::optional<fs::path>> sources;
-    for (const auto& name : options.environments) sources.push_back(environmentPath(name, options.cache));
+    std::vector<fs::path> inputs;
+    for (const auto& name : options.environments) {
+        sources.push_back(environmentPath(name, options.cache));
+        if (sources.back()) inputs.push_back(*sources.back());
+    }
+    files::requireDistinctOutputs({options.markdown}, inputs); // the page is never one of the worlds it reads
     const files::ScratchFolder scratch("render-report");
     std::vector<EnvironmentRenders> environments;
     for (size_t i = 0; i < options.environments.size(); ++i) {
