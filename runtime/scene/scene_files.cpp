@@ -91,9 +91,8 @@ void requireJsonNestingWithin(std::string_view json, const std::filesystem::path
     }
 }
 
-GeometryBuffers geometryOnlyBuffers(std::string_view text) {
+GeometryBuffers geometryOnlyBuffers(const nlohmann::json& json) {
     GeometryBuffers geometry;
-    const auto json = nlohmann::json::parse(text, nullptr, false);
     if (!json.is_object() || !json.contains("buffers") || !json["buffers"].is_array()) return geometry;
     std::set<uint64_t> imageBuffers;
     const auto views = json.value("bufferViews", nlohmann::json::array());

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -43,7 +45,7 @@ struct GeometryBuffers {
     std::map<std::string, uint64_t> byteLengths;
     std::vector<std::string> missing;
 };
-GeometryBuffers geometryOnlyBuffers(std::string_view json);
+GeometryBuffers geometryOnlyBuffers(const nlohmann::json& gltf);
 
 // tinygltf reads the files a scene names by the same policy; a refusal is ReferencedFileRefused,
 // thrown through tinygltf. A missing buffer of `geometry` is zeros instead.

@@ -7,6 +7,7 @@
 #include <tiny_gltf.h>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <set>
@@ -146,10 +147,12 @@ tinygltf::Model load(const std::filesystem::path& file, std::vector<std::string>
         throw SceneError(file.string() + ": error: not a glTF scene (.gltf or .glb)");
     const auto bytes = readSceneFile(file);
     requireJsonNestingWithin(jsonOf(bytes, binary), file);
-    requireGltfShape(jsonOf(bytes, binary), file);
+    // Parsed once, for the kit's checks; tinygltf parses it again, its own way.
+    const auto gltf = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, false);
+    requireGltfShape(gltf, file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(loadImageOrLeaveEmpty, nullptr);
-    auto geometry = geometryOnlyBuffers(jsonOf(bytes, binary));
+    auto geometry = geometryOnlyBuffers(gltf);
     readReferencedFilesByThePolicy(loader, geometry);
     tinygltf::Model model;
     std::string problem, warning;

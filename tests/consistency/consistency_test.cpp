@@ -4,6 +4,7 @@
 #include "consistency_suite.hpp"
 #include "kernels/kernel_table.hpp"
 #include "shader_paths.hpp"
+#include "markdown_table.hpp"
 #include "read_file.hpp"
 #include "temp_folder.hpp"
 #include "vulkan_context.hpp"
@@ -68,16 +69,9 @@ std::vector<RowShape> committedShapes(const std::string& report) {
     std::vector<RowShape> shapes;
     std::istringstream stream(report);
     for (std::string line; std::getline(stream, line);) {
-        if (!line.starts_with("| ") || !line.ends_with(" |") || line.starts_with("| kernel |")) continue;
-        const std::string inner = line.substr(2, line.size() - 4);
-        std::vector<std::string> cells;
-        for (size_t at = 0;;) {
-            const size_t bar = inner.find(" | ", at);
-            cells.push_back(inner.substr(at, bar == std::string::npos ? std::string::npos : bar - at));
-            if (bar == std::string::npos) break;
-            at = bar + 3;
-        }
-        if (cells.size() == 13) shapes.push_back({cells[0], cells[1], cells[2], cells[10], cells[11], cells[12]});
+        const auto cells = testing::tableCells(line);
+        if (cells.size() == 13 && cells[0] != "kernel" && !cells[0].starts_with("---"))
+            shapes.push_back({cells[0], cells[1], cells[2], cells[10], cells[11], cells[12]});
     }
     return shapes;
 }

@@ -47,7 +47,8 @@ glm::dvec3 shadersSun() {
 }
 
 // The C++ sky's brightest direction, found by search (a 0.25° grid, then 0.01° about the best), is
-// the shader's sun; its glow falls off away from it, and the opposite side is dark.
+// the shader's sun; its glow falls off away from it, and the opposite side is dark. (This replaces
+// a test that restated the sky's formula and constants.)
 TEST(SkyEnvironment, TheSunIsWhereTheSkyShaderPutsIt) {
     const auto brightest = [](double thetaFrom, double thetaTo, double phiFrom, double phiTo, double step) {
         glm::dvec3 best(0);
@@ -64,7 +65,10 @@ TEST(SkyEnvironment, TheSunIsWhereTheSkyShaderPutsIt) {
     const double theta = std::acos(best.y), phi = std::atan2(best.z, best.x);
     best = brightest(theta - 0.5 * degree, theta + 0.5 * degree, phi - 0.5 * degree, phi + 0.5 * degree, 0.01 * degree);
     const auto sun = shadersSun();
-    EXPECT_LT(std::acos(std::min(1.0, glm::dot(best, sun))), 0.05 * degree) << "the C++ sky's sun is not the shader's";
+    // Measured 0.0036° off: the search's own resolution, its last step being 0.01°. Two steps
+    // bound it; a sun moved by the smallest change of a component in the shader's text (0.01, about
+    // 0.6°) is far past it.
+    EXPECT_LT(std::acos(std::min(1.0, glm::dot(best, sun))), 0.02 * degree) << "the C++ sky's sun is not the shader's";
     // Along a great circle away from the sun: dimmer at every step out to 20°.
     const glm::dvec3 across = glm::normalize(glm::cross(sun, glm::dvec3(0, 1, 0)));
     double previous = EnvironmentRadiance(sun).r;

@@ -2,6 +2,7 @@
 // NaN/Inf and its errors against the C++ double within the bounds of docs/stability.md; a kit
 // kernel broken at a singular point is caught.
 #include "kernels/kernel_table.hpp"
+#include "markdown_table.hpp"
 #include "read_file.hpp"
 #include "stress.hpp"
 #include "temp_folder.hpp"
@@ -41,24 +42,14 @@ std::set<std::string> tableRows(const std::string& markdown) {
     static const std::set<std::string> measured{"max error vs double where a bake calls it", "at the other arguments",
                                                 "worst error / largest value", "where", "one float accumulator (C++)",
                                                 "the documents' kernel, Vulkan", "chunked, Vulkan", "chunked, OpenGL"};
-    // The cells between the bars, trimmed (an empty header cell is "").
-    const auto cellsOf = [](const std::string& line) {
-        std::vector<std::string> cells;
-        for (size_t at = 1, bar; (bar = line.find('|', at)) != std::string::npos; at = bar + 1) {
-            const auto first = line.find_first_not_of(' ', at);
-            const auto last = line.find_last_not_of(' ', bar - 1);
-            cells.push_back(first < bar && last >= first ? line.substr(first, last - first + 1) : "");
-        }
-        return cells;
-    };
     std::set<std::string> rows;
     std::vector<std::string> header;
     std::istringstream stream(markdown);
     std::string previous;
     for (std::string line; std::getline(stream, line); previous = line) {
-        if (line.starts_with("|---")) header = cellsOf(previous);
+        if (line.starts_with("|---")) header = testing::tableCells(previous);
         if (!line.starts_with("| ") || !line.ends_with("|")) continue;
-        const auto cells = cellsOf(line);
+        const auto cells = testing::tableCells(line);
         if (cells == header || cells.size() != header.size()) continue;
         std::string row = header.empty() ? "" : header.front();
         for (size_t i = 0; i < cells.size(); ++i)
