@@ -15,7 +15,7 @@ using testing::poked;
 
 // A 4x4 RGBA16F cube with 3 mips, its KTXwriter chosen so the key/value data end 4 bytes short
 // of the 8-byte level alignment.
-std::vector<std::byte> smallCube() {
+std::vector<std::byte> smallKtx2Cube() {
     return encodeKtx2(testing::patternedTexture(PixelFormat::Rgba16Float, 4, 4, 6, 3), "iblkit 0.1.0-dev");
 }
 
@@ -24,7 +24,7 @@ std::string ktx2Error(const std::vector<std::byte>& bytes) {
 }
 
 TEST(ImageIoKtx2, HeaderAndIndexOfASmallCube) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     const uint8_t identifier[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
     EXPECT_EQ(std::memcmp(file.data(), identifier, 12), 0);
     // vkFormat, typeSize, pixelWidth, pixelHeight, pixelDepth, layerCount, faceCount, levelCount, supercompressionScheme
@@ -40,7 +40,7 @@ TEST(ImageIoKtx2, HeaderAndIndexOfASmallCube) {
 }
 
 TEST(ImageIoKtx2, LevelsAreStoredSmallestFirstAndAligned) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     // The key/value data end at 276; level 2 (6 faces of 1x1x8 bytes) starts at the next
     // multiple of 8, level 1 (6 x 2x2x8) and level 0 (6 x 4x4x8) follow it, and the file ends.
     const uint64_t expected[3][2] = {{520, 768}, {328, 192}, {280, 48}};
@@ -55,7 +55,7 @@ TEST(ImageIoKtx2, LevelsAreStoredSmallestFirstAndAligned) {
 
 // What KTX-Software's createDFDUnpacked(0, 4, 2, 0, s_SFLOAT) writes for R16G16B16A16_SFLOAT.
 TEST(ImageIoKtx2, DataFormatDescriptorOfRgba16Float) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     const uint32_t expected[] = {
         92,                            // dfdTotalSize
         0,                             // vendorId Khronos, descriptorType basic
@@ -72,7 +72,7 @@ TEST(ImageIoKtx2, DataFormatDescriptorOfRgba16Float) {
 }
 
 TEST(ImageIoKtx2, KeyValueDataNameTheWriter) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     EXPECT_EQ(peek32(file, 244), 27u);
     const std::string entry(reinterpret_cast<const char*>(file.data()) + 248, 28);
     EXPECT_EQ(entry, std::string("KTXwriter\0iblkit 0.1.0-dev\0\0", 28));
@@ -91,7 +91,7 @@ TEST(ImageIoKtx2, CubeFacesFollowEachOtherInTheirOrder) {
 }
 
 TEST(ImageIoKtx2Reader, LevelCountZeroMeansTheBaseLevelOnly) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     const auto texture = decodeKtx2(poked<uint32_t>(file, 40, 0), "base.ktx2");
     EXPECT_EQ(texture.mips, 1u);
     ASSERT_EQ(texture.levels.size(), 1u);
@@ -99,7 +99,7 @@ TEST(ImageIoKtx2Reader, LevelCountZeroMeansTheBaseLevelOnly) {
 }
 
 TEST(ImageIoKtx2Reader, RefusesEveryTruncatedFile) {
-    const auto file = smallCube();
+    const auto file = smallKtx2Cube();
     EXPECT_EQ(ktx2Error({}), "'bad.ktx2' is empty");
     EXPECT_EQ(ktx2Error(testing::prefix(file, 40)), "'bad.ktx2' is truncated: the header needs 48 bytes, the file has 40");
     EXPECT_EQ(ktx2Error(testing::prefix(file, 100)), "'bad.ktx2' is truncated: the level index needs 152 bytes, the file has 100");
@@ -111,61 +111,61 @@ TEST(ImageIoKtx2Reader, RefusesEveryTruncatedFile) {
 TEST(ImageIoKtx2Reader, RefusesFilesThatAreNotKtx2) {
     EXPECT_EQ(ktx2Error(testing::bytesOf("\xABKTX 11\xBB\r\n\x1A\n and the rest of a KTX 1 file")),
               "'bad.ktx2' is not a KTX 2.0 file (its first 12 bytes are not the KTX 2.0 identifier)");
-    EXPECT_NE(ktx2Error(poked<uint8_t>(smallCube(), 8, 0x0A)).find("not a KTX 2.0 file"), std::string::npos) << "CR-LF translated";
+    EXPECT_NE(ktx2Error(poked<uint8_t>(smallKtx2Cube(), 8, 0x0A)).find("not a KTX 2.0 file"), std::string::npos) << "CR-LF translated";
 }
 
 TEST(ImageIoKtx2Reader, NamesUnsupportedFormats) {
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 12, 122)),
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 12, 122)),
               "'bad.ktx2' has vkFormat 122 (B10G11R11_UFLOAT_PACK32); supported: 97 (R16G16B16A16_SFLOAT), "
               "109 (R32G32B32A32_SFLOAT), 83 (R16G16_SFLOAT), 103 (R32G32_SFLOAT)");
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 12, 0)).find("vkFormat 0 (UNDEFINED, e.g. Basis Universal)"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 12, 1000)).find("vkFormat 1000;"), std::string::npos);
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 16, 4)), "'bad.ktx2' has typeSize 4; R16G16B16A16_SFLOAT needs 2");
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 12, 0)).find("vkFormat 0 (UNDEFINED, e.g. Basis Universal)"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 12, 1000)).find("vkFormat 1000;"), std::string::npos);
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 16, 4)), "'bad.ktx2' has typeSize 4; R16G16B16A16_SFLOAT needs 2");
 }
 
 TEST(ImageIoKtx2Reader, RefusesSupercompressedFiles) {
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 44, 2)),
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 44, 2)),
               "'bad.ktx2' is supercompressed with scheme 2 (Zstandard); only files without supercompression (scheme 0) are supported");
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 44, 1)).find("scheme 1 (BasisLZ)"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 44, 1)).find("scheme 1 (BasisLZ)"), std::string::npos);
 }
 
 TEST(ImageIoKtx2Reader, RefusesArrays3DAnd1DTextures) {
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 32, 6)), "'bad.ktx2' is an array texture (layerCount 6); arrays are not supported");
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 28, 4)).find("is a 3D texture (pixelDepth 4)"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 24, 0)).find("is a 1D texture"), std::string::npos);
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 32, 6)), "'bad.ktx2' is an array texture (layerCount 6); arrays are not supported");
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 28, 4)).find("is a 3D texture (pixelDepth 4)"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 24, 0)).find("is a 1D texture"), std::string::npos);
 }
 
 TEST(ImageIoKtx2Reader, RefusesShapesItCannotHold) {
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 36, 2)), "'bad.ktx2' has 2 faces; supported: 1, or 6 for a cube");
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 24, 2)).find("is a cube with faces that are not square (4x2)"), std::string::npos);
-    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallCube(), 40, 4)), "'bad.ktx2' has 4 mips; a 4x4 texture has at most 3");
-    EXPECT_NE(ktx2Error(poked<uint32_t>(poked<uint32_t>(smallCube(), 20, 0xFFFFFFFF), 24, 0xFFFFFFFF)).find("larger than 65536"),
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 36, 2)), "'bad.ktx2' has 2 faces; supported: 1, or 6 for a cube");
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 24, 2)).find("is a cube with faces that are not square (4x2)"), std::string::npos);
+    EXPECT_EQ(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 40, 4)), "'bad.ktx2' has 4 mips; a 4x4 texture has at most 3");
+    EXPECT_NE(ktx2Error(poked<uint32_t>(poked<uint32_t>(smallKtx2Cube(), 20, 0xFFFFFFFF), 24, 0xFFFFFFFF)).find("larger than 65536"),
               std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 20, 0)).find("width or height of 0"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 20, 0)).find("width or height of 0"), std::string::npos);
 }
 
 TEST(ImageIoKtx2Reader, RefusesACorruptIndex) {
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 48, 5000)).find("truncated: the Data Format Descriptor needs 5092 bytes"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 48, 0)).find("corrupt index: the Data Format Descriptor (92 bytes at 0) overlaps"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 52, 96)).find("dfdTotalSize differs from dfdByteLength"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint32_t>(smallCube(), 60, 5000)).find("truncated: the key/value data needs 5244 bytes"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 72, 8)).find("supercompression global data"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 48, 5000)).find("truncated: the Data Format Descriptor needs 5092 bytes"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 48, 0)).find("corrupt index: the Data Format Descriptor (92 bytes at 0) overlaps"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 52, 96)).find("dfdTotalSize differs from dfdByteLength"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint32_t>(smallKtx2Cube(), 60, 5000)).find("truncated: the key/value data needs 5244 bytes"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 72, 8)).find("supercompression global data"), std::string::npos);
 }
 
 TEST(ImageIoKtx2Reader, RefusesACorruptLevelIndex) {
-    EXPECT_EQ(ktx2Error(poked<uint64_t>(smallCube(), 88, 767)),
+    EXPECT_EQ(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 88, 767)),
               "'bad.ktx2' has a corrupt level index: level 0 has byteLength 767 and uncompressedByteLength 768; its size needs 768");
-    EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 80 + 24 + 16, 0)).find("level 1 has byteLength 192 and uncompressedByteLength 0"),
+    EXPECT_NE(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 80 + 24 + 16, 0)).find("level 1 has byteLength 192 and uncompressedByteLength 0"),
               std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 80 + 48, 1u << 20)).find("truncated: level 2 needs"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 80, UINT64_MAX - 100)).find("needs more than 2^64 bytes"), std::string::npos);
-    EXPECT_NE(ktx2Error(poked<uint64_t>(smallCube(), 80, 0)).find("level 0 starts inside the header"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 80 + 48, 1u << 20)).find("truncated: level 2 needs"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 80, UINT64_MAX - 100)).find("needs more than 2^64 bytes"), std::string::npos);
+    EXPECT_NE(ktx2Error(poked<uint64_t>(smallKtx2Cube(), 80, 0)).find("level 0 starts inside the header"), std::string::npos);
 }
 
 // Accepted before: the specification requires each of these, and a reader that takes them reads
 // garbage or one level twice.
 TEST(ImageIoKtx2Reader, RefusesWhatTheSpecificationForbidsInTheIndex) {
-    const auto cube = smallCube();
+    const auto cube = smallKtx2Cube();
     const uint64_t level1 = peek64(cube, 80 + 24), level2 = peek64(cube, 80 + 48);
     EXPECT_NE(ktx2Error(poked<uint64_t>(cube, 80 + 24, level2)).find("levels 1 and 2 overlap"), std::string::npos);
     EXPECT_NE(ktx2Error(poked<uint64_t>(cube, 80 + 24, level1 + 4)).find("level 1 starts at " + std::to_string(level1 + 4) +

@@ -13,7 +13,7 @@ using image_io::PixelFormat;
 
 // The same small cube as the KTX2 layout tests: DFD at 152, key/value data at 244 (32 bytes),
 // levels 2, 1, 0 at 280, 328 and 520, 1288 bytes in all.
-std::vector<std::byte> goodFile() {
+std::vector<std::byte> goodKtx2File() {
     return image_io::encodeKtx2(patternedTexture(PixelFormat::Rgba16Float, 4, 4, 6, 3), "iblkit 0.1.0-dev");
 }
 
@@ -29,14 +29,14 @@ std::vector<std::byte> withKeyValues(const std::vector<std::string>& entries) {
         while (kvd.size() % 4) kvd.push_back(std::byte{0});
     }
     EXPECT_EQ(kvd.size(), 32u) << "the replacement must keep the file's layout";
-    auto file = goodFile();
+    auto file = goodKtx2File();
     std::copy(kvd.begin(), kvd.end(), file.begin() + 244);
     return file;
 }
 
 // The levels stored largest first, the index pointing at them correctly.
 std::vector<std::byte> largestLevelFirst() {
-    const auto good = goodFile();
+    const auto good = goodKtx2File();
     auto file = prefix(good, 280);
     const size_t levels[3][2] = {{520, 768}, {328, 192}, {280, 48}};
     for (int level = 0; level < 3; ++level) {
@@ -48,14 +48,14 @@ std::vector<std::byte> largestLevelFirst() {
     return file;
 }
 
-struct Broken {
+struct BrokenKtx2 {
     std::string what;
     std::vector<std::byte> file;
     std::string reported;
 };
 
-std::vector<Broken> brokenFiles() {
-    const auto good = goodFile();
+std::vector<BrokenKtx2> brokenKtx2Files() {
+    const auto good = goodKtx2File();
     auto longer = good;
     longer.push_back(std::byte{0});
     return {
@@ -109,13 +109,13 @@ std::vector<Broken> brokenFiles() {
 }
 
 TEST(ImageIoKtx2Validator, FindsNothingWrongWithAConformingFile) {
-    EXPECT_EQ(validateKtx2(goodFile()), std::vector<std::string>{});
+    EXPECT_EQ(validateKtx2(goodKtx2File()), std::vector<std::string>{});
     EXPECT_EQ(validateKtx2(withKeyValues({std::string("KTXwriter\0abcdefg\0", 18), std::string("b\0x\0", 4)})),
               std::vector<std::string>{});
 }
 
 TEST(ImageIoKtx2Validator, ReportsEachBrokenRuleByItsField) {
-    for (const auto& broken : brokenFiles()) {
+    for (const auto& broken : brokenKtx2Files()) {
         const auto violations = validateKtx2(broken.file);
         EXPECT_TRUE(mentions(violations, broken.reported))
             << broken.what << ": expected a violation mentioning \"" << broken.reported << "\", got "

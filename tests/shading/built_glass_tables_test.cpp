@@ -9,7 +9,7 @@
 namespace iblkit::shading {
 namespace {
 
-constexpr uint32_t kSize = kTransmissionTableSize;
+constexpr uint32_t kTableSize = kTransmissionTableSize;
 // A prime stride: about 130 texels of the 8192, at every layer, N·V and roughness.
 constexpr size_t kStride = 61;
 
@@ -18,13 +18,13 @@ struct Texel {
 };
 
 Texel texelAt(size_t index) {
-    const size_t x = index % kSize, y = index / kSize % kSize, layer = index / (kSize * kSize);
-    return {(x + 0.5) / kSize, (y + 0.5) / kSize, kTransmissionEtas[layer]};
+    const size_t x = index % kTableSize, y = index / kTableSize % kTableSize, layer = index / (kTableSize * kTableSize);
+    return {(x + 0.5) / kTableSize, (y + 0.5) / kTableSize, kTransmissionEtas[layer]};
 }
 
 TEST(BuiltGlassTables, TheInterfaceTableIsTransmittedShareAtEveryTexel) {
     const auto table = builtTransmissionTable();
-    ASSERT_EQ(table.size(), size_t(kSize) * kSize * kTransmissionEtas.size() * 2);
+    ASSERT_EQ(table.size(), size_t(kTableSize) * kTableSize * kTransmissionEtas.size() * 2);
     for (size_t index = 0; index < table.size() / 2; index += kStride) {
         const auto [ndotv, roughness, eta] = texelAt(index);
         EXPECT_EQ(table[2 * index], float(transmittedShare(ndotv, roughness, eta, Crossing::Entering))) << index;
@@ -34,7 +34,7 @@ TEST(BuiltGlassTables, TheInterfaceTableIsTransmittedShareAtEveryTexel) {
 
 TEST(BuiltGlassTables, TheSphereTableIsTheSphereTransmissionAtEveryTexel) {
     const auto table = builtSphereTransmissionTable();
-    ASSERT_EQ(table.size(), size_t(kSize) * kSize * kTransmissionEtas.size() * 4);
+    ASSERT_EQ(table.size(), size_t(kTableSize) * kTableSize * kTransmissionEtas.size() * 4);
     for (size_t index = 0; index < table.size() / 4; index += kStride) {
         const auto [ndotv, roughness, eta] = texelAt(index);
         const auto fit = sphereTransmission(ndotv, roughness, eta, kSphereTransmissionPaths);
