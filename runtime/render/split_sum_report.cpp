@@ -62,11 +62,6 @@ RenderSummary renderInto(const fs::path& scratch, const std::optional<fs::path>&
 // The pictures' folder, split-sum/ beside the page.
 fs::path picturesFolder(const ReportOptions& options) { return options.markdown.parent_path() / "split-sum"; }
 
-std::string bytesOf(const fs::path& path) {
-    const auto bytes = image_io::readFileBytes(path);
-    return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
-}
-
 const std::string& rowName(const SphereError& sphere) { return sphere.material; }
 
 // One row per sphere row, one column per roughness: the mean |error|, with the sphere's summed
@@ -172,9 +167,8 @@ void writeSplitSumReport(const ReportOptions& options, const std::string& toolVe
     for (const auto& environment : environments) {
         fs::create_directories(directory.staging() / environment.name);
         for (const auto& file : fs::directory_iterator(scratch.path() / environment.name)) {
-            const auto bytes = bytesOf(file.path());
             written.push_back(bake::writeBytes(directory.staging(), environment.name + "/" + file.path().filename().string(),
-                                               std::as_bytes(std::span(bytes.data(), bytes.size()))));
+                                               image_io::readFileBytes(file.path())));
         }
     }
     const nlohmann::json manifest = {{"generator", "iblkit"}, {"command", "render-report"}, {"invocation", options.command},

@@ -52,6 +52,7 @@ private:
         vk::DescriptorImageInfo image;
     };
     const compiler::ReflectedResource& resource(const std::string& name) const;
+    void record(const std::string& name, uint32_t element, Bound bound);
     void writeDescriptorSets() const;
 
     compiler::ShaderReflection reflection_;
@@ -61,8 +62,6 @@ private:
     vk::raii::Pipeline pipeline_{nullptr};
     vk::raii::DescriptorPool descriptorPool_{nullptr};
     std::map<uint32_t, vk::raii::DescriptorSet> sets_;
-    void record(const std::string& name, uint32_t element, Bound bound);
-
     std::map<std::string, std::vector<std::optional<Bound>>> bound_; // by name, one per element
     std::vector<std::byte> pushConstants_;
 };

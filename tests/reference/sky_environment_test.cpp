@@ -47,8 +47,7 @@ glm::dvec3 shadersSun() {
 }
 
 // The C++ sky's brightest direction, found by search (a 0.25° grid, then 0.01° about the best), is
-// the shader's sun; its glow falls off away from it, and the opposite side is dark. (This replaces
-// a test that restated the sky's formula and constants.)
+// the shader's sun; its glow falls off away from it, and the opposite side is dark.
 TEST(SkyEnvironment, TheSunIsWhereTheSkyShaderPutsIt) {
     const auto brightest = [](double thetaFrom, double thetaTo, double phiFrom, double phiTo, double step) {
         glm::dvec3 best(0);
