@@ -36,7 +36,9 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
     const uint32_t fineSize = std::bit_ceil(uint32_t(std::ceil(std::min(wanted, double(sourceSize)))));
     const uint32_t fineLevel = levelOf(sourceSize, fineSize);
     const uint32_t lastLevel = levelOf(sourceSize, 1);
-    const uint32_t topLevel = std::min(lastLevel, fineLevel + kMaxTreeDepth);
+    // The top level has at most 2 x 2 blocks per face: above 256², every texel would otherwise sum
+    // 6 top² terms whatever its budget (384 at 1024², three times the default budget).
+    const uint32_t topLevel = std::min(lastLevel, std::max(fineLevel + kMaxTreeDepth, lastLevel - 1));
     const double topBlocks = 6.0 * std::pow(double(sourceSize >> topLevel), 2);
     const double depth = topLevel - fineLevel;
     const double refine = std::sqrt(std::max(double(budget) - topBlocks, 0.0) / (std::numbers::pi * (3 * depth + 4)));

@@ -20,7 +20,8 @@ struct ConvolutionPlan {
 };
 
 // The fine level resolves the lobe (its half-maximum width, about 2.58 α for GGX at N = V) with
-// at least kFineTexelsPerLobe texels; the top level is at most 7 levels above it; `refine`
+// at least kFineTexelsPerLobe texels; the top level is 7 levels above it, or higher where that level
+// would have more than 2 x 2 blocks per face (sources above 256²); `refine`
 // spends about `budget` block terms per output texel: about 6 top² + π refine² (3 levels + 4),
 // and more where bright blocks open from farther away (the shader's Opens);
 // blocks across N's horizon open down to kHorizonTexels per face, scaled by the cube root of the
@@ -30,8 +31,8 @@ inline constexpr double kFineTexelsPerLobe = 12;
 inline constexpr double kHorizonTexels = 16;
 // llvmpipe ends every loop of an invocation once all of them together have run 65535 iterations,
 // counted for the SIMD vector of texels it runs at once: each term of the walk costs the vector up
-// to 3 + 2 × the tree's depth (7) of them, 17, so a walk of more than about 3850 terms loses the
-// rest of its sum without a word (at 32768, mip 1 of a 64² source was 14 times off). Measured on a
+// to 3 + 2 × the tree's depth of them (17 at a depth of 7; 25 at 11, a 4096² source's), so a walk of
+// more than about 3850 (2600) terms loses the rest of its sum without a word (at 32768, mip 1 of a 64² source was 14 times off). Measured on a
 // 256² source, a texel at a face corner sums up to 1.02 terms per unit of budget, and bright
 // blocks add about 15 %: budgets above 2048 are refused, and the shader stops opening blocks
 // within the device's budget whatever the light.
