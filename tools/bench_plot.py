@@ -11,6 +11,10 @@ Reads the bench's results.json ({"machine", "device", "date", "command",
   lut.png                     max and RMS absolute error of the BRDF LUT
   irradiance.png              RMS relative error, one point per environment
                               and method (only when irradiance rows exist)
+  size_curve.png              whole-process wall time and peak memory of a bake
+                              against its base size, per method (only when the
+                              document has "size_curve" rows: {"environment",
+                              "method", "size", "wall_ms", "peak_mib", ...})
 
 All axes are log-log; each method is one curve (points in increasing sample
 count, annotated with it) and the Pareto frontier over all points of a panel is
@@ -74,9 +78,63 @@ def load(path):
                 raise BenchError(f"{path}: results[{i}] has no valid '{key}' ({v!r})")
             row[key] = float(v)
         good.append(row)
-    if not good:
-        raise BenchError(f"{path}: no specular, lut or irradiance results")
+    if not good and not doc.get("size_curve"):
+        raise BenchError(f"{path}: no specular, lut, irradiance or size curve results")
     return doc, good
+
+
+def size_curve_rows(doc):
+    """The cost curve's rows, their numbers checked."""
+    rows = doc.get("size_curve") or []
+    if not isinstance(rows, list):
+        raise BenchError("'size_curve' is not a list")
+    for i, r in enumerate(rows):
+        for key in ("size", "wall_ms", "peak_mib"):
+            v = r.get(key) if isinstance(r, dict) else None
+            if type(v) not in (int, float) or not math.isfinite(v) or v <= 0:
+                raise BenchError(f"size_curve[{i}] has no valid '{key}' ({v!r})")
+    return rows
+
+
+def size_curve_figure(doc, rows):
+    """Time and memory against size, log-log: per method the median over the
+    environments (thick), each environment (thin), and a dotted line growing as
+    the texels do (size²) through the median's smallest size."""
+    fig = new_figure()
+    sizes = sorted({r["size"] for r in rows})
+    methods = sorted({str(r["method"]) for r in rows})
+    envs = sorted({str(r["environment"]) for r in rows})
+    for ax, key, scale, label in zip(fig.subplots(1, 2), ("wall_ms", "peak_mib"), (1e-3, 1),
+                                     ("whole-process wall time (s)", "peak memory (MiB)")):
+        for i, method in enumerate(methods):
+            color = f"C{i % 10}"
+            at = [r for r in rows if r["method"] == method]
+            for env in envs:
+                pts = sorted((r["size"], r[key] * scale) for r in at if r["environment"] == env)
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], color=color, lw=0.6, alpha=0.35)
+            med = [(s, statistics.median(r[key] * scale for r in at if r["size"] == s))
+                   for s in sizes if any(r["size"] == s for r in at)]
+            ax.plot([p[0] for p in med], [p[1] for p in med], color=color, lw=2, marker="o",
+                    label=f"{method} (median of {len(envs)})")
+            if key == "wall_ms" and med:
+                s0, v0 = med[0]
+                ax.plot(sizes, [v0 * (s / s0) ** 2 for s in sizes], color=color, ls=":", lw=1,
+                        label=f"{method}: ∝ size²")
+        ax.set(xscale="log", yscale="log", xlabel="base size (texels per face side)", ylabel=label)
+        ax.set_xticks(sizes)
+        ax.set_xticklabels([f"{s}²" for s in sizes])
+        ax.minorticks_off()
+        # 1, 2 and 5 of each decade, labelled: the curves may span less than one.
+        from matplotlib.ticker import FormatStrFormatter, LogLocator
+        ax.yaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
+        ax.grid(True, which="major", alpha=0.5)
+        ax.legend(fontsize=8)
+    fig.suptitle("Whole bakes against size", fontsize=12)
+    info = ", ".join(str(doc[k]) for k in ("device", "machine", "date") if doc.get(k))
+    fig.text(0.995, 0.005, info, fontsize=7, color="0.4", ha="right", va="bottom")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    return fig
 
 
 def clip_zeros(series):
@@ -185,6 +243,9 @@ def build(doc, rows):
             doc, "Irradiance: RMS error vs device time, one point per environment",
             [(curves(irr, "error_rms", lambda r: r["environment"] or "(unnamed)"),
               colors, REL_RMS, "RMS error (labels: environment)", False)])))
+    sized = size_curve_rows(doc)
+    if sized:
+        plots.append(("size_curve.png", size_curve_figure(doc, sized)))
     return plots
 
 

@@ -13,8 +13,12 @@ namespace {
 nlohmann::json summaryJson(const bake::BakeSummary& summary) {
     nlohmann::json steps = nlohmann::json::array();
     const auto& kernels = summary.compiledKernels;
-    for (const auto& step : summary.steps)
-        steps.push_back({{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}});
+    for (const auto& step : summary.steps) {
+        nlohmann::json entry{{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}};
+        for (const auto& part : step.parts)
+            entry["parts"].push_back({{"name", part.name}, {"device_ms", part.deviceMilliseconds}, {"wall_ms", part.wallMilliseconds}});
+        steps.push_back(std::move(entry));
+    }
     return {{"output", image_io::utf8Name(summary.outputDir)},
             {"device", summary.device},
             {"wall_ms", summary.wallMilliseconds},
@@ -28,7 +32,7 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"most_negative", summary.negativeTexels.mostNegative},
             {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}},
             {"compiled_kernels", {{"hits", kernels.hits}, {"misses", kernels.misses}, {"stale", kernels.stale},
-                                  {"damaged", kernels.damaged}}},
+                                  {"damaged", kernels.damaged}, {"compile_ms", summary.kernelCompileMilliseconds}}},
             {"pipeline_cache_bytes", summary.pipelineCacheBytes},
             {"scene_notes", summary.sceneNotes}};
 }

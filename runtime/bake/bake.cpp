@@ -45,6 +45,7 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
         prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
     }
 
+    prepared.device = findDeviceEarly(settings);
     progress.begin("load");
     prepared.input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
     prepared.size = resolvedSize(settings, prepared.input.cubeSize);
@@ -62,7 +63,8 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
 ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
                          BakeProgress& progress) {
     auto* store = prepared.store ? &*prepared.store : nullptr;
-    ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store), {}, {}};
+    ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store,
+                                  prepared.device), {}, {}};
     auto& outputs = maps.outputs;
     const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
     maps.shadingRecord = shadingJson(facts).dump();
@@ -80,14 +82,18 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture) textures.push_back(std::move(**texture));
+    progress.part("half range");
     std::vector<HalfRangeClamp> clamps;
     for (auto& texture : textures)
         if (auto clamp = applyHalfRangePolicy(texture, settings.strict)) clamps.push_back(std::move(*clamp));
     const std::string writer = "iblkit " + toolVersion;
     const auto& folder = prepared.directory->staging();
     std::vector<WrittenFile> files;
-    for (const auto& texture : textures)
+    for (const auto& texture : textures) {
+        progress.part(texture.name);
         for (auto& file : writeTexture(folder, texture, settings, writer)) files.push_back(std::move(file));
+    }
+    progress.part("preview, lights, manifest");
     files.push_back(writeBytes(folder, "preview.png", std::as_bytes(std::span(outputs.previewPng))));
     if (!outputs.lights.empty()) {
         const auto gltf = lightsGltf(outputs.lights, writer);
@@ -100,6 +106,7 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     manifest["files"] = filesJson(files);
     const std::string manifestText = manifest.dump(2) + "\n";
     files.push_back(writeBytes(folder, "manifest.json", std::as_bytes(std::span(manifestText))));
+    progress.part("commit");
     prepared.directory->commit();
     progress.end();
 
@@ -107,7 +114,7 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     const auto& input = prepared.input;
     return {settings.outputDir, outputs.device, progress.steps(), wall, files, outputs.sh.shRadiance, clamps,
             input.sanitizedTexels, input.negative, maps.cache, outputs.cacheWarnings, outputs.compiledKernels,
-            outputs.pipelineCacheBytes, prepared.plan.notes};
+            outputs.pipelineCacheBytes, prepared.plan.notes, outputs.kernelCompileMilliseconds};
 }
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {

@@ -37,6 +37,7 @@ struct BakeSummary {
     kernels::CompiledKernelCache::Counts compiledKernels; // kernels taken from the cache and compiled (zeros without a device)
     size_t pipelineCacheBytes = 0;        // Vulkan pipeline cache data an earlier bake on this device left
     std::vector<std::string> sceneNotes;  // what the scene's reader assumed or clamped (BakePlan::notes)
+    double kernelCompileMilliseconds = 0; // on the two threads beside the steps (BakeKernels), summed
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,
@@ -58,6 +59,7 @@ struct PreparedBake {
     uint32_t size = 0, mips = 0;
     BakePlan plan;
     std::optional<cache::ContentStore> store; // settings.cache's
+    std::shared_future<vulkan::DeviceInfo> device; // findDeviceEarly's, started before the input loads
 };
 
 // The settings checked, the output folder claimed (for a Folder), the scene and the environment

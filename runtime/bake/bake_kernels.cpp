@@ -3,7 +3,16 @@
 #include "kernels/compiled_kernel_cache.hpp"
 #include "shading_maps.hpp"
 
+#include <chrono>
+
 namespace iblkit::bake {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
 
 BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs) {
     // Two threads for two cores, each in the order the bake needs its kernels.
@@ -11,21 +20,23 @@ BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSetting
     auto* cache = kernels::compiledKernelCacheInUse();
     specularFuture_ = std::async(std::launch::async, [&context, cache, method = settings.specularMethod,
                                                       samples = resolvedSamples(settings), needed = outputs.specular] {
+        const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
         // The residual of a recipe's lights gets its mips first, then the prefilter reads them.
         auto downsample = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::DownsampleCube));
         auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples) : nullptr;
         auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
-        return Specular{std::move(specular), std::move(preview), std::move(downsample)};
+        return Specular{millisecondsSince(start), std::move(specular), std::move(preview), std::move(downsample)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, cache, method = settings.lutMethod,
                                                  count = resolvedLutSamples(settings), needed = outputs.lut,
                                                  weighting = resolvedRecipe(settings).weighting] {
+        const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
         auto lut = needed ? std::make_unique<kernels::LutMethod>(context, method, count) : nullptr;
         auto irradiance = std::make_unique<IrradianceKernels>(context);
         lobeTableOf(weighting); // the preview's, off the bake's path (48 ms)
-        return Lut{std::move(lut), std::move(irradiance)};
+        return Lut{millisecondsSince(start), std::move(lut), std::move(irradiance)};
     });
 }
 
@@ -44,5 +55,6 @@ kernels::Kernel& BakeKernels::preview() { return *specularReady().preview; }
 kernels::Kernel& BakeKernels::downsample() { return *specularReady().downsample; }
 kernels::LutMethod* BakeKernels::lut() { return lutReady().method.get(); }
 IrradianceKernels& BakeKernels::irradiance() { return *lutReady().irradiance; }
+double BakeKernels::compileMilliseconds() { return specularReady().milliseconds + lutReady().milliseconds; }
 
 } // namespace iblkit::bake

@@ -27,14 +27,18 @@ public:
     kernels::Kernel& downsample(); // DownsampleCubeCS, for a cube made on the host
     kernels::LutMethod* lut();
     IrradianceKernels& irradiance();
+    // The two threads' compile times, summed (each thread's wall time from its start to its last kernel).
+    double compileMilliseconds();
 
 private:
     struct Specular {
+        double milliseconds = 0;
         std::unique_ptr<kernels::SpecularMethod> method;
         std::unique_ptr<kernels::Kernel> preview;
         std::unique_ptr<kernels::Kernel> downsample;
     };
     struct Lut {
+        double milliseconds = 0;
         std::unique_ptr<kernels::LutMethod> method;
         std::unique_ptr<IrradianceKernels> irradiance;
     };

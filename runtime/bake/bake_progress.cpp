@@ -10,7 +10,8 @@ BakeProgress::BakeProgress(bool quiet, std::FILE* stream)
     : quiet_(quiet), stream_(stream), terminal_(stream && ::isatty(::fileno(stream)) == 1) {}
 
 void BakeProgress::begin(const std::string& step) {
-    steps_.push_back({step, 0, 0});
+    endPart();
+    steps_.push_back({step, 0, 0, {}});
     started_ = Clock::now();
     lastDetail_.clear();
     advance(0);
@@ -26,10 +27,26 @@ void BakeProgress::advance(double fraction, const std::string& detail) {
 }
 
 void BakeProgress::addDeviceTime(double milliseconds) {
-    if (milliseconds > 0) steps_.back().deviceMilliseconds += milliseconds;
+    if (milliseconds <= 0) return;
+    steps_.back().deviceMilliseconds += milliseconds;
+    if (inPart_) steps_.back().parts.back().deviceMilliseconds += milliseconds;
+}
+
+void BakeProgress::part(const std::string& name) {
+    endPart();
+    steps_.back().parts.push_back({name, 0, 0});
+    partStarted_ = Clock::now();
+    inPart_ = true;
+}
+
+void BakeProgress::endPart() {
+    if (!inPart_) return;
+    steps_.back().parts.back().wallMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - partStarted_).count();
+    inPart_ = false;
 }
 
 void BakeProgress::end() {
+    endPart();
     steps_.back().wallMilliseconds = elapsedSeconds() * 1e3;
     if (!quiet_) print(1, lastDetail_, "\n");
 }

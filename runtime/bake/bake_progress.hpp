@@ -7,10 +7,18 @@
 
 namespace iblkit::bake {
 
+// A named part of a step (one mip of the prefilter, the source cube's mip chain): its own times.
+struct PartTiming {
+    std::string name;
+    double deviceMilliseconds = 0;
+    double wallMilliseconds = 0;
+};
+
 struct StepTiming {
     std::string name;
     double deviceMilliseconds = 0; // summed over the step's dispatches; 0 for host-only steps
     double wallMilliseconds = 0;
+    std::vector<PartTiming> parts;  // where the step reports them, in order
 };
 
 // Reports each step on stderr unless quiet, and keeps every step's device and wall time for the
@@ -24,6 +32,9 @@ public:
     void begin(const std::string& step);
     void advance(double fraction, const std::string& detail = {});
     void addDeviceTime(double milliseconds);
+    // Starts a named part of the current step; it ends where the next part starts or the step
+    // ends, and takes the device time added while it runs.
+    void part(const std::string& name);
     void end();
 
     const std::vector<StepTiming>& steps() const { return steps_; }
@@ -38,7 +49,11 @@ private:
     std::FILE* stream_;
     bool terminal_;
     std::vector<StepTiming> steps_;
+    void endPart();
+
     Clock::time_point started_;
+    Clock::time_point partStarted_;
+    bool inPart_ = false;
     Clock::time_point lastShown_;
     std::string lastDetail_;
 };

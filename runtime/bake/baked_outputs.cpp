@@ -196,9 +196,7 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
     outputs.lights = results.lights;
     outputs.lightLevel = results.lightLevel;
     outputs.previewExposure = previewExposure(results.irradiance.sh, results.lights);
-    if (cached.previewPng) {
-        outputs.previewPng = *cached.previewPng;
-    } else {
+    if (!cached.previewPng) {
         const auto& recipe = *plan.recipe;
         auto lobeTable = lobeTableImage(context, recipe.weighting);
         const auto lights = environmentLightBuffer(context, results.lights);
@@ -206,8 +204,14 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
                                            {results.specular, results.irradiance.cube, results.lut, lobeTable, lights,
                                             recipeParameters(recipe, plan.schedule, results.lights.size(), results.lightLevel)},
                                            outputs.previewExposure, progress);
+        progress.begin("outputs");
+        progress.part("preview png");
         outputs.previewPng = image_io::encodePng(preview.width, preview.height, toRgba8(preview.rgba));
+    } else {
+        progress.begin("outputs");
+        outputs.previewPng = *cached.previewPng;
     }
+    progress.part("download");
     const auto rgba16 = image_io::PixelFormat::Rgba16Float;
     if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, results.specular, "specular", rgba16);
     if (writesLobeTable(plan))
@@ -222,6 +226,7 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
 // What the cache did not hold, stored; the irradiance cube goes with its SH even where the plan skips it.
 void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakePlan& plan, const Cached& cached,
                    BakedOutputs& outputs) {
+    if (!cache) return; // the payloads are tens of megabytes at large sizes: none is made for nothing
     auto& warnings = outputs.cacheWarnings;
     if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular), warnings);
     if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
@@ -235,27 +240,48 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
 BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                              const BakeKeys& keys, const Cached& cached, BakeProgress& progress, cache::ContentStore* cache) {
     progress.begin("device");
-    const vulkan::VulkanContext context(settings.context);
-    DeviceCaches caches(cache, context);
-    BakeKernels kernels(context, settings, {plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
-    checkMemory(context, settings, input, size);
+    progress.part("instance and device");
+    auto context = std::make_unique<const vulkan::VulkanContext>(settings.context);
+    progress.part("pipeline cache");
+    auto caches = std::make_unique<DeviceCaches>(cache, *context);
+    progress.part("kernel threads");
+    auto kernels = std::make_unique<BakeKernels>(*context, settings,
+                                                 NeededOutputs{plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
+    progress.part("memory check");
+    checkMemory(*context, settings, input, size);
     progress.end();
-    auto results = runSteps(context, kernels, settings, input, size, plan, cached, progress);
-    auto outputs = downloaded(context, kernels, settings, plan, cached, results, progress);
+    std::optional<DeviceResults> results(runSteps(*context, *kernels, settings, input, size, plan, cached, progress));
+    auto outputs = downloaded(*context, *kernels, settings, plan, cached, *results, progress);
+    progress.part("cache entries");
     storeComputed(cache, keys, plan, cached, outputs);
     if (!plan.irradiance) outputs.irradiance.reset();
-    caches.keepPipelineCache(outputs.cacheWarnings);
-    outputs.compiledKernels = caches.compiledKernels();
-    outputs.pipelineCacheBytes = caches.pipelineCacheBytesLoaded();
+    progress.part("pipeline cache");
+    caches->keepPipelineCache(outputs.cacheWarnings);
+    outputs.compiledKernels = caches->compiledKernels();
+    outputs.pipelineCacheBytes = caches->pipelineCacheBytesLoaded();
+    outputs.kernelCompileMilliseconds = kernels->compileMilliseconds();
+    progress.end();
+    progress.begin("tear-down");
+    results.reset();
+    kernels.reset();
+    caches.reset();
+    context.reset();
+    progress.end();
     return outputs;
+}
+
+} // namespace
+
+std::shared_future<vulkan::DeviceInfo> findDeviceEarly(const BakeSettings& settings) {
+    // A validated bake keeps no cache (bakeOutputs below).
+    if (!settings.cache || settings.context.validation) return {};
+    return std::async(std::launch::async, [options = settings.context] { return chosenDevice(options); }).share();
 }
 
 vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options) {
     const auto devices = vulkan::listDevices();
     return devices[vulkan::chooseDevice(devices, options.device)];
 }
-
-} // namespace
 
 double meanLuminance(const IrradianceSh& sh, const std::vector<shading::EnvironmentLight>& lights) {
     const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
@@ -271,21 +297,26 @@ float previewExposure(const IrradianceSh& sh, const std::vector<shading::Environ
 }
 
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
-                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store) {
+                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
+                         std::shared_future<vulkan::DeviceInfo> deviceFound) {
     // A validated bake is one the layer watched: nothing is taken from the cache, and what the
     // layer may yet fail is not put there.
     if (settings.context.validation) store = nullptr;
     if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
     progress.begin("cache");
-    const auto device = chosenDevice(settings.context);
+    progress.part("device identity");
+    const auto device = deviceFound.valid() ? deviceFound.get() : chosenDevice(settings.context);
+    progress.part("keys");
     const auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
+    progress.part("entries");
     auto cached = lookUp(store, keys, plan, settings);
     progress.end();
     if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
     auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
     const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, plan.schedule, lights);
     const float exposure = previewExposure(*cached.sh, lights);
-    BakedOutputs outputs{cached.specular, cached.lut, plan.irradiance ? cached.irradiance : std::nullopt, cached.lobeTable, *cached.sh,
+    BakedOutputs outputs{std::move(cached.specular), std::move(cached.lut),
+                         plan.irradiance ? std::move(cached.irradiance) : std::nullopt, std::move(cached.lobeTable), *cached.sh,
                          std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, device.name, {}, {}, 0};
     return outputs;
 }

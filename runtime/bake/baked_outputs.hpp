@@ -8,6 +8,7 @@
 #include "gpu_steps.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
 
+#include <future>
 #include <optional>
 #include <string>
 
@@ -33,10 +34,21 @@ struct BakedOutputs {
     std::vector<std::string> cacheWarnings; // why an output could not be cached
     kernels::CompiledKernelCache::Counts compiledKernels; // the kernels the cache held, and those compiled
     size_t pipelineCacheBytes = 0;                        // the Vulkan pipeline cache data an earlier bake left
+    double kernelCompileMilliseconds = 0;                 // on the threads beside the steps
 };
 
+// The device the cache keys name, found on a thread while the input loads (a Vulkan instance
+// takes about 0.1 s on lavapipe, a cached bake's largest part); none without a cache. (Opening the
+// whole device early for a bake without a cache gained nothing: the load and the kernels' threads
+// already keep both cores busy.)
+std::shared_future<vulkan::DeviceInfo> findDeviceEarly(const BakeSettings& settings);
+
 BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
-                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store);
+                         const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
+                         std::shared_future<vulkan::DeviceInfo> device = {});
+
+// The device a bake with `options` runs on.
+vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options);
 
 // The environment's mean radiance, in luminance: its maps' (from L00 of their SH projection) and
 // its lights', whatever the recipe took out.

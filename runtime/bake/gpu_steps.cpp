@@ -42,9 +42,12 @@ void renderSky(const vulkan::VulkanContext& context, vulkan::Image& cube, BakePr
 
 void convertPanorama(const vulkan::VulkanContext& context, const image_io::FloatImage& panorama, vulkan::Image& cube,
                      BakeProgress& progress) {
+    progress.part("panorama upload");
     vulkan::Image equirect(context, {"Equirect", &vulkan::rgba32Float(), panorama.width, panorama.height, 1, 1, false, false});
     equirect.upload(context, image_io::rgbaValues(panorama));
+    progress.part("panorama kernel");
     auto kernel = makeKernel(context, KernelRole::EquirectToCube);
+    progress.part("panorama to mip 0");
     kernels::runEquirectToCube(kernel, equirect, cube, {supersampleFor(panorama.width, cube.desc().width)});
     report(kernel, progress);
 }
@@ -70,14 +73,19 @@ uint32_t firstMipAtMost(uint32_t size, uint32_t limit) {
 vulkan::Image buildSourceCube(const vulkan::VulkanContext& context, const EnvironmentInput& input, uint32_t size,
                               BakeProgress& progress) {
     progress.begin("source cube");
+    progress.part("allocation");
     auto cube = makeCube(context, "Source", size, vulkan::fullMipCount(size, size));
-    if (input.kind == InputKind::BuiltIn)
+    if (input.kind == InputKind::BuiltIn) {
+        progress.part("sky to mip 0");
         renderSky(context, cube, progress);
-    else if (input.kind == InputKind::Panorama)
+    } else if (input.kind == InputKind::Panorama) {
         convertPanorama(context, input.panorama, cube, progress);
-    else
+    } else {
+        progress.part("mip 0 upload");
         uploadFaces(context, input.cubeTexels, cube);
+    }
     progress.advance(0.5, "mip chain");
+    progress.part("mip chain");
     auto downsample = makeKernel(context, KernelRole::DownsampleCube);
     kernels::runDownsampleChain(downsample, cube);
     report(downsample, progress);
@@ -105,6 +113,7 @@ vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Imag
             continue;
         }
         progress.advance(done / work, fmt::format("mip {} of {}", mip, mips - 1));
+        progress.part(fmt::format("mip {}", mip));
         prefilter->run(sourceOf(mip), linear, specular, mip, levels.roughness[mip]);
         progress.addDeviceTime(prefilter->takeTotals().deviceMilliseconds);
         done += std::pow(double(specular.mipWidth(mip)), 2);
@@ -137,6 +146,7 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     auto& source = from.cube;
     progress.begin("irradiance");
     Irradiance result{makeCube(context, "Irradiance", size, 1), {}};
+    progress.part("sh");
     const uint32_t shMip = firstMipAtMost(source.desc().width, kShSourceLimit);
     const auto projection = kernels::runShProject(context, steps.project, source, shMip);
     report(steps.project, progress);
@@ -151,6 +161,7 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
         return result;
     }
     progress.advance(0.1, "cube");
+    progress.part("moments");
     const uint32_t momentSize = source.mipWidth(mip);
     if (momentSize > kMaxMomentSize)
         throw std::invalid_argument(fmt::format("irradiance source of {}² is past the most the irradiance cube sums, {}²",
@@ -160,6 +171,7 @@ Irradiance computeIrradiance(const vulkan::VulkanContext& context, IrradianceKer
     std::span<const float> fine = from.mipZero;
     if (fineMip != 0 || fine.empty()) fine = downloaded = vulkan::downloadMip(context, source, fineMip);
     const auto moments = reference::irradianceMoments(fine, source.mipWidth(fineMip), momentSize);
+    progress.part("cube");
     const auto momentBuffer = vulkan::storageBuffer(context, std::as_bytes(std::span(moments)), "Moments");
     kernels::runIrradianceCube(steps.cube, momentBuffer, momentSize, result.cube);
     report(steps.cube, progress);

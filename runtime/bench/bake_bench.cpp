@@ -62,7 +62,9 @@ std::string mipList(const std::vector<bool>& prefiltered) {
 std::string computedBy(const bake::BakeSummary& summary, const bake::BakePlan& plan) {
     std::string text;
     for (const auto& step : summary.steps) {
-        if (step.name == "load" || step.name == "cache" || step.name == "device" || step.name == "write") continue;
+        if (step.name == "load" || step.name == "cache" || step.name == "device" || step.name == "outputs" ||
+            step.name == "tear-down" || step.name == "write")
+            continue;
         std::string part = step.name;
         if (step.name == "prefilter") part = "prefilter mips " + mipList(plan.prefilteredMips());
         if (step.name == "irradiance" && !plan.irradiance) part = "SH (the preview's exposure)";

@@ -115,6 +115,16 @@ std::string bakeTable(const std::vector<BakeTiming>& bakes) {
     return text;
 }
 
+std::string sizeCurveTable(const std::vector<SizePoint>& points) {
+    std::string text = "| environment | method | count | size | wall s | peak MiB | specular RMS / max |\n"
+                       "|---|---|---:|---:|---:|---:|---|\n";
+    for (const auto& point : points)
+        text += fmt::format("| {} | {} | {} | {}² | {} | {:.0f} | {} / {} |\n", point.environment, point.method, point.samples,
+                            point.size, seconds(point.wallMilliseconds), point.peakMebibytes, percent(point.errorRms),
+                            percent(point.errorMax));
+    return text;
+}
+
 std::string images(const std::vector<std::string>& plots, const std::string& prefix, const fs::path& relativeFolder) {
     std::string text;
     for (const auto& plot : plots)
@@ -182,6 +192,15 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
                 "needs values (every output it writes; of the specular chain, the prefiltered mips): bit for bit the "
                 "same is the full bake's error, unchanged.\n\n" +
                 bakeTable(run.bakes);
+    if (!run.sizeCurve.empty())
+        text += "\n## Cost against size\n\n" + images(plots, "size_curve", relativeFolder) +
+                "`iblkit bake ENV --size N --no-cache --method M` as a whole process, the default method (the convolution "
+                "at its default budget) and the documents' (importance sampling at their default count): wall time "
+                "from the program's start to its exit and peak memory (the largest resident set), each the median of "
+                "the repeats after a warm-up per method. The error is the method's at that count on the same size's "
+                "source cube, measured as in the specular tables: the worst mip's luminance error at the bench's "
+                "seeded texels against the converged references.\n\n" +
+                sizeCurveTable(run.sizeCurve);
     return text;
 }
 

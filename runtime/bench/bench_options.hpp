@@ -26,6 +26,8 @@ struct BenchOptions {
     std::vector<uint32_t> lutGrids{8, 16, 32, 64, 128, 192, 256};      // the LUT quadrature grid's counts, nodes per side
     std::vector<uint32_t> lutDegrees{1, 3, 5, 7, 9};         // the polynomial LUT's counts, its degree
     uint32_t size = 256;          // source cube face; specular mips down to 8x8, as the bake makes them
+    std::vector<uint32_t> sizes;  // with BenchOutput::Bake, the cost curve's base sizes (size_curve.hpp), measured
+                                  // instead of the cache's and the plan's bakes
     uint32_t lutSize = 512;
     uint32_t irradianceSize = 32;
     uint32_t texelsPerMip = 192;  // reference texels per specular mip, seeded
@@ -79,12 +81,22 @@ struct BakeTiming {
     bool identical = true;
 };
 
+// One point of the cost curve (--sizes): a method's whole `iblkit bake` process at a base size.
+struct SizePoint {
+    std::string environment, method;
+    uint32_t size = 0, samples = 0;
+    double wallMilliseconds = 0, peakMebibytes = 0; // the process's, medians over the repeats
+    uint32_t repeat = 0;
+    double errorRms = 0, errorMax = 0; // the method's specular error at `samples` on that size (the worst mip's)
+};
+
 struct BenchRun {
     std::string device;
     std::string machine;
     std::string date;
     std::vector<BenchResult> results;
     std::vector<BakeTiming> bakes;
+    std::vector<SizePoint> sizeCurve;
 };
 
 } // namespace iblkit::bench

@@ -28,6 +28,15 @@ namespace fs = std::filesystem;
 // JSON has no infinity: a result that overflowed is written as null.
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
 
+nlohmann::json sizeCurveJson(const std::vector<SizePoint>& points) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& point : points)
+        rows.push_back({{"environment", point.environment}, {"method", point.method}, {"size", point.size},
+                        {"samples", point.samples}, {"wall_ms", point.wallMilliseconds}, {"peak_mib", point.peakMebibytes},
+                        {"repeat", point.repeat}, {"error_rms", number(point.errorRms)}, {"error_max", number(point.errorMax)}});
+    return rows;
+}
+
 nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
     nlohmann::json results = nlohmann::json::array();
     for (const auto& result : run.results) {
@@ -49,7 +58,7 @@ nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
                          {"wall_ms", bake.wallMilliseconds}, {"full_wall_ms", bake.fullWallMilliseconds},
                          {"repeat", bake.repeat}, {"identical", bake.identical}});
     return {{"machine", run.machine}, {"device", run.device}, {"date", run.date}, {"command", command},
-            {"results", results}, {"bakes", bakes}};
+            {"results", results}, {"bakes", bakes}, {"size_curve", sizeCurveJson(run.sizeCurve)}};
 }
 
 std::string csvRow(const BenchResult& result, const std::string& mip, double roughness, uint32_t texels, double rms,
@@ -123,8 +132,8 @@ std::vector<std::string> writeBenchResults(const BenchRun& run, const std::strin
     const files::ScratchFolder scratch("bench");
     const auto json = resultsJson(run, command).dump(2) + "\n";
     files::writeFileAtomically(scratch.path() / "results.json", json);
-    // Whole bakes alone have nothing to plot.
-    const auto plots = run.results.empty() ? std::vector<std::pair<std::string, std::string>>{}
+    // Whole bakes alone have nothing to plot but their cost curve.
+    const auto plots = run.results.empty() && run.sizeCurve.empty() ? std::vector<std::pair<std::string, std::string>>{}
                                            : drawPlots(scratch.path() / "results.json", scratch.path());
     // The folder is the bench's own, replaced as a whole, its manifest listing what it holds (as a
     // bake's does); the Markdown file is written beside it, all or nothing.

@@ -7,6 +7,7 @@
 #include "kernels/lut_methods.hpp"
 #include "kernels/specular_method.hpp"
 #include "measurements.hpp"
+#include "size_curve.hpp"
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
@@ -133,6 +134,12 @@ OutputMethods validate(const BenchOptions& options) {
         if (degree == 0 || degree > kernels::kMaxLutFitDegree)
             throw BenchError(fmt::format("--lut-degree {} is out of range: the polynomial LUT takes degrees 1 to {}", degree,
                                          kernels::kMaxLutFitDegree));
+    for (const uint32_t size : options.sizes)
+        if (size < kMinBenchCubeSize || size > kMaxBenchCubeSize || (size & (size - 1)))
+            throw BenchError(fmt::format("--sizes {} is out of range: a power of two from {} to {}", size, kMinBenchCubeSize,
+                                         kMaxBenchCubeSize));
+    if (!options.sizes.empty() && !wants(options, BenchOutput::Bake))
+        throw BenchError("--sizes measures whole bakes: give --outputs bake");
     if (options.repeat == 0 || options.repeat > kMaxBenchRepeat)
         throw BenchError(fmt::format("--repeat {} is out of range: 1 to {}", options.repeat, kMaxBenchRepeat));
     if (options.texelsPerMip == 0) throw BenchError("--texels 0 is out of range: the reference needs at least one texel per mip");
@@ -203,9 +210,11 @@ BenchRun runBench(const BenchOptions& options) {
     const auto environments = resolveEnvironments(options.environments, options.size, cacheDir);
     logSpecularLimits(options, methods.specular);
     // Whole bakes first, while no other device is open.
-    auto bakes = wants(options, BenchOutput::Bake) ? benchBakes(options, environments, cacheDir) : std::vector<BakeTiming>{};
+    // With --sizes the whole bakes are the cost curve's, measured after the rest.
+    auto bakes = wants(options, BenchOutput::Bake) && options.sizes.empty() ? benchBakes(options, environments, cacheDir)
+                                                                             : std::vector<BakeTiming>{};
     const vulkan::VulkanContext context(options.context);
-    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}, std::move(bakes)};
+    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}, std::move(bakes), {}};
     if (wants(options, BenchOutput::Lut)) {
         if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
         LutBench lut(context, options, cache);
@@ -217,6 +226,7 @@ BenchRun runBench(const BenchOptions& options) {
     }
     for (const auto& environment : environments)
         benchEnvironment(context, environment, methods.specular, options, cache, run.results);
+    if (!options.sizes.empty()) run.sizeCurve = benchSizeCurve(options, context, cache, cacheDir);
     return run;
 }
 

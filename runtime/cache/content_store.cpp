@@ -3,6 +3,7 @@
 #include "cache_error.hpp"
 #include "sha256.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <fstream>
@@ -25,24 +26,33 @@ std::string keyLine(const std::string& key) { return std::string(kMagic) + key +
 
 std::string headerOf(const std::string& key, std::string_view payload) { return keyLine(key) + sha256Hex(payload) + '\n'; }
 
-// The payload of `entry` if it is whole and holds `key`'s value.
-std::optional<std::string_view> payloadOf(std::string_view entry, const std::string& key) {
-    const auto prefix = keyLine(key);
-    const size_t header = prefix.size() + 64 + 1;
-    if (entry.size() < header || !entry.starts_with(prefix) || entry[header - 1] != '\n') return std::nullopt;
-    const auto payload = entry.substr(header);
-    if (entry.substr(prefix.size(), 64) != sha256Hex(payload)) return std::nullopt;
-    return payload;
-}
+// An entry read in two parts: the header (the key line and the payload's hash) and the payload,
+// each straight into its own string, so that a payload of tens of megabytes is neither moved nor
+// copied after it is read.
+struct Entry {
+    std::string header, payload;
+};
 
-std::optional<std::string> readWhole(const fs::path& path) {
+std::optional<Entry> readEntry(const fs::path& path, const std::string& key) {
     std::error_code error;
     const auto size = fs::file_size(path, error);
     std::ifstream in(path, std::ios::binary);
     if (error || !in) return std::nullopt;
-    std::string bytes(size, '\0'); // read once, in place: entries are tens of megabytes at large sizes
-    if (!in.read(bytes.data(), std::streamsize(size))) return std::nullopt;
-    return bytes;
+    Entry entry;
+    entry.header.resize(std::min<size_t>(size, keyLine(key).size() + 64 + 1));
+    entry.payload.resize(size - entry.header.size());
+    if (!in.read(entry.header.data(), std::streamsize(entry.header.size())) ||
+        !in.read(entry.payload.data(), std::streamsize(entry.payload.size())))
+        return std::nullopt;
+    return entry;
+}
+
+// Whether `entry` is whole and holds `key`'s value.
+bool holds(const Entry& entry, const std::string& key) {
+    const auto prefix = keyLine(key);
+    const auto& header = entry.header;
+    if (header.size() != prefix.size() + 64 + 1 || !header.starts_with(prefix) || header.back() != '\n') return false;
+    return std::string_view(header).substr(prefix.size(), 64) == sha256Hex(entry.payload);
 }
 
 // A name no other writer, in this process or another, uses at the same time.
@@ -59,22 +69,20 @@ fs::path ContentStore::pathOf(const std::string& key) const { return folder_ / "
 
 std::optional<std::string> ContentStore::get(const std::string& key) {
     const auto path = pathOf(key);
-    auto entry = readWhole(path);
+    auto entry = readEntry(path, key);
     if (!entry) {
         ++counts_.misses;
         return std::nullopt;
     }
-    const auto payload = payloadOf(*entry, key);
-    if (!payload) {
+    if (!holds(*entry, key)) {
         std::error_code ignored;
         fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
-        if (!entry->starts_with(kEarlierMagic)) ++counts_.corrupt;
+        if (!entry->header.starts_with(kEarlierMagic)) ++counts_.corrupt;
         ++counts_.misses;
         return std::nullopt;
     }
     ++counts_.hits;
-    entry->erase(0, entry->size() - payload->size());
-    return entry;
+    return std::move(entry->payload);
 }
 
 void ContentStore::put(const std::string& key, std::string_view payload) {

@@ -53,10 +53,24 @@ TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
         EXPECT_GE(step["wall_ms"].get<double>(), 0);
         EXPECT_GE(step["device_ms"].get<double>(), 0);
     }
-    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "device", "source cube", "lights", "prefilter", "brdf lut",
-                                               "irradiance", "preview", "write"}))
+    EXPECT_EQ(steps, (std::vector<std::string>{"start", "load", "cache", "device", "source cube", "lights", "prefilter",
+                                               "brdf lut", "irradiance", "preview", "outputs", "tear-down", "write"}))
         << "the built-in sky's sun is taken out as a light";
-    EXPECT_GT(summary["steps"][5]["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+    const auto& prefilter = summary["steps"][6];
+    EXPECT_GT(prefilter["device_ms"].get<double>(), 0) << "the prefilter's dispatches are timed";
+    double mipsDeviceTime = 0;
+    std::vector<std::string> mips;
+    for (const auto& part : prefilter["parts"]) {
+        mips.push_back(part["name"]);
+        mipsDeviceTime += part["device_ms"].get<double>();
+    }
+    EXPECT_EQ(mips, std::vector<std::string>{"mip 1"}) << "each prefiltered mip: a 16² chain has two mips";
+    EXPECT_DOUBLE_EQ(mipsDeviceTime, prefilter["device_ms"].get<double>()) << "the mips hold every dispatch of the step";
+    std::vector<std::string> deviceParts;
+    for (const auto& part : summary["steps"][3]["parts"]) deviceParts.push_back(part["name"]);
+    EXPECT_EQ(deviceParts, (std::vector<std::string>{"instance and device", "pipeline cache", "kernel threads", "memory check"}));
+    EXPECT_GT(summary["compiled_kernels"]["compile_ms"].get<double>(), 0);
+    EXPECT_GE(summary["process_ms"].get<double>(), summary["wall_ms"].get<double>()) << "the process holds the bake";
     EXPECT_EQ(summary["cache"]["misses"], 6) << "specular, LUT, irradiance, lights, lobe table, preview";
 }
 
@@ -67,7 +81,7 @@ TEST_F(BakeCli, ARepeatedBakeComesFromTheCacheAndNoCacheComputesEverything) {
     const auto summary = nlohmann::json::parse(again.out);
     std::vector<std::string> steps;
     for (const auto& step : summary["steps"]) steps.push_back(step["name"]);
-    EXPECT_EQ(steps, (std::vector<std::string>{"load", "cache", "write"})) << "no device opened";
+    EXPECT_EQ(steps, (std::vector<std::string>{"start", "load", "cache", "write"})) << "no device opened";
     EXPECT_EQ(summary["cache"]["hits"], 6);
     for (const char* file : {"specular.ktx2", "lights.gltf", "lobe_table.ktx2", "preview.png"})
         EXPECT_EQ(readFile(scratch.path() / "first" / file), readFile(scratch.path() / "again" / file)) << file;

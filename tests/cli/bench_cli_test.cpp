@@ -56,6 +56,51 @@ TEST_F(BenchCli, WritesResultsPlotsAndReport) {
     EXPECT_NE(report.find("| LUT (max) | "), std::string::npos) << "the time-error frontiers";
 }
 
+// The cost curve: whole `iblkit bake` processes at each size, for the default method and the
+// documents', each with its time, its peak memory and its error at that size.
+TEST_F(BenchCli, TheSizeCurveBakesWholeProcessesAtEachSize) {
+    const auto result = iblkit({"bench", "sky", "sun", "--outputs", "bake", "--sizes", "32,64", "--out",
+                                at("sizes"), "--markdown", at("sizes.md")});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.err.find("'sun' has no file to bake"), std::string::npos) << result.err;
+    const auto json = nlohmann::json::parse(readFile(scratch.path() / "sizes" / "results.json"));
+    EXPECT_TRUE(json.at("bakes").empty()) << "the curve instead of the cache's and the plan's bakes";
+    const auto& curve = json.at("size_curve");
+    ASSERT_EQ(curve.size(), 4u) << "two sizes of the sky, two methods each";
+    for (size_t row = 0; row < curve.size(); ++row) {
+        const auto& point = curve[row];
+        SCOPED_TRACE(point.dump());
+        EXPECT_EQ(point["environment"], "sky");
+        EXPECT_EQ(point["size"], row < 2 ? 32 : 64);
+        EXPECT_EQ(point["method"], row % 2 == 0 ? "convolution" : "document");
+        EXPECT_EQ(point["samples"], row % 2 == 0 ? 128 : 1024) << "each method's default count";
+        EXPECT_GT(point["wall_ms"].get<double>(), 0);
+        // A process that opens lavapipe maps LLVM: about 130 MiB at these sizes, never the bench's own.
+        EXPECT_GT(point["peak_mib"].get<double>(), 20);
+        EXPECT_LT(point["peak_mib"].get<double>(), 1024);
+        EXPECT_GT(point["error_max"].get<double>(), point["error_rms"].get<double>());
+    }
+    for (const size_t convolution : {0u, 2u}) {
+        EXPECT_LT(curve[convolution]["error_rms"].get<double>(), 0.01) << "the convolution within its target";
+        EXPECT_GT(curve[convolution + 1]["error_rms"].get<double>(), 10 * curve[convolution]["error_rms"].get<double>())
+            << "the documents' importance sampling, far noisier";
+    }
+    EXPECT_EQ(readFile(scratch.path() / "sizes" / "size_curve.png").substr(1, 3), "PNG");
+    const auto report = readFile(scratch.path() / "sizes.md");
+    EXPECT_NE(report.find("## Cost against size"), std::string::npos);
+    EXPECT_NE(report.find("](sizes/size_curve.png)"), std::string::npos);
+    EXPECT_NE(report.find("| sky | document | 1024 | 64² |"), std::string::npos) << report;
+}
+
+TEST_F(BenchCli, SizesNeedTheBakeOutputAndPowersOfTwo) {
+    for (const auto& [outputs, sizes] : {std::pair{"bake", "16,48"}, std::pair{"specular", "16"}}) {
+        const auto result = iblkit({"bench", "sky", "--outputs", outputs, "--sizes", sizes, "--out", at("refused")});
+        EXPECT_NE(result.exitCode, 0) << sizes;
+        EXPECT_NE(result.err.find("--sizes"), std::string::npos) << result.err;
+        EXPECT_FALSE(fs::exists(scratch.path() / "refused"));
+    }
+}
+
 // A run that fails after its work, while writing (the plots cannot be drawn: a matplotlib that
 // imports but has no pyplot), leaves the earlier results as they were and no partial folder.
 TEST_F(BenchCli, AFailedRunLeavesEarlierResultsAsTheyWere) {

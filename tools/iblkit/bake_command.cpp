@@ -7,11 +7,60 @@
 #include <iblkit/bake.hpp>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <ctime>
+#include <fstream>
 #include <memory>
+#include <sstream>
+
+#include <unistd.h>
 
 namespace iblkit::cli {
 namespace {
+
+// How long this process has run, from the kernel's record of its start (in steps of 10 ms; 0
+// where there is no /proc).
+double processAgeMilliseconds() {
+    std::ifstream stat("/proc/self/stat");
+    std::string line;
+    if (!std::getline(stat, line)) return 0;
+    // Field 22, the start in clock ticks since boot, counted after the command's name, which ends
+    // at the last ')' and may hold spaces.
+    std::istringstream fields(line.substr(line.rfind(')') + 2));
+    std::string field;
+    for (int index = 3; index < 22 && fields >> field; ++index) {}
+    unsigned long long startTicks = 0;
+    if (!(fields >> startTicks)) return 0;
+    timespec now{};
+    clock_gettime(CLOCK_BOOTTIME, &now);
+    const double started = double(startTicks) / double(sysconf(_SC_CLK_TCK));
+    return std::max(0.0, (double(now.tv_sec) + double(now.tv_nsec) * 1e-9 - started) * 1e3);
+}
+
+// The largest resident set of this program since it started (VmHWM; 0 where there is no /proc).
+// The kernel's ru_maxrss would not do: it holds the parent's, for a process started by vfork.
+double peakMebibytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024; // in kB
+    return 0;
+}
+
+// The bake's summary with the process's own times: "start", from the program's start to the
+// bake's, as the first step, "process_ms", from the program's start to now, and "peak_mib", its
+// largest resident set so far. What the process does after it prints (freeing its memory,
+// exiting) is in no summary.
+std::string withProcessTimes(const std::string& summaryJson, double startMilliseconds) {
+    auto summary = nlohmann::json::parse(summaryJson);
+    const nlohmann::json start{{"name", "start"}, {"device_ms", 0}, {"wall_ms", startMilliseconds}};
+    summary["steps"].insert(summary["steps"].begin(), start);
+    summary["process_ms"] = processAgeMilliseconds();
+    summary["peak_mib"] = peakMebibytes();
+    return summary.dump(2);
+}
 
 void printSummary(const BakeSummary& summary) {
     fmt::print(stderr, "baked {} on {} in {:.2f} s:", summary.folder.string(), summary.device,
@@ -77,6 +126,7 @@ void addBakeCommand(CLI::App& app) {
     command->add_flag("--json", arguments->json, "Print a summary with per-step device and wall times as JSON");
     command->callback([arguments] {
         files::cleanUpOnSignals(); // first: the Vulkan driver's threads must inherit the blocked signals
+        const double startMilliseconds = processAgeMilliseconds();
         auto request = arguments->request;
         if (!arguments->environment.empty()) request.environment = arguments->environment;
         request.lutFormat = lutFormatNamed(arguments->lutFormat);
@@ -87,7 +137,7 @@ void addBakeCommand(CLI::App& app) {
         const auto summary = bakeToFolder(request, arguments->outputDir);
         for (const auto& message : summary.validationMessages) fmt::print(stderr, "validation: {}\n", message);
         if (!summary.validationMessages.empty()) throw ExpectationsFailed{};
-        if (arguments->json) fmt::print("{}\n", summary.json);
+        if (arguments->json) fmt::print("{}\n", withProcessTimes(summary.json, startMilliseconds));
         if (!arguments->quiet) printSummary(summary);
         printPolicyReports(summary);
     });

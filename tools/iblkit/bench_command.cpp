@@ -78,6 +78,12 @@ void addBenchCommand(CLI::App& app) {
     command->add_option("--size", o.size,
                         fmt::format("Source cube face size, a power of two from {} to {} (default 256)", bench::kMinBenchCubeSize,
                                     bench::kMaxBenchCubeSize));
+    command->add_option("--sizes", o.sizes,
+                        fmt::format("With --outputs bake, the cost curve instead of the cache's and the plan's bakes: "
+                                    "whole bakes at these base sizes (powers of two from {} to {}), the default method's and "
+                                    "the documents', with their time, peak memory and specular error",
+                                    bench::kMinBenchCubeSize, bench::kMaxBenchCubeSize))
+        ->delimiter(',');
     command->add_option("--lut-size", o.lutSize, fmt::format("BRDF LUT size, 1 to {} (default 512)", bench::kMaxBenchLutSize));
     command->add_option("--irradiance-size", o.irradianceSize,
                         fmt::format("Irradiance cube face size, 1 to {} (default 32)", bench::kMaxBenchIrradianceSize));
