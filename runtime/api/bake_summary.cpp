@@ -3,6 +3,7 @@
 #include "api/baked_maps.hpp"
 
 #include "bake_manifest.hpp"
+#include "bake_progress.hpp"
 #include "file_names.hpp"
 
 #include <nlohmann/json.hpp>
@@ -14,7 +15,8 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
     nlohmann::json steps = nlohmann::json::array();
     const auto& kernels = summary.compiledKernels;
     for (const auto& step : summary.steps) {
-        nlohmann::json entry{{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds}};
+        nlohmann::json entry{{"name", step.name}, {"device_ms", step.deviceMilliseconds}, {"wall_ms", step.wallMilliseconds},
+                             {"peak_mib", step.peakMebibytes}};
         for (const auto& part : step.parts)
             entry["parts"].push_back({{"name", part.name}, {"device_ms", part.deviceMilliseconds}, {"wall_ms", part.wallMilliseconds}});
         steps.push_back(std::move(entry));
@@ -22,6 +24,7 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
     return {{"output", image_io::utf8Name(summary.outputDir)},
             {"device", summary.device},
             {"wall_ms", summary.wallMilliseconds},
+            {"peak_mib", bake::peakResidentMebibytes()},
             {"steps", steps},
             {"files", bake::filesJson(summary.files)},
             {"sh_radiance", bake::coefficientsJson(summary.shRadiance)},

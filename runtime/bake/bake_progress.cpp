@@ -2,16 +2,26 @@
 
 #include <fmt/core.h>
 
+#include <fstream>
+#include <string>
+
 #include <unistd.h>
 
 namespace iblkit::bake {
+double peakResidentMebibytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024; // in kB
+    return 0;
+}
 
 BakeProgress::BakeProgress(bool quiet, std::FILE* stream)
     : quiet_(quiet), stream_(stream), terminal_(stream && ::isatty(::fileno(stream)) == 1) {}
 
 void BakeProgress::begin(const std::string& step) {
     endPart();
-    steps_.push_back({step, 0, 0, {}});
+    steps_.push_back({step, 0, 0, {}, 0});
     started_ = Clock::now();
     lastDetail_.clear();
     advance(0);
@@ -48,6 +58,7 @@ void BakeProgress::endPart() {
 void BakeProgress::end() {
     endPart();
     steps_.back().wallMilliseconds = elapsedSeconds() * 1e3;
+    steps_.back().peakMebibytes = peakResidentMebibytes();
     if (!quiet_) print(1, lastDetail_, "\n");
 }
 

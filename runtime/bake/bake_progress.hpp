@@ -19,6 +19,7 @@ struct StepTiming {
     double deviceMilliseconds = 0; // summed over the step's dispatches; 0 for host-only steps
     double wallMilliseconds = 0;
     std::vector<PartTiming> parts;  // where the step reports them, in order
+    double peakMebibytes = 0;       // the process's largest resident set when the step ended (VmHWM; 0 without /proc)
 };
 
 // Reports each step on stderr unless quiet, and keeps every step's device and wall time for the
@@ -57,5 +58,10 @@ private:
     Clock::time_point lastShown_;
     std::string lastDetail_;
 };
+
+// This process's largest resident set so far, as the kernel keeps it (VmHWM in /proc/self/status;
+// 0 without it). The kernel's ru_maxrss would not do for a process started by vfork: it counts the
+// parent's.
+double peakResidentMebibytes();
 
 } // namespace iblkit::bake

@@ -71,6 +71,16 @@ TEST_F(BakeCli, QuietIsSilentAndJsonReportsEveryStep) {
     EXPECT_EQ(deviceParts, (std::vector<std::string>{"instance and device", "pipeline cache", "kernel threads", "memory check"}));
     EXPECT_GT(summary["compiled_kernels"]["compile_ms"].get<double>(), 0);
     EXPECT_GE(summary["process_ms"].get<double>(), summary["wall_ms"].get<double>()) << "the process holds the bake";
+    double peak = 0;
+    for (const auto& step : summary["steps"]) {
+        if (step["name"] == "start") continue; // the program's own, before the bake
+        // The kernel counts each thread's pages apart and adds them up every 64 faults, so the
+        // peak it shows may step back by up to 64 pages per thread (1 MiB for four) when threads end.
+        EXPECT_GE(step["peak_mib"].get<double>(), peak - 2) << step["name"] << ": the largest resident set only grows";
+        peak = std::max(peak, step["peak_mib"].get<double>());
+    }
+    EXPECT_GT(peak, 20) << "lavapipe maps LLVM";
+    EXPECT_NEAR(summary["peak_mib"].get<double>(), peak, 2) << "nothing after the write";
     EXPECT_EQ(summary["cache"]["misses"], 6) << "specular, LUT, irradiance, lights, lobe table, preview";
 }
 

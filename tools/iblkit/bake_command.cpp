@@ -39,26 +39,14 @@ double processAgeMilliseconds() {
     return std::max(0.0, (double(now.tv_sec) + double(now.tv_nsec) * 1e-9 - started) * 1e3);
 }
 
-// The largest resident set of this program since it started (VmHWM; 0 where there is no /proc).
-// The kernel's ru_maxrss would not do: it holds the parent's, for a process started by vfork.
-double peakMebibytes() {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024; // in kB
-    return 0;
-}
-
 // The bake's summary with the process's own times: "start", from the program's start to the
-// bake's, as the first step, "process_ms", from the program's start to now, and "peak_mib", its
-// largest resident set so far. What the process does after it prints (freeing its memory,
-// exiting) is in no summary.
+// bake's, as the first step, and "process_ms", from the program's start to now. What the
+// process does after it prints (freeing its memory, exiting) is in no summary.
 std::string withProcessTimes(const std::string& summaryJson, double startMilliseconds) {
     auto summary = nlohmann::json::parse(summaryJson);
     const nlohmann::json start{{"name", "start"}, {"device_ms", 0}, {"wall_ms", startMilliseconds}};
     summary["steps"].insert(summary["steps"].begin(), start);
     summary["process_ms"] = processAgeMilliseconds();
-    summary["peak_mib"] = peakMebibytes();
     return summary.dump(2);
 }
 
