@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 namespace iblkit::bake {
+
 double peakResidentMebibytes() {
     std::ifstream status("/proc/self/status");
     std::string line;

@@ -45,13 +45,12 @@ private:
     double elapsedSeconds() const;
 
     void print(double fraction, const std::string& detail, const char* end);
+    void endPart();
 
     bool quiet_;
     std::FILE* stream_;
     bool terminal_;
     std::vector<StepTiming> steps_;
-    void endPart();
-
     Clock::time_point started_;
     Clock::time_point partStarted_;
     bool inPart_ = false;

@@ -149,8 +149,7 @@ private:
 std::vector<std::string> blenderWorldsAmong(const std::vector<BenchEnvironment>& environments) {
     std::vector<std::string> worlds;
     for (const auto& environment : environments)
-        if (std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), environment.name) != std::end(kBlenderWorlds))
-            worlds.push_back(environment.name);
+        if (isBlenderWorld(environment.name)) worlds.push_back(environment.name);
     return worlds;
 }
 

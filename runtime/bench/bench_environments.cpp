@@ -13,6 +13,10 @@
 #include <unistd.h>
 
 namespace iblkit::bench {
+bool isBlenderWorld(const std::string& name) {
+    return std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), name) != std::end(kBlenderWorlds);
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -34,10 +38,6 @@ bake::EnvironmentInput sunCube(uint32_t size) {
     float* sun = &input.cubeTexels[((size_t(face) * size + row) * size + column) * 4];
     std::fill(sun, sun + 3, 1e4f);
     return input;
-}
-
-bool isBlenderWorld(const std::string& name) {
-    return std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), name) != std::end(kBlenderWorlds);
 }
 
 // A file's name in tables and plot names: its stem in letters, digits, - and _ ("summary" is

@@ -21,6 +21,9 @@ struct BenchEnvironment {
 inline constexpr const char* kBlenderWorlds[] = {"city", "courtyard", "forest", "interior",
                                                  "night", "studio", "sunrise", "sunset"};
 
+// Whether `name` is one of kBlenderWorlds.
+bool isBlenderWorld(const std::string& name);
+
 // Resolves names into environments for a cube of `size`. Blender's HDRIs are fetched with
 // `apt-get download blender-data` into `cacheDir` the first time they are asked for.
 // Throws BenchError (or the bake's errors for a bad file), naming the environment.

@@ -11,7 +11,6 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -25,8 +24,7 @@ namespace fs = std::filesystem;
 // an environment that exists only inside the bench.
 std::optional<fs::path> bakeInputOf(const std::string& name, const fs::path& cacheDir) {
     if (name == "sky") return fs::path();
-    if (std::find(std::begin(kBlenderWorlds), std::end(kBlenderWorlds), name) != std::end(kBlenderWorlds))
-        return blenderWorlds(cacheDir) / (name + ".exr");
+    if (isBlenderWorld(name)) return blenderWorlds(cacheDir) / (name + ".exr");
     if (std::error_code error; fs::exists(name, error)) return fs::path(name);
     return std::nullopt;
 }
@@ -35,11 +33,6 @@ uint32_t defaultSamplesOf(const std::string& method) {
     bake::BakeSettings settings;
     settings.specularMethod = method;
     return bake::resolvedSamples(settings);
-}
-
-double median(std::vector<double> values) {
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
 }
 
 // The bake's own account of its largest resident set (--json's peak_mib): the kernel's for a

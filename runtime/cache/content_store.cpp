@@ -26,6 +26,8 @@ std::string keyLine(const std::string& key) { return std::string(kMagic) + key +
 
 std::string headerOf(const std::string& key, std::string_view payload) { return keyLine(key) + sha256Hex(payload) + '\n'; }
 
+size_t headerSize(const std::string& key) { return keyLine(key).size() + 64 + 1; }
+
 // An entry read in two parts: the header (the key line and the payload's hash) and the payload,
 // each straight into its own string, so that a payload of tens of megabytes is neither moved nor
 // copied after it is read.
@@ -39,7 +41,7 @@ std::optional<Entry> readEntry(const fs::path& path, const std::string& key) {
     std::ifstream in(path, std::ios::binary);
     if (error || !in) return std::nullopt;
     Entry entry;
-    entry.header.resize(std::min<size_t>(size, keyLine(key).size() + 64 + 1));
+    entry.header.resize(std::min<size_t>(size, headerSize(key)));
     entry.payload.resize(size - entry.header.size());
     if (!in.read(entry.header.data(), std::streamsize(entry.header.size())) ||
         !in.read(entry.payload.data(), std::streamsize(entry.payload.size())))
@@ -51,7 +53,7 @@ std::optional<Entry> readEntry(const fs::path& path, const std::string& key) {
 bool holds(const Entry& entry, const std::string& key) {
     const auto prefix = keyLine(key);
     const auto& header = entry.header;
-    if (header.size() != prefix.size() + 64 + 1 || !header.starts_with(prefix) || header.back() != '\n') return false;
+    if (header.size() != headerSize(key) || !header.starts_with(prefix) || header.back() != '\n') return false;
     return std::string_view(header).substr(prefix.size(), 64) == sha256Hex(entry.payload);
 }
 
