@@ -3,6 +3,7 @@
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
 #include "lights_gltf.hpp"
+#include "remembered_facts.hpp"
 #include "shading_maps.hpp"
 #include "profiles/cube_frame.hpp"
 
@@ -45,9 +46,19 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
         prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
     }
 
-    prepared.device = findDeviceEarly(settings);
+    prepared.device.found = findDeviceEarly(settings);
+    prepared.device.confirmLater = destination == BakeDestination::Folder;
     progress.begin("load");
-    prepared.input = loadEnvironment(settings.environment, {settings.sanitize, settings.strict});
+    if (settings.cache) prepared.store.emplace(*settings.cache);
+    auto* store = settings.cache && !settings.context.validation ? &*prepared.store : nullptr;
+    prepared.input = readEnvironment(settings.environment, {settings.sanitize, settings.strict});
+    if (store) prepared.device.remembered = rememberedDevice(*store, settings.context);
+    if (const auto facts = store ? rememberedFacts(*store, prepared.input) : std::nullopt) {
+        takeFacts(prepared.input, *facts); // decoded only if the cache lacks an output
+    } else {
+        decodeEnvironment(prepared.input);
+        if (store) rememberFacts(*store, prepared.input);
+    }
     prepared.size = resolvedSize(settings, prepared.input.cubeSize);
     if (!std::has_single_bit(prepared.size))
         throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", prepared.size,
@@ -55,14 +66,13 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
     prepared.mips = resolvedMips(settings, prepared.size);
     prepared.plan = planBake(settings, prepared.size, scene);
     progress.end();
-
-    if (settings.cache) prepared.store.emplace(*settings.cache);
     return prepared;
 }
 
 ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
                          BakeProgress& progress) {
     auto* store = prepared.store ? &*prepared.store : nullptr;
+    if (store) prepared.countsBeforeMaps = store->counts();
     ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store,
                                   prepared.device), {}, {}};
     auto& outputs = maps.outputs;
@@ -107,6 +117,14 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     const std::string manifestText = manifest.dump(2) + "\n";
     files.push_back(writeBytes(folder, "manifest.json", std::as_bytes(std::span(manifestText))));
     progress.part("commit");
+    if (prepared.store && !deviceAsRemembered(outputs, prepared.device, *prepared.store, settings.context)) {
+        // Every map came from the cache under the keys of the device the last bake ran on, and
+        // this bake runs on another: they are made again under its own.
+        prepared.store->restoreCounts(prepared.countsBeforeMaps);
+        prepared.directory->clearStaging();
+        progress.end();
+        return writeBake(settings, prepared, computeMaps(settings, prepared, toolVersion, progress), toolVersion, progress);
+    }
     prepared.directory->commit();
     progress.end();
 

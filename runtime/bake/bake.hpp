@@ -59,7 +59,8 @@ struct PreparedBake {
     uint32_t size = 0, mips = 0;
     BakePlan plan;
     std::optional<cache::ContentStore> store; // settings.cache's
-    std::shared_future<vulkan::DeviceInfo> device; // findDeviceEarly's, started before the input loads
+    DeviceSearch device; // findDeviceEarly's, started before the input loads, and the remembered device
+    cache::ContentStore::Counts countsBeforeMaps; // the store's, for maps made again (writeBake)
 };
 
 // The settings checked, the output folder claimed (for a Folder), the scene and the environment

@@ -15,12 +15,9 @@ namespace {
 
 using nlohmann::json;
 
-std::string floatBytes(const std::vector<float>& values) {
-    return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+std::string_view floatBytes(const std::vector<float>& values) {
+    return {reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float)};
 }
-
-// A JSON header line, then the floats.
-std::string withHeader(const json& header, const std::vector<float>& values) { return header.dump() + "\n" + floatBytes(values); }
 
 std::optional<std::pair<json, std::vector<float>>> splitPayload(std::string_view payload) {
     const size_t newline = payload.find('\n');
@@ -129,10 +126,13 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
     return keys;
 }
 
-std::string texturePayload(const BakedTexture& texture) {
-    return withHeader({{"name", texture.name}, {"format", int(texture.format)}, {"size", texture.size},
-                       {"faces", texture.faces}, {"mips", texture.mips}},
-                      texture.values);
+// A JSON header line, then the floats.
+FloatPayload texturePayload(const BakedTexture& texture) {
+    return {json({{"name", texture.name}, {"format", int(texture.format)}, {"size", texture.size}, {"faces", texture.faces},
+                  {"mips", texture.mips}})
+                    .dump() +
+                "\n",
+            floatBytes(texture.values)};
 }
 
 // Larger than any size a bake accepts; it keeps a damaged entry's texel count from overflowing.
@@ -163,13 +163,15 @@ std::optional<BakedTexture> textureFromPayload(std::string_view payload) {
     return texture;
 }
 
-std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube) {
+FloatPayload irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube) {
     json coefficients = json::array();
     for (const auto& c : sh.shRadiance) coefficients.push_back({c.r, c.g, c.b});
-    return json({{"sh", coefficients}, {"solid_angle", sh.solidAngle}, {"sh_source", sh.shSourceSize},
-                 {"cube_source", sh.cubeSourceSize}})
-               .dump() +
-           "\n" + texturePayload(cube);
+    auto payload = texturePayload(cube);
+    payload.text = json({{"sh", coefficients}, {"solid_angle", sh.solidAngle}, {"sh_source", sh.shSourceSize},
+                         {"cube_source", sh.cubeSourceSize}})
+                       .dump() +
+                   "\n" + payload.text;
+    return payload;
 }
 
 std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::string_view payload) {

@@ -8,6 +8,7 @@
 #include "kernels/kernel_table.hpp"
 #include "context_options.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,9 +33,16 @@ std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, con
 
 // Cache payloads: the device's values of an output (before any 16-bit rounding), and what goes
 // with them; the preview's is its PNG file. A payload that does not parse is a miss.
-std::string texturePayload(const BakedTexture& texture);
+// A payload of floats in two parts, its text and the floats' bytes (a view of the texture's own
+// values), so that tens of megabytes go to the cache without a copy.
+struct FloatPayload {
+    std::string text;
+    std::string_view floats;
+    std::array<std::string_view, 2> parts() const { return {text, floats}; }
+};
+FloatPayload texturePayload(const BakedTexture& texture);
 std::optional<BakedTexture> textureFromPayload(std::string_view payload);
-std::string irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube);
+FloatPayload irradiancePayload(const IrradianceSh& sh, const BakedTexture& cube);
 std::optional<std::pair<IrradianceSh, BakedTexture>> irradianceFromPayload(std::string_view payload);
 std::string lightsPayload(const std::vector<shading::EnvironmentLight>& lights);
 std::optional<std::vector<shading::EnvironmentLight>> lightsFromPayload(std::string_view payload);

@@ -171,6 +171,12 @@ BakeDirectory::~BakeDirectory() {
     if (!committed_) fs::remove_all(staging_, ignored);
 }
 
+void BakeDirectory::clearStaging() {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(staging_, error)) fs::remove_all(entry.path(), error);
+    if (error) throw BakeError("cannot empty the staging folder " + quoted(staging_) + ": " + error.message());
+}
+
 void BakeDirectory::commit() {
     checkBakeTarget(target_, input_, command_);
     std::error_code error;

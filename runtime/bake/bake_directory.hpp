@@ -27,6 +27,7 @@ public:
     ~BakeDirectory(); // removes the staging folder unless committed
 
     const std::filesystem::path& staging() const { return staging_; }
+    void clearStaging(); // every file written into the staging folder removed, for a bake begun again
     // Exchanges the staging folder with the target atomically (renameat2 RENAME_EXCHANGE;
     // two renames on file systems without it), then removes the earlier bake.
     void commit();

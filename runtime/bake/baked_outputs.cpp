@@ -7,6 +7,7 @@
 #include "cache_error.hpp"
 #include "content_store.hpp"
 #include "device_caches.hpp"
+#include "remembered_facts.hpp"
 #include "float_image.hpp"
 #include "kernels/specular_method.hpp"
 #include "shading_maps.hpp"
@@ -99,14 +100,14 @@ Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& 
     Cached cached;
     if (!store) return cached;
     const auto texture = [&](const std::string& key) {
-        const auto payload = store->get(key);
-        return payload ? textureFromPayload(*payload) : std::nullopt;
+        const auto entry = store->getInPlace(key);
+        return entry ? textureFromPayload(entry->payload()) : std::nullopt;
     };
     if (plan.specular) cached.specular = texture(keys.specular);
     if (writesLobeTable(plan)) cached.lobeTable = texture(keys.lobeTable);
     if (plan.lut && (cached.lut = texture(keys.lut))) cached.lut->format = lutFormatOf(settings); // the values are the device's
-    if (const auto payload = store->get(keys.irradiance))
-        if (auto entry = irradianceFromPayload(*payload)) {
+    if (const auto payload = store->getInPlace(keys.irradiance))
+        if (auto entry = irradianceFromPayload(payload->payload())) {
             cached.sh = entry->first;
             cached.irradiance = std::move(entry->second);
         }
@@ -118,13 +119,18 @@ Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& 
 
 // A cache that cannot be written (a full disk, a read-only folder) costs the next bake its time,
 // not this bake its files: the reason goes to the summary as a warning.
-void store(cache::ContentStore* store, const std::string& key, const std::string& payload, std::vector<std::string>& warnings) {
+void store(cache::ContentStore* store, const std::string& key, std::span<const std::string_view> payload,
+           std::vector<std::string>& warnings) {
     if (!store) return;
     try {
         store->put(key, payload);
     } catch (const cache::CacheError& error) {
         if (warnings.empty()) warnings.push_back(std::string(error.what()) + " (the bake goes on without caching it)");
     }
+}
+
+void store(cache::ContentStore* cache, const std::string& key, std::string_view payload, std::vector<std::string>& warnings) {
+    store(cache, key, std::span(&payload, 1), warnings);
 }
 
 // The device's work, each output taken from the cache where it holds it.
@@ -228,11 +234,11 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
                    BakedOutputs& outputs) {
     if (!cache) return; // the payloads are tens of megabytes at large sizes: none is made for nothing
     auto& warnings = outputs.cacheWarnings;
-    if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular), warnings);
-    if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut), warnings);
-    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(outputs.sh, *outputs.irradiance), warnings);
+    if (!cached.specular && outputs.specular) store(cache, keys.specular, texturePayload(*outputs.specular).parts(), warnings);
+    if (!cached.lut && outputs.lut) store(cache, keys.lut, texturePayload(*outputs.lut).parts(), warnings);
+    if (!cached.irradiance) store(cache, keys.irradiance, irradiancePayload(outputs.sh, *outputs.irradiance).parts(), warnings);
     if (!cached.lights && plan.recipe->lights) store(cache, keys.lights, lightsPayload(outputs.lights), warnings);
-    if (!cached.lobeTable && outputs.lobeTable) store(cache, keys.lobeTable, texturePayload(*outputs.lobeTable), warnings);
+    if (!cached.lobeTable && outputs.lobeTable) store(cache, keys.lobeTable, texturePayload(*outputs.lobeTable).parts(), warnings);
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
 }
 
@@ -272,6 +278,16 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
 
 } // namespace
 
+bool deviceAsRemembered(const BakedOutputs& outputs, DeviceSearch& search, cache::ContentStore& store,
+                        const vulkan::ContextOptions& options) {
+    if (!outputs.deviceUnconfirmed) return true;
+    const auto device = search.found.valid() ? search.found.get() : chosenDevice(options);
+    if (sameIdentity(device, *search.remembered)) return true;
+    rememberDevice(store, options, device);
+    search.remembered.reset();
+    return false;
+}
+
 std::shared_future<vulkan::DeviceInfo> findDeviceEarly(const BakeSettings& settings) {
     // A validated bake keeps no cache (bakeOutputs below).
     if (!settings.cache || settings.context.validation) return {};
@@ -296,28 +312,71 @@ float previewExposure(const IrradianceSh& sh, const std::vector<shading::Environ
     return float(std::clamp(0.4 / luminance, kMinPreviewExposure, kMaxPreviewExposure));
 }
 
-BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+namespace {
+
+// The cache's entries under the keys of the device the bake runs on. With a remembered device
+// they are read while the real one is found, and read again only if it is another.
+struct CacheLookUp {
+    BakeKeys keys;
+    Cached cached;
+    vulkan::DeviceInfo device;
+};
+
+CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore& store,
+                          const DeviceSearch& search) {
+    const auto found = [&] { return search.found.valid() ? search.found.get() : chosenDevice(settings.context); };
+    const auto entries = [&](const vulkan::DeviceInfo& device) {
+        progress.part("keys");
+        auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
+        progress.part("entries");
+        auto cached = lookUp(&store, keys, plan, settings);
+        return CacheLookUp{std::move(keys), std::move(cached), device};
+    };
+    if (!search.remembered) {
+        progress.part("device identity");
+        auto result = entries(found());
+        rememberDevice(store, settings.context, result.device);
+        return result;
+    }
+    const auto countsBefore = store.counts();
+    auto result = entries(*search.remembered);
+    if (search.confirmLater && result.cached.complete(plan)) return result;
+    progress.part("device identity");
+    const auto device = found();
+    if (sameIdentity(device, result.device)) return result;
+    store.restoreCounts(countsBefore);
+    rememberDevice(store, settings.context, device);
+    return entries(device);
+}
+
+} // namespace
+
+BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
-                         std::shared_future<vulkan::DeviceInfo> deviceFound) {
+                         const DeviceSearch& device) {
     // A validated bake is one the layer watched: nothing is taken from the cache, and what the
     // layer may yet fail is not put there.
     if (settings.context.validation) store = nullptr;
     if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
     progress.begin("cache");
-    progress.part("device identity");
-    const auto device = deviceFound.valid() ? deviceFound.get() : chosenDevice(settings.context);
-    progress.part("keys");
-    const auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
-    progress.part("entries");
-    auto cached = lookUp(store, keys, plan, settings);
+    auto [keys, cached, found] = lookUpEntries(settings, input, size, plan, toolVersion, progress, *store, device);
     progress.end();
-    if (!cached.complete(plan)) return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
+    const bool unconfirmed = device.remembered && device.confirmLater && cached.complete(plan);
+    if (!cached.complete(plan)) {
+        if (!input.decoded) {
+            progress.begin("decode");
+            decodeEnvironment(input);
+            progress.end();
+        }
+        return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
+    }
     auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
     const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, plan.schedule, lights);
     const float exposure = previewExposure(*cached.sh, lights);
     BakedOutputs outputs{std::move(cached.specular), std::move(cached.lut),
                          plan.irradiance ? std::move(cached.irradiance) : std::nullopt, std::move(cached.lobeTable), *cached.sh,
-                         std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, device.name, {}, {}, 0};
+                         std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, found.name, {}, {}, 0, 0, unconfirmed};
     return outputs;
 }
 

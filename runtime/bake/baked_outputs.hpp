@@ -35,6 +35,7 @@ struct BakedOutputs {
     kernels::CompiledKernelCache::Counts compiledKernels; // the kernels the cache held, and those compiled
     size_t pipelineCacheBytes = 0;                        // the Vulkan pipeline cache data an earlier bake left
     double kernelCompileMilliseconds = 0;                 // on the threads beside the steps
+    bool deviceUnconfirmed = false; // every output cached under the remembered device's keys (DeviceSearch::confirmLater)
 };
 
 // The device the cache keys name, found on a thread while the input loads (a Vulkan instance
@@ -43,9 +44,27 @@ struct BakedOutputs {
 // already keep both cores busy.)
 std::shared_future<vulkan::DeviceInfo> findDeviceEarly(const BakeSettings& settings);
 
-BakedOutputs bakeOutputs(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+// How a bake finds the device its cache keys name: the search findDeviceEarly started, and the
+// device the last such bake ran on (remembered_facts.hpp), if any.
+struct DeviceSearch {
+    std::shared_future<vulkan::DeviceInfo> found;
+    std::optional<vulkan::DeviceInfo> remembered;
+    // Whether a bake whose outputs were all cached under the remembered device's keys leaves the
+    // comparison with the real device to deviceAsRemembered, before its files are committed: the
+    // write then overlaps the search.
+    bool confirmLater = false;
+};
+
+// Decodes `input` (decodeEnvironment) if the cache lacks an output.
+BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
-                         std::shared_future<vulkan::DeviceInfo> device = {});
+                         const DeviceSearch& device = {});
+
+// Whether the device outputs.deviceUnconfirmed were read for is the one the bake runs on (true
+// for outputs that were not left unconfirmed). When it is not, the real device is remembered, the
+// remembered one forgotten: the maps must be made again.
+bool deviceAsRemembered(const BakedOutputs& outputs, DeviceSearch& search, cache::ContentStore& store,
+                        const vulkan::ContextOptions& options);
 
 // The device a bake with `options` runs on.
 vulkan::DeviceInfo chosenDevice(const vulkan::ContextOptions& options);

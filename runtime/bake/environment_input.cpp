@@ -65,16 +65,20 @@ void checkTexels(EnvironmentInput& input, std::span<float> values, uint32_t chan
     input.negative.mostNegative = std::min(input.negative.mostNegative, negative.mostNegative);
 }
 
-// The input's bytes are read once: hashed for the manifest and decoded from the same copy.
-EnvironmentInput loadPanorama(const fs::path& path, const InputPolicy& policy) {
-    const auto bytes = image_io::readFileBytes(path);
-    EnvironmentInput input{InputKind::Panorama, {{path, cache::sha256Hex(bytes)}}, image_io::decodeFloatImage(bytes, path), 0, {}, 0, {}};
+void decodePanorama(EnvironmentInput& input) {
+    auto& file = input.files.front();
+    input.panorama = image_io::decodeFloatImage(file.bytes, file.path);
     auto& image = input.panorama;
     if (image.width != 2 * image.height)
         throw BakeError(fmt::format("{} is {}x{}; an equirectangular panorama must be twice as wide as it is high",
-                                    quoted(path), image.width, image.height));
-    checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
-    return input;
+                                    quoted(file.path), image.width, image.height));
+    checkTexels(input, image.values, image.channels, image.width, quoted(file.path), input.policy);
+}
+
+InputFile readInputFile(const fs::path& path) {
+    auto bytes = image_io::readFileBytes(path);
+    auto digest = cache::sha256Hex(bytes);
+    return {path, std::move(digest), std::move(bytes)};
 }
 
 fs::path findFace(const fs::path& folder, int face) {
@@ -94,43 +98,38 @@ fs::path findFace(const fs::path& folder, int face) {
                                 kNames[face][1], kNames[face][1]));
 }
 
-EnvironmentInput loadFaces(const fs::path& folder, const InputPolicy& policy) {
-    EnvironmentInput input{InputKind::Faces, {}, {}, 0, {}, 0, {}};
+void decodeFaces(EnvironmentInput& input) {
     for (int face = 0; face < 6; ++face) {
-        const auto path = findFace(folder, face);
-        const auto bytes = image_io::readFileBytes(path);
-        auto image = image_io::decodeFloatImage(bytes, path);
+        const auto& file = input.files[face];
+        auto image = image_io::decodeFloatImage(file.bytes, file.path);
         if (image.width != image.height)
-            throw BakeError(fmt::format("{} is {}x{}; a cube face must be square", quoted(path), image.width, image.height));
+            throw BakeError(fmt::format("{} is {}x{}; a cube face must be square", quoted(file.path), image.width, image.height));
         if (face == 0) input.cubeSize = image.width;
         if (image.width != input.cubeSize)
-            throw BakeError(fmt::format("{} is {}x{}; the +X face is {}x{}", quoted(path), image.width, image.height,
+            throw BakeError(fmt::format("{} is {}x{}; the +X face is {}x{}", quoted(file.path), image.width, image.height,
                                         input.cubeSize, input.cubeSize));
-        checkTexels(input, image.values, image.channels, image.width, quoted(path), policy);
+        checkTexels(input, image.values, image.channels, image.width, quoted(file.path), input.policy);
         const auto rgba = image_io::rgbaValues(image);
         input.cubeTexels.insert(input.cubeTexels.end(), rgba.begin(), rgba.end());
-        input.files.push_back({path, cache::sha256Hex(bytes)});
     }
-    return input;
 }
 
-EnvironmentInput loadCubeFile(const fs::path& path, const InputPolicy& policy) {
-    const auto bytes = image_io::readFileBytes(path);
-    const auto texture = image_io::decodeTextureFile(bytes, path);
+void decodeCubeFile(EnvironmentInput& input) {
+    const auto& path = input.files.front().path;
+    const auto texture = image_io::decodeTextureFile(input.files.front().bytes, path);
     if (texture.faces != 6) throw BakeError(quoted(path) + " is a 2D texture, not a cube");
     if (texture.width != texture.height) throw BakeError(quoted(path) + " has faces that are not square");
     if (image_io::channelCount(texture.format) != 4)
         throw BakeError(fmt::format("{} is {}; an environment cube needs RGBA texels", quoted(path),
                                     image_io::vulkanFormatName(texture.format)));
-    auto values = image_io::textureValues(texture);
-    values.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
-    EnvironmentInput input{InputKind::Cube, {{path, cache::sha256Hex(bytes)}}, {}, texture.width, std::move(values), 0, {}};
+    input.cubeTexels = image_io::textureValues(texture);
+    input.cubeTexels.resize(size_t(6) * texture.width * texture.height * 4); // mip 0; the bake makes its own chain
+    input.cubeSize = texture.width;
     // Face by face, so that a texel is named by its face's own column and row.
     const size_t faceValues = size_t(texture.width) * texture.height * 4;
     for (size_t face = 0; face < 6; ++face)
         checkTexels(input, std::span(input.cubeTexels).subspan(face * faceValues, faceValues), 4, texture.width,
-                    quoted(path) + " face " + std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], policy);
-    return input;
+                    quoted(path) + " face " + std::array{"+X", "-X", "+Y", "-Y", "+Z", "-Z"}[face], input.policy);
 }
 
 } // namespace
@@ -145,12 +144,53 @@ std::string_view inputKindName(InputKind kind) {
     return "?";
 }
 
-EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, const InputPolicy& policy) {
-    if (!path) return {InputKind::BuiltIn, {}, {}, 0, {}, 0, {}};
+EnvironmentInput readEnvironment(const std::optional<fs::path>& path, const InputPolicy& policy) {
+    EnvironmentInput input;
+    input.policy = policy;
+    if (!path) return input;
     std::error_code error;
     if (!fs::exists(*path, error)) throw BakeError("cannot open " + quoted(*path) + ": No such file or directory");
-    if (!isCubeInput(*path)) return loadPanorama(*path, policy);
-    return fs::is_directory(*path, error) ? loadFaces(*path, policy) : loadCubeFile(*path, policy);
+    input.decoded = false;
+    if (!isCubeInput(*path)) {
+        input.kind = InputKind::Panorama;
+        input.files.push_back(readInputFile(*path));
+    } else if (fs::is_directory(*path, error)) {
+        input.kind = InputKind::Faces;
+        for (int face = 0; face < 6; ++face) input.files.push_back(readInputFile(findFace(*path, face)));
+    } else {
+        input.kind = InputKind::Cube;
+        input.files.push_back(readInputFile(*path));
+    }
+    return input;
+}
+
+void decodeEnvironment(EnvironmentInput& input) {
+    if (input.decoded) return;
+    input.sanitizedTexels = 0;
+    input.negative = {};
+    if (input.kind == InputKind::Panorama) decodePanorama(input);
+    else if (input.kind == InputKind::Faces) decodeFaces(input);
+    else decodeCubeFile(input);
+    for (auto& file : input.files) file.bytes = {};
+    input.decoded = true;
+}
+
+EnvironmentInput loadEnvironment(const std::optional<fs::path>& path, const InputPolicy& policy) {
+    auto input = readEnvironment(path, policy);
+    decodeEnvironment(input);
+    return input;
+}
+
+InputFacts factsOf(const EnvironmentInput& input) {
+    return {input.panorama.width, input.panorama.height, input.cubeSize, input.sanitizedTexels, input.negative};
+}
+
+void takeFacts(EnvironmentInput& input, const InputFacts& facts) {
+    input.panorama.width = facts.panoramaWidth;
+    input.panorama.height = facts.panoramaHeight;
+    input.cubeSize = facts.cubeSize;
+    input.sanitizedTexels = facts.sanitizedTexels;
+    input.negative = facts.negative;
 }
 
 bool isCubeInput(const std::filesystem::path& path) {

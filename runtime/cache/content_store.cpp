@@ -1,6 +1,7 @@
 #include "content_store.hpp"
 
 #include "cache_error.hpp"
+#include "mapped_file.hpp"
 #include "sha256.hpp"
 
 #include <algorithm>
@@ -24,37 +25,14 @@ constexpr std::string_view kEarlierMagic = "IBLKCAS1";
 
 std::string keyLine(const std::string& key) { return std::string(kMagic) + key + '\n'; }
 
-std::string headerOf(const std::string& key, std::string_view payload) { return keyLine(key) + sha256Hex(payload) + '\n'; }
-
 size_t headerSize(const std::string& key) { return keyLine(key).size() + 64 + 1; }
 
-// An entry read in two parts: the header (the key line and the payload's hash) and the payload,
-// each straight into its own string, so that a payload of tens of megabytes is neither moved nor
-// copied after it is read.
-struct Entry {
-    std::string header, payload;
-};
-
-std::optional<Entry> readEntry(const fs::path& path, const std::string& key) {
-    std::error_code error;
-    const auto size = fs::file_size(path, error);
-    std::ifstream in(path, std::ios::binary);
-    if (error || !in) return std::nullopt;
-    Entry entry;
-    entry.header.resize(std::min<size_t>(size, headerSize(key)));
-    entry.payload.resize(size - entry.header.size());
-    if (!in.read(entry.header.data(), std::streamsize(entry.header.size())) ||
-        !in.read(entry.payload.data(), std::streamsize(entry.payload.size())))
-        return std::nullopt;
-    return entry;
-}
-
-// Whether `entry` is whole and holds `key`'s value.
-bool holds(const Entry& entry, const std::string& key) {
+// Whether `entry` is whole and holds `key`'s value: its key line, then the payload's hash.
+bool holds(std::string_view entry, const std::string& key) {
     const auto prefix = keyLine(key);
-    const auto& header = entry.header;
-    if (header.size() != headerSize(key) || !header.starts_with(prefix) || header.back() != '\n') return false;
-    return std::string_view(header).substr(prefix.size(), 64) == sha256Hex(entry.payload);
+    const size_t header = headerSize(key);
+    if (entry.size() < header || !entry.starts_with(prefix) || entry[header - 1] != '\n') return false;
+    return entry.substr(prefix.size(), 64) == sha256Hex(entry.substr(header));
 }
 
 // A name no other writer, in this process or another, uses at the same time.
@@ -70,24 +48,39 @@ ContentStore::ContentStore(fs::path folder) : folder_(std::move(folder)) {}
 fs::path ContentStore::pathOf(const std::string& key) const { return folder_ / "objects" / key.substr(0, 2) / key; }
 
 std::optional<std::string> ContentStore::get(const std::string& key) {
-    const auto path = pathOf(key);
-    auto entry = readEntry(path, key);
-    if (!entry) {
-        ++counts_.misses;
-        return std::nullopt;
-    }
-    if (!holds(*entry, key)) {
-        std::error_code ignored;
-        fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
-        if (!entry->header.starts_with(kEarlierMagic)) ++counts_.corrupt;
-        ++counts_.misses;
-        return std::nullopt;
-    }
-    ++counts_.hits;
-    return std::move(entry->payload);
+    const auto entry = read(key, counts_);
+    return entry ? std::optional<std::string>(entry->payload()) : std::nullopt;
 }
 
-void ContentStore::put(const std::string& key, std::string_view payload) {
+std::optional<ContentStore::Payload> ContentStore::getInPlace(const std::string& key) { return read(key, counts_); }
+
+std::optional<std::string> ContentStore::peek(const std::string& key) {
+    Counts uncounted;
+    const auto entry = read(key, uncounted);
+    return entry ? std::optional<std::string>(entry->payload()) : std::nullopt;
+}
+
+std::optional<ContentStore::Payload> ContentStore::read(const std::string& key, Counts& counts) {
+    const auto path = pathOf(key);
+    auto file = MappedFile::open(path);
+    if (!file) {
+        ++counts.misses;
+        return std::nullopt;
+    }
+    if (!holds(file->bytes(), key)) {
+        std::error_code ignored;
+        fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
+        if (!file->bytes().starts_with(kEarlierMagic)) ++counts.corrupt;
+        ++counts.misses;
+        return std::nullopt;
+    }
+    ++counts.hits;
+    return Payload(std::move(*file), headerSize(key));
+}
+
+void ContentStore::put(const std::string& key, std::string_view payload) { put(key, std::span(&payload, 1)); }
+
+void ContentStore::put(const std::string& key, std::span<const std::string_view> payload) {
     const auto path = pathOf(key);
     std::error_code error;
     fs::create_directories(path.parent_path(), error);
@@ -95,8 +88,8 @@ void ContentStore::put(const std::string& key, std::string_view payload) {
     const auto temporary = temporaryBeside(path);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << headerOf(key, payload);
-        out.write(payload.data(), std::streamsize(payload.size()));
+        out << keyLine(key) << sha256Hex(payload) << '\n';
+        for (const auto part : payload) out.write(part.data(), std::streamsize(part.size()));
         if (!out) {
             fs::remove(temporary, error);
             throw CacheError(temporary.string() + ": error: cannot write the cache entry");

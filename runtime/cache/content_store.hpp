@@ -1,8 +1,11 @@
 #pragma once
 
+#include "mapped_file.hpp"
+
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -18,12 +21,27 @@ public:
     explicit ContentStore(std::filesystem::path folder);
 
     std::optional<std::string> get(const std::string& key);
+    // An entry's payload read in place, for payloads of megabytes that are parsed, not kept.
+    class Payload {
+    public:
+        Payload(MappedFile file, size_t offset) : file_(std::move(file)), offset_(offset) {}
+        std::string_view payload() const { return file_.bytes().substr(offset_); }
+
+    private:
+        MappedFile file_;
+        size_t offset_;
+    };
+    std::optional<Payload> getInPlace(const std::string& key);
+    // get, not counted: for the small entries that only save a bake time (bake/remembered_facts.hpp).
+    std::optional<std::string> peek(const std::string& key);
     void put(const std::string& key, std::string_view payload); // throws CacheError when it cannot write
+    void put(const std::string& key, std::span<const std::string_view> payload); // the payload in parts, written in order
 
     struct Counts {
         size_t hits = 0, misses = 0, corrupt = 0;
     };
     const Counts& counts() const { return counts_; }
+    void restoreCounts(const Counts& earlier) { counts_ = earlier; } // after reading entries a bake then set aside
     const std::filesystem::path& folder() const { return folder_; }
 
     // $XDG_CACHE_HOME/iblkit, else ~/.cache/iblkit, else build/cache.
@@ -31,6 +49,7 @@ public:
 
 private:
     std::filesystem::path pathOf(const std::string& key) const;
+    std::optional<Payload> read(const std::string& key, Counts& counts);
 
     std::filesystem::path folder_;
     Counts counts_;

@@ -41,6 +41,12 @@ std::string sha256Hex(std::span<const std::byte> bytes) {
     return digest.hex();
 }
 
+std::string sha256Hex(std::span<const std::string_view> parts) {
+    Sha256 digest;
+    for (const auto part : parts) digest.add(part.data(), part.size());
+    return digest.hex();
+}
+
 std::string sha256OfFile(const std::filesystem::path& path) {
     Sha256 digest; // a chunk at a time: outputs can be larger than memory wants to hold twice
     image_io::readFileInChunks(path, [&](std::span<const std::byte> chunk) { digest.add(chunk.data(), chunk.size()); });

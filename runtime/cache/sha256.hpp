@@ -11,6 +11,7 @@ namespace iblkit::cache {
 // SHA-256 (OpenSSL's) as 64 lower-case hex digits.
 std::string sha256Hex(std::span<const std::byte> bytes);
 std::string sha256Hex(std::string_view text);
+std::string sha256Hex(std::span<const std::string_view> parts); // of the parts one after another
 std::string sha256OfFile(const std::filesystem::path& path); // image_io::ImageError when unreadable or not a regular file
 
 // What tells this build of the running program from every other, taken once: the digest of the

@@ -54,6 +54,9 @@ std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& wri
     entries["KTXwriter"] = writer;
     const auto kvd = keyValueData(entries);
     ByteWriter out;
+    size_t levelBytes = 0;
+    for (const auto& level : texture.levels) levelBytes += level.size() + 16; // and its alignment
+    out.reserve(kLevelIndex + kLevelIndexEntry * texture.mips + dfd.size() + kvd.size() + levelBytes);
     putHeader(out, texture);
     putIndex(out, kLevelIndex + kLevelIndexEntry * texture.mips, dfd.size(), kvd.size());
     out.putZeros(kLevelIndexEntry * texture.mips); // filled in by putLevels

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <thread>
 
@@ -27,6 +28,29 @@ TEST(ContentStore, WhatIsPutIsGotBackAndCounted) {
     EXPECT_EQ(store.counts().hits, 1u);
     EXPECT_EQ(store.counts().misses, 1u);
     EXPECT_TRUE(fs::exists(folder.path() / "objects" / key.substr(0, 2) / key));
+}
+
+// A payload put in parts is the entry of the whole; read in place it is the same bytes; a peek
+// reads without counting (for entries that only save time, not outputs).
+TEST(ContentStore, PartsInPlaceAndPeeksAreTheSameEntry) {
+    iblkit::testing::TempFolder folder;
+    ContentStore store(folder.path());
+    const auto whole = CacheKey().add("what", "whole").hex(), inParts = CacheKey().add("what", "parts").hex();
+    const std::string text = "{\"name\":\"x\"}\n", floats(4096 * 3 + 7, '\x7f');
+    store.put(whole, text + floats);
+    const std::array<std::string_view, 2> parts{text, floats};
+    store.put(inParts, parts);
+    EXPECT_EQ(store.get(inParts), text + floats);
+    const auto inPlace = store.getInPlace(whole);
+    ASSERT_TRUE(inPlace);
+    EXPECT_EQ(inPlace->payload(), text + floats);
+    EXPECT_EQ(store.counts().hits, 2u);
+    EXPECT_EQ(store.peek(whole), text + floats);
+    EXPECT_FALSE(store.peek(CacheKey().add("what", "absent").hex()));
+    EXPECT_EQ(store.counts().hits, 2u) << "peeks are not counted";
+    EXPECT_EQ(store.counts().misses, 0u);
+    EXPECT_FALSE(store.getInPlace(CacheKey().add("what", "absent").hex()));
+    EXPECT_EQ(store.counts().misses, 1u);
 }
 
 TEST(ContentStore, ADamagedEntryIsAMissAndIsRemoved) {
