@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <fstream>
 #include <map>
@@ -73,7 +74,34 @@ void requireWritable(const fs::path& folder, const fs::path& target) {
 
 // Every entry of the folder must be manifest.json, a file the earlier bake listed (still with
 // its hash), or a folder of such files.
-void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, std::string>& files, const std::string& command) {
+std::optional<CheckedFile> statusOf(const fs::path& path) {
+    struct stat status {};
+    if (::stat(path.c_str(), &status) != 0) return std::nullopt;
+    return CheckedFile{uint64_t(status.st_dev), uint64_t(status.st_ino), uint64_t(status.st_size),
+                       int64_t(status.st_ctim.tv_sec) * 1000000000 + status.st_ctim.tv_nsec,
+                       int64_t(status.st_mtim.tv_sec) * 1000000000 + status.st_mtim.tv_nsec};
+}
+
+// Whether `path` still holds the bytes whose SHA-256 is `sha256`: hashed, unless `checked` found
+// it so with the same status (a write changes its change time, which no one can set back). A file
+// changed within the last second is not recorded: a file system's clock may tick coarsely enough
+// for a second write to keep the time of the first.
+bool unchanged(const fs::path& path, const std::string& name, const std::string& sha256, CheckedFiles* checked) {
+    const auto status = statusOf(path);
+    if (checked && status) {
+        const auto found = checked->find(name);
+        if (found != checked->end() && found->second == *status) return true;
+    }
+    if (cache::sha256OfFile(path) != sha256) return false;
+    timespec now{};
+    clock_gettime(CLOCK_REALTIME, &now);
+    if (checked && status && status->changed + 1000000000 < int64_t(now.tv_sec) * 1000000000 + now.tv_nsec)
+        (*checked)[name] = *status;
+    return true;
+}
+
+void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, std::string>& files, const std::string& command,
+                          CheckedFiles* checked) {
     requireWritable(target, target);
     for (auto it = fs::recursive_directory_iterator(target); it != fs::recursive_directory_iterator(); ++it) {
         const auto name = fs::relative(it->path(), target).generic_string();
@@ -89,7 +117,7 @@ void requireOnlyBakeFiles(const fs::path& target, const std::map<std::string, st
         if (listed == files.end())
             throw BakeError("refusing to replace " + quoted(target) + ": it holds " + quoted(fs::path(name)) +
                             ", which no earlier " + command + " wrote (its manifest.json does not list it)");
-        if (cache::sha256OfFile(it->path()) != listed->second)
+        if (!unchanged(it->path(), name, listed->second, checked))
             throw BakeError("refusing to replace " + quoted(target) + ": " + quoted(fs::path(name)) +
                             " changed since the earlier " + command + " wrote it");
     }
@@ -134,7 +162,8 @@ fs::path makeStagingFolder(const fs::path& target) {
 
 } // namespace
 
-void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& input, std::string_view command) {
+void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& input, std::string_view command,
+                     CheckedFiles* checked) {
     const auto target = followed(requested);
     std::error_code error;
     if (input && (isInside(*input, target) || isInside(target, *input)))
@@ -156,12 +185,12 @@ void checkBakeTarget(const fs::path& requested, const std::optional<fs::path>& i
     if (earlier->command != command)
         throw BakeError(quoted(target) + " holds the output of iblkit " + earlier->command + " (its manifest.json says so), " +
                         "not of iblkit " + std::string(command) + "; refusing to replace it");
-    requireOnlyBakeFiles(target, earlier->files, std::string(command));
+    requireOnlyBakeFiles(target, earlier->files, std::string(command), checked);
 }
 
 BakeDirectory::BakeDirectory(fs::path target, const std::optional<fs::path>& input, std::string_view command)
     : target_(followed(std::move(target))), input_(input), command_(command) {
-    checkBakeTarget(target_, input_, command_);
+    checkBakeTarget(target_, input_, command_, &checked_);
     staging_ = makeStagingFolder(target_);
     cleanup_ = std::make_unique<files::RemovedOnSignal>(staging_);
 }
@@ -178,7 +207,7 @@ void BakeDirectory::clearStaging() {
 }
 
 void BakeDirectory::commit() {
-    checkBakeTarget(target_, input_, command_);
+    checkBakeTarget(target_, input_, command_, &checked_);
     std::error_code error;
     if (!fs::exists(target_, error)) {
         fs::rename(staging_, target_, error);

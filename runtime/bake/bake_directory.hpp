@@ -2,7 +2,9 @@
 
 #include "signal_cleanup.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +20,15 @@ namespace iblkit::bake {
 // one the bake could not replace (read-only). The staging folder follows the umask, and is
 // removed when the bake fails or SIGINT, SIGTERM or SIGHUP stop it (files::cleanUpOnSignals).
 // Throws BakeError.
+// An earlier bake's file as its check found it whole: its status (device, inode, size, change
+// and modification times), so that the check before the commit hashes again only what changed.
+struct CheckedFile {
+    uint64_t device = 0, inode = 0, size = 0;
+    int64_t changed = 0, modified = 0; // ns
+    bool operator==(const CheckedFile&) const = default;
+};
+using CheckedFiles = std::map<std::string, CheckedFile>;
+
 class BakeDirectory {
 public:
     BakeDirectory(std::filesystem::path target, const std::optional<std::filesystem::path>& input,
@@ -39,11 +50,14 @@ private:
     std::filesystem::path staging_;
     std::unique_ptr<files::RemovedOnSignal> cleanup_;
     bool committed_ = false;
+    CheckedFiles checked_; // by the first check
 };
 
 // Throws BakeError unless `target` may receive a bake that reads `input` (see BakeDirectory).
+// With `checked`, the earlier bake's files whose status is as `checked` holds are taken as whole
+// without hashing them again, and each file found whole is recorded there.
 void checkBakeTarget(const std::filesystem::path& target, const std::optional<std::filesystem::path>& input,
-                     std::string_view command = "bake");
+                     std::string_view command = "bake", CheckedFiles* checked = nullptr);
 
 // Throws BakeError when the cache folder is the target or inside it: the command replaces the
 // target as a whole, so the cache would be deleted by it or, created there during the work, make

@@ -62,10 +62,23 @@ std::string locate(const BakedTexture& texture, size_t valueIndex) {
                        texel % size);
 }
 
-void writeFile(const fs::path& path, std::span<const std::byte> bytes) {
+void writeFile(const fs::path& path, std::span<const std::span<const std::byte>> pieces) {
     std::ofstream stream(path, std::ios::binary);
-    stream.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    for (const auto bytes : pieces) stream.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     if (!stream.flush()) throw BakeError("cannot write '" + path.string() + "'");
+}
+
+// A file of pieces written one after another: a texture's levels are written from its own bytes,
+// not first copied into one buffer (fresh memory is slow to touch the first time).
+WrittenFile writePieces(const fs::path& folder, const std::string& name, std::span<const std::span<const std::byte>> pieces) {
+    writeFile(folder / name, pieces);
+    std::vector<std::string_view> text;
+    size_t size = 0;
+    for (const auto bytes : pieces) {
+        text.emplace_back(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        size += bytes.size();
+    }
+    return {name, cache::sha256Hex(std::span<const std::string_view>(text)), size};
 }
 
 WrittenFile describe(const fs::path& folder, const std::string& name) {
@@ -118,15 +131,15 @@ std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool s
 }
 
 WrittenFile writeBytes(const fs::path& folder, const std::string& name, std::span<const std::byte> bytes) {
-    writeFile(folder / name, bytes);
-    return {name, cache::sha256Hex(bytes), bytes.size()};
+    return writePieces(folder, name, std::span(&bytes, 1));
 }
 
 std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture& texture, const BakeSettings& settings,
                                       const std::string& writer) {
     const auto gpuTexture =
         image_io::makeTexture(texture.format, texture.size, texture.size, texture.faces, texture.mips, texture.values);
-    std::vector<WrittenFile> written{writeBytes(folder, texture.name + ".ktx2", image_io::encodeKtx2(gpuTexture, writer, texture.keyValues))};
+    std::vector<WrittenFile> written{
+        writePieces(folder, texture.name + ".ktx2", image_io::encodeKtx2Pieces(gpuTexture, writer, texture.keyValues).pieces)};
     const auto engineFile = resolvedProfile(settings).file;
     if (engineFile == profiles::SpecularFile::Ktx1)
         written.push_back(writeBytes(folder, texture.name + ".ktx", image_io::encodeKtx1(gpuTexture)));

@@ -29,8 +29,6 @@ public:
     template <typename T>
     void putAt(size_t offset, T value) { std::memcpy(data_.data() + offset, &value, sizeof(T)); }
     size_t size() const { return data_.size(); }
-    // Fresh memory is slow to touch the first time: a file written in one buffer, not regrown.
-    void reserve(size_t bytes) { data_.reserve(bytes); }
     std::vector<std::byte> take() { return std::move(data_); }
 
 private:

@@ -17,6 +17,15 @@ namespace iblkit::image_io {
 // Throws ImageError when the texture's levels do not match its shape.
 std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& writer,
                                   const std::map<std::string, std::string>& keyValues = {});
+// The same file in pieces, to be written one after another without a copy: `head` (the header,
+// index, DFD and key/value data), then padding and each level's bytes, views of `texture`'s own
+// (which must outlive the pieces).
+struct Ktx2Pieces {
+    std::vector<std::byte> head;
+    std::vector<std::span<const std::byte>> pieces; // head first
+};
+Ktx2Pieces encodeKtx2Pieces(const Texture& texture, const std::string& writer,
+                            const std::map<std::string, std::string>& keyValues = {});
 
 // Reads the four formats of PixelFormat, 2D textures and cubes, not arrays, not 3D, not
 // supercompressed. Anything else, and any file whose index is truncated or inconsistent, is an

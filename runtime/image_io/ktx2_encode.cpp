@@ -5,6 +5,8 @@
 #include "ktx2_format.hpp"
 #include "texture_shape.hpp"
 
+#include <array>
+
 namespace iblkit::image_io {
 namespace {
 
@@ -32,38 +34,55 @@ void putIndex(ByteWriter& out, size_t dfdOffset, size_t dfdLength, size_t kvdLen
     out.put<uint64_t>(0);
 }
 
-void putLevels(ByteWriter& out, const Texture& texture) {
-    for (uint32_t mip = texture.mips; mip-- > 0;) { // the smallest level first
-        out.padTo(levelAlignment(texture.format));
-        const uint64_t offset = out.size(), length = texture.levels[mip].size();
-        out.putBytes(texture.levels[mip]);
-        const size_t entry = kLevelIndex + kLevelIndexEntry * mip;
-        out.putAt(entry, offset);
-        out.putAt(entry + 8, length);
-        out.putAt(entry + 16, length); // uncompressedByteLength
-    }
-}
+// Levels are at most 16-byte aligned (lcm(texel size, 4)).
+constexpr std::array<std::byte, 16> kPadding{};
 
 } // namespace
 
-std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& writer,
-                                  const std::map<std::string, std::string>& keyValues) {
+Ktx2Pieces encodeKtx2Pieces(const Texture& texture, const std::string& writer,
+                            const std::map<std::string, std::string>& keyValues) {
     requireConsistent(texture, "encodeKtx2");
     const auto dfd = dataFormatDescriptor(texture.format);
     auto entries = keyValues;
     entries["KTXwriter"] = writer;
     const auto kvd = keyValueData(entries);
     ByteWriter out;
-    size_t levelBytes = 0;
-    for (const auto& level : texture.levels) levelBytes += level.size() + 16; // and its alignment
-    out.reserve(kLevelIndex + kLevelIndexEntry * texture.mips + dfd.size() + kvd.size() + levelBytes);
     putHeader(out, texture);
     putIndex(out, kLevelIndex + kLevelIndexEntry * texture.mips, dfd.size(), kvd.size());
-    out.putZeros(kLevelIndexEntry * texture.mips); // filled in by putLevels
+    out.putZeros(kLevelIndexEntry * texture.mips); // filled in below
     out.putBytes(dfd);
     out.putBytes(kvd);
-    putLevels(out, texture);
-    return out.take();
+    Ktx2Pieces file;
+    std::vector<std::span<const std::byte>> levels;
+    uint64_t offset = out.size();
+    const size_t alignment = levelAlignment(texture.format);
+    for (uint32_t mip = texture.mips; mip-- > 0;) { // the smallest level first
+        const size_t padding = (alignment - offset % alignment) % alignment;
+        if (padding > 0) levels.push_back(std::span(kPadding).first(padding));
+        offset += padding;
+        const uint64_t length = texture.levels[mip].size();
+        levels.push_back(texture.levels[mip]);
+        const size_t entry = kLevelIndex + kLevelIndexEntry * mip;
+        out.putAt(entry, offset);
+        out.putAt(entry + 8, length);
+        out.putAt(entry + 16, length); // uncompressedByteLength
+        offset += length;
+    }
+    file.head = out.take();
+    file.pieces.push_back(file.head);
+    file.pieces.insert(file.pieces.end(), levels.begin(), levels.end());
+    return file;
+}
+
+std::vector<std::byte> encodeKtx2(const Texture& texture, const std::string& writer,
+                                  const std::map<std::string, std::string>& keyValues) {
+    const auto file = encodeKtx2Pieces(texture, writer, keyValues);
+    std::vector<std::byte> bytes;
+    size_t size = 0;
+    for (const auto piece : file.pieces) size += piece.size();
+    bytes.reserve(size);
+    for (const auto piece : file.pieces) bytes.insert(bytes.end(), piece.begin(), piece.end());
+    return bytes;
 }
 
 } // namespace iblkit::image_io

@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
+#include <thread>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -79,6 +81,40 @@ TEST(BakeDirectory, CommitReplacesAnEarlierBakeWhole) {
     EXPECT_FALSE(fs::exists(target / "stale.dds"));
     EXPECT_NE(iblkit::testing::readFile(target / "manifest.json").find("new"), std::string::npos);
     EXPECT_EQ(entriesIn(scratch.path()), 1u);
+}
+
+// The check before the commit takes a file the first check found whole, and whose status has not
+// changed since, without hashing it again; a file written in between is hashed, and refused.
+TEST(BakeDirectory, AFileEditedDuringTheBakeIsFoundAtTheCommit) {
+    TempFolder scratch;
+    writeEarlierBake(scratch, "kept", {{"specular.ktx2", "bake"}});
+    writeEarlierBake(scratch, "edited", {{"specular.ktx2", "bake"}});
+    // Files changed within the last second are always hashed again: these must be older.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    BakeDirectory kept(scratch.path() / "kept", std::nullopt);
+    scratch.write(fs::relative(kept.staging() / "manifest.json", scratch.path()), R"({"generator": "iblkit", "new": 1})");
+    EXPECT_NO_THROW(kept.commit());
+    BakeDirectory edited(scratch.path() / "edited", std::nullopt);
+    scratch.write("edited/specular.ktx2", "edited by hand during the bake");
+    try {
+        edited.commit();
+        ADD_FAILURE() << "a file edited during the bake was replaced";
+    } catch (const BakeError& error) {
+        EXPECT_NE(std::string(error.what()).find("'specular.ktx2' changed since the earlier bake wrote it"), std::string::npos);
+    }
+    EXPECT_EQ(iblkit::testing::readFile(scratch.path() / "edited/specular.ktx2"), "edited by hand during the bake");
+}
+
+// A bake begun again in the same staging folder (baked_outputs.cpp's device check) leaves none
+// of the first attempt's files.
+TEST(BakeDirectory, ClearingTheStagingFolderLeavesNothingOfTheFirstAttempt) {
+    TempFolder scratch;
+    BakeDirectory directory(scratch.path() / "out", std::nullopt);
+    scratch.write(fs::relative(directory.staging() / "lights.gltf", scratch.path()), "first attempt");
+    scratch.write(fs::relative(directory.staging() / "exr/x.exr", scratch.path()), "first attempt");
+    directory.clearStaging();
+    EXPECT_TRUE(fs::is_directory(directory.staging()));
+    EXPECT_EQ(entriesIn(directory.staging()), 0u);
 }
 
 TEST(BakeDirectory, AFolderThatIsNotABakeIsRefusedAndKept) {

