@@ -1,6 +1,7 @@
 #include "bake_cache.hpp"
 
 #include "cache_key.hpp"
+#include "fresh_memory.hpp"
 #include "sha256.hpp"
 #include "kernels/specular_method.hpp"
 
@@ -25,7 +26,8 @@ std::optional<std::pair<json, std::vector<float>>> splitPayload(std::string_view
     auto header = json::parse(payload.substr(0, newline), nullptr, false);
     const auto bytes = payload.substr(newline + 1);
     if (header.is_discarded() || !header.is_object() || bytes.size() % sizeof(float) != 0) return std::nullopt;
-    std::vector<float> values(bytes.size() / sizeof(float));
+    std::vector<float> values;
+    image_io::resizePopulated(values, bytes.size() / sizeof(float));
     if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size()); // no copy from an empty view's null
     return std::pair{std::move(header), std::move(values)};
 }

@@ -183,13 +183,21 @@ DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernel
     auto taken = lightsOf(context, kernels, plan, cached, sourceCube, progress);
     const uint32_t lightLevel = shading::lightLevelOf(recipe, plan.schedule, taken.lights);
     const auto residualCube = [&]() -> vulkan::Image& { return taken.residual ? *taken.residual : sourceCube(); };
+    // With the lights taken out of every mip, nothing reads the source cube after the lights step:
+    // it goes (at 1024², 128 MiB of the bake's peak).
+    const bool residualOnly = taken.residual && lightLevel == 0;
+    if (residualOnly) source.reset();
+    // The irradiance first: it alone reads the host copy of mip 0, which is gone before the
+    // prefilter's pyramids are made (at 1024², 96 MiB of the bake's peak).
+    auto irradiance = cached.irradiance ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
+                                        : irradianceWithLights(context, kernels, residualCube(), settings, plan, taken, progress);
+    std::vector<float>().swap(taken.restMipZero);
     auto specular = cached.specular ? uploaded(context, *cached.specular, "R32G32B32A32_SFLOAT")
-                                    : prefilteredSpecular(context, kernels, plan, sourceCube(), taken, lightLevel, progress);
+                                    : prefilteredSpecular(context, kernels, plan, residualOnly ? *taken.residual : sourceCube(), taken,
+                                                          lightLevel, progress);
     auto lut = !plan.lut      ? blankBrdfLut(context)
                : cached.lut ? uploaded(context, *cached.lut, "R32G32_SFLOAT")
                             : integrateBrdfLut(context, settings.lutSize, *kernels.lut(), progress);
-    auto irradiance = cached.irradiance ? Irradiance{uploaded(context, *cached.irradiance, "R32G32B32A32_SFLOAT"), *cached.sh}
-                                        : irradianceWithLights(context, kernels, residualCube(), settings, plan, taken, progress);
     return {std::move(specular), std::move(lut), std::move(irradiance), std::move(taken.lights), lightLevel};
 }
 

@@ -118,6 +118,7 @@ vulkan::Image prefilterLevels(const vulkan::VulkanContext& context, vulkan::Imag
         progress.addDeviceTime(prefilter->takeTotals().deviceMilliseconds);
         done += std::pow(double(specular.mipWidth(mip)), 2);
     }
+    if (prefilter) prefilter->releaseSourceData(); // the download and the preview that follow need the room
     progress.end();
     return specular;
 }

@@ -1,5 +1,6 @@
 #include "texture.hpp"
 
+#include "fresh_memory.hpp"
 #include "half_float.hpp"
 #include "image_error.hpp"
 #include "texture_shape.hpp"
@@ -64,7 +65,8 @@ Texture makeTexture(PixelFormat format, uint32_t width, uint32_t height, uint32_
     const bool half = bytesPerChannel(format) == 2;
     const float* next = values.data();
     for (uint32_t mip = 0; mip < mips; ++mip) {
-        std::vector<std::byte> level(texture.faceBytes(mip) * faces);
+        std::vector<std::byte> level;
+        resizePopulated(level, texture.faceBytes(mip) * faces);
         for (size_t at = 0; at < level.size(); at += bytesPerChannel(format), ++next) {
             if (half) storeHalf(level.data() + at, *next);
             else std::memcpy(level.data() + at, next, sizeof(float));

@@ -76,6 +76,13 @@ void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uin
                             {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, uint32_t(weighting_)});
 }
 
+void ConvolutionPrefilter::releasePyramids() {
+    energy_.reset();
+    centroid_.reset();
+    geometry_.reset();
+    pyramidSource_ = nullptr;
+}
+
 DispatchTotals ConvolutionPrefilter::takeTotals() {
     auto totals = cluster_.takeTotals();
     totals += convolve_.takeTotals();

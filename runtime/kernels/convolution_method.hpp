@@ -50,6 +50,7 @@ public:
     void run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness);
     void setWeighting(shading::LobeWeighting weighting) { weighting_ = weighting; }
     DispatchTotals takeTotals();
+    void releasePyramids(); // built again by the next run
 
 private:
     void buildPyramid(vulkan::Image& source);

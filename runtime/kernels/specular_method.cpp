@@ -86,4 +86,8 @@ DispatchTotals SpecularMethod::takeTotals() {
 
 uint32_t SpecularMethod::chunkSamples() const { return sampled_ ? sampled_->chunkSamples() : 0; }
 
+void SpecularMethod::releaseSourceData() {
+    if (convolution_) convolution_->releasePyramids();
+}
+
 } // namespace iblkit::kernels

@@ -48,6 +48,8 @@ public:
     void setWeighting(shading::LobeWeighting weighting);
     DispatchTotals takeTotals();
     uint32_t chunkSamples() const; // 0 for one dispatch per mip
+    // Frees what the runs kept of their source (the convolution's pyramids) once a chain is done.
+    void releaseSourceData();
 
 private:
     std::optional<PrefilterMethod> sampled_;

@@ -51,8 +51,14 @@ struct Region {
     double light = 0, solidAngle = 0; // luminance times solid angle, and solid angle
 };
 
+// Each texel's solid angle, the same on every face: one face's, not six copies (at 1024², 48 MiB).
+struct CubeSolidAngles {
+    std::vector<double> face;
+    double operator[](size_t texel) const { return face[texel % face.size()]; }
+};
+
 std::vector<Region> brightRegions(const std::vector<bool>& bright, const std::vector<double>& luminance,
-                                  const std::vector<double>& solidAngle, uint32_t size) {
+                                  const CubeSolidAngles& solidAngle, uint32_t size) {
     std::vector<bool> seen(bright.size(), false);
     std::vector<Region> regions;
     for (size_t start = 0; start < bright.size(); ++start) {
@@ -106,14 +112,13 @@ void fillFromSurroundings(std::vector<float>& residual, const Region& hole, uint
 
 Extraction extractLights(std::span<const float> faces, uint32_t size, const ExtractionSettings& settings) {
     const size_t texels = size_t(6) * size * size, perFace = size_t(size) * size;
-    std::vector<double> faceSolidAngle(perFace); // the same on every face: computed once, not six times
+    CubeSolidAngles solidAngle{std::vector<double>(perFace)}; // computed once, not six times
     for (size_t texel = 0; texel < perFace; ++texel)
-        faceSolidAngle[texel] = CubeTexelSolidAngle<double>(uint32_t(texel % size), uint32_t(texel / size), size);
-    std::vector<double> luminance(texels), solidAngle(texels);
+        solidAngle.face[texel] = CubeTexelSolidAngle<double>(uint32_t(texel % size), uint32_t(texel / size), size);
+    std::vector<double> luminance(texels);
     double total = 0;
     for (size_t texel = 0; texel < texels; ++texel) {
         luminance[texel] = std::max(luminanceOf(&faces[4 * texel]), 0.0);
-        solidAngle[texel] = faceSolidAngle[texel % perFace];
         total += luminance[texel] * solidAngle[texel];
     }
     Extraction result{{}, std::vector<float>(faces.begin(), faces.end())};
