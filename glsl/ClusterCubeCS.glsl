@@ -4,8 +4,9 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, std140) uniform ClusterParameter
 {
     uint Level;
-} _213;
+} _397;
 
+layout(binding = 3, r32f) uniform writeonly image2D TexelSolidAngle;
 layout(binding = 0, rgba32f) uniform writeonly image2DArray Energy;
 layout(binding = 1, rgba32f) uniform writeonly image2DArray Centroid;
 layout(binding = 2, rgba32f) uniform writeonly image2DArray Geometry;
@@ -19,84 +20,111 @@ void main()
     uvec3 param = gl_GlobalInvocationID;
     do
     {
-        uvec3 _637 = uvec3(0u);
-        uvec3 _638 = uvec3(imageSize(Energy));
-        _637.x = _638.x;
-        _637.y = _638.y;
-        _637.z = _638.z;
-        if (any(greaterThanEqual(gl_GlobalInvocationID, _637)))
+        uvec3 _742 = uvec3(0u);
+        uvec3 _743 = uvec3(imageSize(Energy));
+        _742.x = _743.x;
+        _742.y = _743.y;
+        _742.z = _743.z;
+        if (any(greaterThanEqual(gl_GlobalInvocationID, _742)))
         {
             break;
         }
-        if (_213.Level == 0u)
+        if (_397.Level == 0u)
         {
-            vec3 _694 = texelFetch(Source, ivec4(ivec3(gl_GlobalInvocationID), 0).xyz, 0).xyz;
-            uvec2 _641 = gl_GlobalInvocationID.xy;
-            float _1054 = float(_637.x);
-            float _1055 = 1.0 / _1054;
-            float _1062 = fma(2.0 * float(_641.x), _1055, -1.0);
-            float _1069 = fma(2.0 * float(_641.y), _1055, -1.0);
-            float _1073 = _1062 + (2.0 / _1054);
-            float _1077 = _1069 + (2.0 / _1054);
-            float _1092 = ((atan(_1062 * _1069, sqrt(fma(_1062, _1062, _1069 * _1069) + 1.0)) - atan(_1062 * _1077, sqrt(fma(_1062, _1062, _1077 * _1077) + 1.0))) - atan(_1073 * _1069, sqrt(fma(_1073, _1073, _1069 * _1069) + 1.0))) + atan(_1073 * _1077, sqrt(fma(_1073, _1073, _1077 * _1077) + 1.0));
-            vec2 _645 = (((vec2(gl_GlobalInvocationID.xy) + vec2(0.5)) / vec2(float(_637.x))) - vec2(0.5)) * vec2(2.0, -2.0);
-            vec3 _1220;
-            if (param.z == 0u)
+            uvec3 _747 = gl_GlobalInvocationID;
+            uvec3 _1083 = uvec3(textureSize(Source, 0));
+            vec4 _1411;
+            vec4 _1412;
+            vec4 _1413;
+            _1413 = vec4(0.0);
+            _1412 = vec4(0.0);
+            _1411 = vec4(0.0);
+            vec4 _1167;
+            vec4 _1170;
+            vec4 _1173;
+            for (uint _1410 = 0u; _1410 < 4u; _1413 = _1173, _1412 = _1170, _1411 = _1167, _1410++)
             {
-                _1220 = vec3(1.0, _645.y, -_645.x);
-            }
-            else
-            {
-                vec3 _1221;
-                if (param.z == 1u)
+                uvec2 _1123 = (gl_GlobalInvocationID.xy * uvec2(2u)) + uvec2(_1410 & 1u, _1410 >> uint(1));
+                uvec2 _1087 = _1123;
+                float _1194 = float(_1083.x);
+                float _1195 = 1.0 / _1194;
+                float _1202 = fma(2.0 * float(_1087.x), _1195, -1.0);
+                float _1209 = fma(2.0 * float(_1087.y), _1195, -1.0);
+                float _1213 = _1202 + (2.0 / _1194);
+                float _1217 = _1209 + (2.0 / _1194);
+                float _1232 = ((atan(_1202 * _1209, sqrt(fma(_1202, _1202, _1209 * _1209) + 1.0)) - atan(_1202 * _1217, sqrt(fma(_1202, _1202, _1217 * _1217) + 1.0))) - atan(_1213 * _1209, sqrt(fma(_1213, _1213, _1209 * _1209) + 1.0))) + atan(_1213 * _1217, sqrt(fma(_1213, _1213, _1217 * _1217) + 1.0));
+                if (_747.z == 0u)
                 {
-                    _1221 = vec3(-1.0, _645.y, _645.x);
+                    imageStore(TexelSolidAngle, ivec2(_1123), vec4(_1232));
+                }
+                vec3 _1155 = texelFetch(Source, ivec4(ivec2(_1123), int(_747.z), 0).xyz, 0).xyz;
+                precise vec2 _1304 = vec2(_1123) + vec2(0.5);
+                precise vec2 _1308 = _1304 / vec2(float(_1083.x));
+                vec2 _1295 = (_1308 - vec2(0.5)) * vec2(2.0, -2.0);
+                vec3 _1414;
+                if (_747.z == 0u)
+                {
+                    _1414 = vec3(1.0, _1295.y, -_1295.x);
                 }
                 else
                 {
-                    vec3 _1222;
-                    if (param.z == 2u)
+                    vec3 _1415;
+                    if (_747.z == 1u)
                     {
-                        _1222 = vec3(_645.x, 1.0, -_645.y);
+                        _1415 = vec3(-1.0, _1295.y, _1295.x);
                     }
                     else
                     {
-                        vec3 _1223;
-                        if (param.z == 3u)
+                        vec3 _1416;
+                        if (_747.z == 2u)
                         {
-                            _1223 = vec3(_645.x, -1.0, _645.y);
+                            _1416 = vec3(_1295.x, 1.0, -_1295.y);
                         }
                         else
                         {
-                            vec3 _1224;
-                            if (param.z == 4u)
+                            vec3 _1417;
+                            if (_747.z == 3u)
                             {
-                                _1224 = vec3(_645.x, _645.y, 1.0);
+                                _1417 = vec3(_1295.x, -1.0, _1295.y);
                             }
                             else
                             {
-                                _1224 = vec3(-_645.x, _645.y, -1.0);
+                                vec3 _1418;
+                                if (_747.z == 4u)
+                                {
+                                    _1418 = vec3(_1295.x, _1295.y, 1.0);
+                                }
+                                else
+                                {
+                                    _1418 = vec3(-_1295.x, _1295.y, -1.0);
+                                }
+                                _1417 = _1418;
                             }
-                            _1223 = _1224;
+                            _1416 = _1417;
                         }
-                        _1222 = _1223;
+                        _1415 = _1416;
                     }
-                    _1221 = _1222;
+                    _1414 = _1415;
                 }
-                _1220 = _1221;
+                vec3 _1409 = normalize(_1414);
+                precise float _1315 = max(dot(_1155, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1232;
+                precise vec3 _1318 = _1155 * _1232;
+                precise vec3 _1321 = _1409 * _1315;
+                precise vec3 _1324 = _1409 * _1232;
+                _1167 = _1411 + vec4(_1318, _1232);
+                _1170 = _1412 + vec4(_1321, _1315);
+                _1173 = _1413 + vec4(_1324, _1232);
             }
-            vec3 _1219 = normalize(_1220);
-            float _717 = max(dot(_694, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1092;
-            imageStore(Energy, ivec3(gl_GlobalInvocationID), vec4(_694 * _1092, _1092));
-            imageStore(Centroid, ivec3(gl_GlobalInvocationID), vec4(_1219 * _717, _717));
-            imageStore(Geometry, ivec3(gl_GlobalInvocationID), vec4(_1219 * _1092, _1092));
+            imageStore(Energy, ivec3(gl_GlobalInvocationID), _1411);
+            imageStore(Centroid, ivec3(gl_GlobalInvocationID), _1412);
+            imageStore(Geometry, ivec3(gl_GlobalInvocationID), _1413);
             break;
         }
-        ivec2 _756 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
-        int _760 = int(_213.Level) - 1;
-        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_756, int(param.z), _760).xyz, _760) + texelFetch(EnergyIn, ivec4(_756 + ivec2(1, 0), int(param.z), _760).xyz, _760)) + texelFetch(EnergyIn, ivec4(_756 + ivec2(0, 1), int(param.z), _760).xyz, _760)) + texelFetch(EnergyIn, ivec4(_756 + ivec2(1), int(param.z), _760).xyz, _760));
-        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_756, int(param.z), _760).xyz, _760) + texelFetch(CentroidIn, ivec4(_756 + ivec2(1, 0), int(param.z), _760).xyz, _760)) + texelFetch(CentroidIn, ivec4(_756 + ivec2(0, 1), int(param.z), _760).xyz, _760)) + texelFetch(CentroidIn, ivec4(_756 + ivec2(1), int(param.z), _760).xyz, _760));
-        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_756, int(param.z), _760).xyz, _760) + texelFetch(GeometryIn, ivec4(_756 + ivec2(1, 0), int(param.z), _760).xyz, _760)) + texelFetch(GeometryIn, ivec4(_756 + ivec2(0, 1), int(param.z), _760).xyz, _760)) + texelFetch(GeometryIn, ivec4(_756 + ivec2(1), int(param.z), _760).xyz, _760));
+        ivec2 _798 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
+        int _802 = int(_397.Level) - 1;
+        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_798, int(param.z), _802).xyz, _802) + texelFetch(EnergyIn, ivec4(_798 + ivec2(1, 0), int(param.z), _802).xyz, _802)) + texelFetch(EnergyIn, ivec4(_798 + ivec2(0, 1), int(param.z), _802).xyz, _802)) + texelFetch(EnergyIn, ivec4(_798 + ivec2(1), int(param.z), _802).xyz, _802));
+        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_798, int(param.z), _802).xyz, _802) + texelFetch(CentroidIn, ivec4(_798 + ivec2(1, 0), int(param.z), _802).xyz, _802)) + texelFetch(CentroidIn, ivec4(_798 + ivec2(0, 1), int(param.z), _802).xyz, _802)) + texelFetch(CentroidIn, ivec4(_798 + ivec2(1), int(param.z), _802).xyz, _802));
+        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_798, int(param.z), _802).xyz, _802) + texelFetch(GeometryIn, ivec4(_798 + ivec2(1, 0), int(param.z), _802).xyz, _802)) + texelFetch(GeometryIn, ivec4(_798 + ivec2(0, 1), int(param.z), _802).xyz, _802)) + texelFetch(GeometryIn, ivec4(_798 + ivec2(1), int(param.z), _802).xyz, _802));
         break;
     } while(false);
 }

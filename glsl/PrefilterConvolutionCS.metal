@@ -12,6 +12,61 @@ inline T spvFindUMSB(T x)
     return select(clz(T(0)) - (clz(x) + T(1)), T(-1), x == T(0));
 }
 
+template<typename T>
+[[clang::optnone]] T spvFMul(T l, T r)
+{
+    return fma(l, r, T(0));
+}
+
+template<typename T, int Cols, int Rows>
+[[clang::optnone]] vec<T, Cols> spvFMulVectorMatrix(vec<T, Rows> v, matrix<T, Cols, Rows> m)
+{
+    vec<T, Cols> res = vec<T, Cols>(0);
+    for (uint i = Rows; i > 0; --i)
+    {
+        vec<T, Cols> tmp(0);
+        for (uint j = 0; j < Cols; ++j)
+        {
+            tmp[j] = m[j][i - 1];
+        }
+        res = fma(tmp, vec<T, Cols>(v[i - 1]), res);
+    }
+    return res;
+}
+
+template<typename T, int Cols, int Rows>
+[[clang::optnone]] vec<T, Rows> spvFMulMatrixVector(matrix<T, Cols, Rows> m, vec<T, Cols> v)
+{
+    vec<T, Rows> res = vec<T, Rows>(0);
+    for (uint i = Cols; i > 0; --i)
+    {
+        res = fma(m[i - 1], vec<T, Rows>(v[i - 1]), res);
+    }
+    return res;
+}
+
+template<typename T, int LCols, int LRows, int RCols, int RRows>
+[[clang::optnone]] matrix<T, RCols, LRows> spvFMulMatrixMatrix(matrix<T, LCols, LRows> l, matrix<T, RCols, RRows> r)
+{
+    matrix<T, RCols, LRows> res;
+    for (uint i = 0; i < RCols; i++)
+    {
+        vec<T, RCols> tmp(0);
+        for (uint j = 0; j < LCols; j++)
+        {
+            tmp = fma(vec<T, RCols>(r[i][j]), l[j], tmp);
+        }
+        res[i] = tmp;
+    }
+    return res;
+}
+
+template<typename T>
+[[clang::optnone]] T spvFAdd(T l, T r)
+{
+    return fma(T(1), l, r);
+}
+
 struct PrefilterConvolutionParameter
 {
     float Roughness;
@@ -22,169 +77,236 @@ struct PrefilterConvolutionParameter
     uint Weighting;
 };
 
-constant int _2255 = {};
-
-kernel void main0(constant PrefilterConvolutionParameter& _333 [[buffer(0)]], texture2d_array<float> Energy [[texture(0)]], texture2d_array<float> Centroid [[texture(1)]], texture2d_array<float> Geometry [[texture(2)]], texture2d_array<float, access::write> Prefiltered [[texture(3)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant PrefilterConvolutionParameter& _509 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d<float> TexelSolidAngle [[texture(1)]], texture2d_array<float> Energy [[texture(2)]], texture2d_array<float> Centroid [[texture(3)]], texture2d_array<float> Geometry [[texture(4)]], texture2d_array<float, access::write> Prefiltered [[texture(5)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _954 = uint3(0u);
-        uint3 _955 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
-        _954.x = _955.x;
-        _954.y = _955.y;
-        _954.z = _955.z;
-        if (any(gl_GlobalInvocationID >= _954))
+        uint3 _1100 = uint3(0u);
+        uint3 _1101 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
+        _1100.x = _1101.x;
+        _1100.y = _1101.y;
+        _1100.z = _1101.z;
+        if (any(gl_GlobalInvocationID >= _1100))
         {
             break;
         }
-        float2 _958 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_954.x))) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _2119;
+        float2 _1104 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_1100.x))) - float2(0.5)) * float2(2.0, -2.0);
+        float3 _2652;
         if (param.z == 0u)
         {
-            _2119 = float3(1.0, _958.y, -_958.x);
+            _2652 = float3(1.0, _1104.y, -_1104.x);
         }
         else
         {
-            float3 _2120;
+            float3 _2653;
             if (param.z == 1u)
             {
-                _2120 = float3(-1.0, _958.y, _958.x);
+                _2653 = float3(-1.0, _1104.y, _1104.x);
             }
             else
             {
-                float3 _2121;
+                float3 _2654;
                 if (param.z == 2u)
                 {
-                    _2121 = float3(_958.x, 1.0, -_958.y);
+                    _2654 = float3(_1104.x, 1.0, -_1104.y);
                 }
                 else
                 {
-                    float3 _2122;
+                    float3 _2655;
                     if (param.z == 3u)
                     {
-                        _2122 = float3(_958.x, -1.0, _958.y);
+                        _2655 = float3(_1104.x, -1.0, _1104.y);
                     }
                     else
                     {
-                        float3 _2123;
+                        float3 _2656;
                         if (param.z == 4u)
                         {
-                            _2123 = float3(_958.x, _958.y, 1.0);
+                            _2656 = float3(_1104.x, _1104.y, 1.0);
                         }
                         else
                         {
-                            _2123 = float3(-_958.x, _958.y, -1.0);
+                            _2656 = float3(-_1104.x, _1104.y, -1.0);
                         }
-                        _2122 = _2123;
+                        _2655 = _2656;
                     }
-                    _2121 = _2122;
+                    _2654 = _2655;
                 }
-                _2120 = _2121;
+                _2653 = _2654;
             }
-            _2119 = _2120;
+            _2652 = _2653;
         }
-        float3 _1258 = fast::normalize(_2119);
-        uint3 _962 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
-        uint _1041 = max((_962.x >> _333.TopLevel), 1u);
-        uint _1043 = spvFindUMSB(_962.x);
-        float _2125;
-        float _2126;
-        _2126 = 0.0;
-        _2125 = 0.0;
-        float _1285;
-        float _1302;
-        for (uint _2124 = 0u; _2124 < 6u; _2126 = _1302, _2125 = _1285, _2124++)
+        float3 _1393 = fast::normalize(_2652);
+        uint3 _1108 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
+        uint _1194 = max((_1108.x >> _509.TopLevel), 1u);
+        uint _1196 = spvFindUMSB(_1108.x);
+        float _2658;
+        float _2659;
+        _2659 = 0.0;
+        _2658 = 0.0;
+        float _1424;
+        float _1428;
+        for (uint _2657 = 0u; _2657 < 6u; _2659 = _1428, _2658 = _1424, _2657++)
         {
-            int3 _1275 = int4(0, 0, int(_2124), _2255).xyz;
-            _1285 = _2125 + Centroid.read(uint2(_1275.xy), uint(_1275.z), int(_1043)).w;
-            int3 _1292 = int4(0, 0, int(_2124), _2255).xyz;
-            _1302 = _2126 + Geometry.read(uint2(_1292.xy), uint(_1292.z), int(_1043)).w;
-        }
-        float _1309 = _2125 / _2126;
-        uint _1051 = 3u + (2u * (_333.TopLevel - _333.FineLevel));
-        uint _1066 = (65535u / _1051) - min(((((6u * _1041) * _1041) + (3u * _333.TopLevel)) + 1u), (65535u / _1051));
-        float3 _2128;
-        float _2130;
-        uint2 _2138;
-        _2138 = uint2(0u);
-        _2130 = 0.0;
-        _2128 = float3(0.0);
-        float3 _1157;
-        float _1167;
-        uint _1169;
-        uint2 _1176;
-        uint _2215;
-        uint _2217;
-        for (uint _2127 = 0u, _2133 = _333.TopLevel, _2135 = 0u; _2127 < 6u; _2138 = _1176, _2135 = _1169, _2133 = _2215, _2130 = _1167, _2128 = _1157, _2127 = _2217)
-        {
-            uint _2132;
-            uint2 _2137;
-            _2137 = _2138;
-            _2132 = _2133;
-            uint2 _1098;
-            uint _1100;
-            for (;;)
+            float4 _2803;
+            float4 _2804;
+            do
             {
-                uint _1087 = max((_962.x >> _2132), 1u);
-                float2 _1312 = (((float2(_2137) + float2(0.5)) / float2(float(_1087))) - float2(0.5)) * float2(2.0, -2.0);
-                float3 _2139;
-                if (_2127 == 0u)
+                if (_1196 == 0u)
                 {
-                    _2139 = float3(1.0, _1312.y, -_1312.x);
-                }
-                else
-                {
-                    float3 _2140;
-                    if (_2127 == 1u)
+                    int3 _1459 = int4(0, 0, int(_2657), 0).xyz;
+                    float4 _1482 = TexelSolidAngle.read(uint2(int2(0)), 0);
+                    float _1483 = _1482.x;
+                    float2 _1524 = ((spvFAdd(float2(0.0), float2(0.5)) / float2(float(_1108.x))) - float2(0.5)) * float2(2.0, -2.0);
+                    float3 _2798;
+                    if (_2657 == 0u)
                     {
-                        _2140 = float3(-1.0, _1312.y, _1312.x);
+                        _2798 = float3(1.0, _1524.y, -_1524.x);
                     }
                     else
                     {
-                        float3 _2141;
-                        if (_2127 == 2u)
+                        float3 _2799;
+                        if (_2657 == 1u)
                         {
-                            _2141 = float3(_1312.x, 1.0, -_1312.y);
+                            _2799 = float3(-1.0, _1524.y, _1524.x);
                         }
                         else
                         {
-                            float3 _2142;
-                            if (_2127 == 3u)
+                            float3 _2800;
+                            if (_2657 == 2u)
                             {
-                                _2142 = float3(_1312.x, -1.0, _1312.y);
+                                _2800 = float3(_1524.x, 1.0, -_1524.y);
                             }
                             else
                             {
-                                float3 _2143;
-                                if (_2127 == 4u)
+                                float3 _2801;
+                                if (_2657 == 3u)
                                 {
-                                    _2143 = float3(_1312.x, _1312.y, 1.0);
+                                    _2801 = float3(_1524.x, -1.0, _1524.y);
                                 }
                                 else
                                 {
-                                    _2143 = float3(-_1312.x, _1312.y, -1.0);
+                                    float3 _2802;
+                                    if (_2657 == 4u)
+                                    {
+                                        _2802 = float3(_1524.x, _1524.y, 1.0);
+                                    }
+                                    else
+                                    {
+                                        _2802 = float3(-_1524.x, _1524.y, -1.0);
+                                    }
+                                    _2801 = _2802;
                                 }
-                                _2142 = _2143;
+                                _2800 = _2801;
                             }
-                            _2141 = _2142;
+                            _2799 = _2800;
                         }
-                        _2140 = _2141;
+                        _2798 = _2799;
                     }
-                    _2139 = _2140;
+                    float3 _1638 = fast::normalize(_2798);
+                    float _1544 = spvFMul(fast::max(dot(Source.read(uint2(_1459.xy), uint(_1459.z), 0).xyz, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1483);
+                    _2804 = float4(_1638 * _1483, _1483);
+                    _2803 = float4(_1638 * _1544, _1544);
+                    break;
                 }
-                float _1333 = dot(_1258, fast::normalize(_2139));
-                int4 _1342 = int4(int2(_2137), int(_2127), int(_2132));
-                int4 _1314 = _1342;
-                int3 _1345 = _1342.xyz;
-                int3 _1352 = _1342.xyz;
-                float _1370 = ((_333.Refine * 2.0) / float(_1087)) * pow(fast::max(Centroid.read(uint2(_1345.xy), uint(_1345.z), _1314.w).w / fast::max(Geometry.read(uint2(_1352.xy), uint(_1352.z), _1314.w).w * _1309, 1.0000000031710768509710513471353e-30), 1.0), 0.3333333432674407958984375);
-                if (((_2132 > _333.FineLevel) && (_2135 < _1066)) && ((fma(-2.0, _1333, 2.0) < (_1370 * _1370)) || ((_2132 > _333.HorizonLevel) && (abs(_1333) < (2.0 / float(_1087))))))
+                int4 _1502 = int4(0, 0, int(_2657), int(_1196 - 1u));
+                int4 _1445 = _1502;
+                int3 _1511 = _1502.xyz;
+                int3 _1517 = _1502.xyz;
+                _2804 = Geometry.read(uint2(_1517.xy), uint(_1517.z), _1445.w);
+                _2803 = Centroid.read(uint2(_1511.xy), uint(_1511.z), _1445.w);
+                break;
+            } while(false);
+            float4 _1398 = _2803;
+            float4 _1399 = _2804;
+            _1424 = _2658 + _1398.w;
+            _1428 = _2659 + _1399.w;
+        }
+        float _1435 = _2658 / _2659;
+        uint _1205 = 3u + (2u * (_509.TopLevel - _509.FineLevel));
+        uint _1220 = (65535u / _1205) - min(((((6u * _1194) * _1194) + (3u * _509.TopLevel)) + 1u), (65535u / _1205));
+        float3 _2661;
+        float _2663;
+        uint2 _2671;
+        _2671 = uint2(0u);
+        _2663 = 0.0;
+        _2661 = float3(0.0);
+        float3 _1292;
+        float _1302;
+        uint _1304;
+        uint2 _1311;
+        uint _2792;
+        uint _2794;
+        for (uint _2660 = 0u, _2666 = _509.TopLevel, _2668 = 0u; _2660 < 6u; _2671 = _1311, _2668 = _1304, _2666 = _2792, _2663 = _1302, _2661 = _1292, _2660 = _2794)
+        {
+            uint _2665;
+            uint2 _2670;
+            _2670 = _2671;
+            _2665 = _2666;
+            uint2 _1252;
+            uint _1254;
+            for (;;)
+            {
+                uint _1241 = max((_1108.x >> _2665), 1u);
+                float2 _1641 = (((float2(_2670) + float2(0.5)) / float2(float(_1241))) - float2(0.5)) * float2(2.0, -2.0);
+                float3 _2672;
+                if (_2660 == 0u)
                 {
-                    _1098 = _2137 * uint2(2u);
-                    _1100 = _2132 - 1u;
-                    _2137 = _1098;
-                    _2132 = _1100;
+                    _2672 = float3(1.0, _1641.y, -_1641.x);
+                }
+                else
+                {
+                    float3 _2673;
+                    if (_2660 == 1u)
+                    {
+                        _2673 = float3(-1.0, _1641.y, _1641.x);
+                    }
+                    else
+                    {
+                        float3 _2674;
+                        if (_2660 == 2u)
+                        {
+                            _2674 = float3(_1641.x, 1.0, -_1641.y);
+                        }
+                        else
+                        {
+                            float3 _2675;
+                            if (_2660 == 3u)
+                            {
+                                _2675 = float3(_1641.x, -1.0, _1641.y);
+                            }
+                            else
+                            {
+                                float3 _2676;
+                                if (_2660 == 4u)
+                                {
+                                    _2676 = float3(_1641.x, _1641.y, 1.0);
+                                }
+                                else
+                                {
+                                    _2676 = float3(-_1641.x, _1641.y, -1.0);
+                                }
+                                _2675 = _2676;
+                            }
+                            _2674 = _2675;
+                        }
+                        _2673 = _2674;
+                    }
+                    _2672 = _2673;
+                }
+                float _1662 = dot(_1393, fast::normalize(_2672));
+                int4 _1672 = int4(int2(_2670), int(_2660), int(_2665 - 1u));
+                int4 _1643 = _1672;
+                int3 _1675 = _1672.xyz;
+                int3 _1682 = _1672.xyz;
+                float _1700 = ((_509.Refine * 2.0) / float(_1241)) * pow(fast::max(Centroid.read(uint2(_1675.xy), uint(_1675.z), _1643.w).w / fast::max(Geometry.read(uint2(_1682.xy), uint(_1682.z), _1643.w).w * _1435, 1.0000000031710768509710513471353e-30), 1.0), 0.3333333432674407958984375);
+                if (((_2665 > _509.FineLevel) && (_2668 < _1220)) && ((fma(-2.0, _1662, 2.0) < (_1700 * _1700)) || ((_2665 > _509.HorizonLevel) && (abs(_1662) < (2.0 / float(_1241))))))
+                {
+                    _1252 = _2670 * uint2(2u);
+                    _1254 = _2665 - 1u;
+                    _2670 = _1252;
+                    _2665 = _1254;
                     continue;
                 }
                 else
@@ -192,149 +314,215 @@ kernel void main0(constant PrefilterConvolutionParameter& _333 [[buffer(0)]], te
                     break;
                 }
             }
-            int4 _1111 = int4(int2(_2137), int(_2127), int(_2132));
-            int4 _980 = _1111;
-            int3 _1114 = _1111.xyz;
-            float4 _1117 = Energy.read(uint2(_1114.xy), uint(_1114.z), _980.w);
-            float4 _981 = _1117;
-            int3 _1120 = _1111.xyz;
-            float4 _1123 = Centroid.read(uint2(_1120.xy), uint(_1120.z), _980.w);
-            float4 _982 = _1123;
-            int3 _1126 = _1111.xyz;
-            float4 _1129 = Geometry.read(uint2(_1126.xy), uint(_1126.z), _980.w);
-            float4 _983 = _1129;
-            float3 _1135 = _1129.xyz / float3(_983.w);
-            float3 _1147 = select(_1135, _1123.xyz / float3(_982.w), bool3(_982.w > 0.0));
-            float _1469 = dot(_1147, _1147);
-            float _1472 = dot(_1258, _1147);
-            float _1484 = (0.5 * fast::max(1.0 - _1469, 0.0)) * fast::max(1.0 - ((_1472 * _1472) / _1469), 0.0);
-            float _1512 = sqrt(fast::max(_1484, 0.0));
-            float _1517 = sqrt(fma(0.5, fast::max(_1472, 0.0), 0.5));
-            float _1647 = _333.Roughness * _333.Roughness;
-            float _1659 = fma(_1517 * _1517, fma(_1647, _1647, -1.0), 1.0);
-            float _1523 = (0.5 * _333.Roughness) * _333.Roughness;
-            float _2160;
-            if (_1472 > (3.0 * _1512))
+            float4 _2697;
+            float4 _2698;
+            float4 _2699;
+            do
             {
-                float _1535 = ((_333.Roughness * _333.Roughness) * _333.Roughness) * _333.Roughness;
-                float _1538 = fma(0.5, _1535, 0.5);
-                float _1541 = fma(0.5, _1535, -0.5);
-                float _1546 = fma(_1541, _1472, _1538);
-                float _2161;
-                if (_333.Weighting == 0u)
+                if (_2665 == 0u)
                 {
-                    _2161 = _1472 + ((((0.5 * _1484) * (-_1541)) * fma(4.0, _1538, -((2.0 * _1541) * _1472))) / (_1546 * _1546));
+                    int3 _1812 = int4(int2(_2670), int(_2660), 0).xyz;
+                    float4 _1835 = TexelSolidAngle.read(uint2(int3(int2(_2670), 0).xy), 0);
+                    float _1836 = _1835.x;
+                    float3 _1837 = Source.read(uint2(_1812.xy), uint(_1812.z), 0).xyz;
+                    float2 _1877 = ((spvFAdd(float2(_2670), float2(0.5)) / float2(float(_1108.x))) - float2(0.5)) * float2(2.0, -2.0);
+                    float3 _2692;
+                    if (_2660 == 0u)
+                    {
+                        _2692 = float3(1.0, _1877.y, -_1877.x);
+                    }
+                    else
+                    {
+                        float3 _2693;
+                        if (_2660 == 1u)
+                        {
+                            _2693 = float3(-1.0, _1877.y, _1877.x);
+                        }
+                        else
+                        {
+                            float3 _2694;
+                            if (_2660 == 2u)
+                            {
+                                _2694 = float3(_1877.x, 1.0, -_1877.y);
+                            }
+                            else
+                            {
+                                float3 _2695;
+                                if (_2660 == 3u)
+                                {
+                                    _2695 = float3(_1877.x, -1.0, _1877.y);
+                                }
+                                else
+                                {
+                                    float3 _2696;
+                                    if (_2660 == 4u)
+                                    {
+                                        _2696 = float3(_1877.x, _1877.y, 1.0);
+                                    }
+                                    else
+                                    {
+                                        _2696 = float3(-_1877.x, _1877.y, -1.0);
+                                    }
+                                    _2695 = _2696;
+                                }
+                                _2694 = _2695;
+                            }
+                            _2693 = _2694;
+                        }
+                        _2692 = _2693;
+                    }
+                    float3 _1991 = fast::normalize(_2692);
+                    float _1897 = spvFMul(fast::max(dot(_1837, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1836);
+                    _2699 = float4(_1991 * _1836, _1836);
+                    _2698 = float4(_1991 * _1897, _1897);
+                    _2697 = float4(_1837 * _1836, _1836);
+                    break;
+                }
+                int4 _1855 = int4(int2(_2670), int(_2660), int(_2665 - 1u));
+                int4 _1798 = _1855;
+                int3 _1858 = _1855.xyz;
+                int3 _1864 = _1855.xyz;
+                int3 _1870 = _1855.xyz;
+                _2699 = Geometry.read(uint2(_1870.xy), uint(_1870.z), _1798.w);
+                _2698 = Centroid.read(uint2(_1864.xy), uint(_1864.z), _1798.w);
+                _2697 = Energy.read(uint2(_1858.xy), uint(_1858.z), _1798.w);
+                break;
+            } while(false);
+            float4 _1127 = _2697;
+            float4 _1128 = _2698;
+            float4 _1129 = _2699;
+            float3 _1270 = _2699.xyz / float3(_1129.w);
+            float3 _1282 = select(_1270, _2698.xyz / float3(_1128.w), bool3(_1128.w > 0.0));
+            float _2002 = dot(_1282, _1282);
+            float _2005 = dot(_1393, _1282);
+            float _2017 = (0.5 * fast::max(1.0 - _2002, 0.0)) * fast::max(1.0 - ((_2005 * _2005) / _2002), 0.0);
+            float _2045 = sqrt(fast::max(_2017, 0.0));
+            float _2050 = sqrt(fma(0.5, fast::max(_2005, 0.0), 0.5));
+            float _2180 = _509.Roughness * _509.Roughness;
+            float _2192 = fma(_2050 * _2050, fma(_2180, _2180, -1.0), 1.0);
+            float _2056 = (0.5 * _509.Roughness) * _509.Roughness;
+            float _2701;
+            if (_2005 > (3.0 * _2045))
+            {
+                float _2068 = ((_509.Roughness * _509.Roughness) * _509.Roughness) * _509.Roughness;
+                float _2071 = fma(0.5, _2068, 0.5);
+                float _2074 = fma(0.5, _2068, -0.5);
+                float _2079 = fma(_2074, _2005, _2071);
+                float _2702;
+                if (_509.Weighting == 0u)
+                {
+                    _2702 = _2005 + ((((0.5 * _2017) * (-_2074)) * fma(4.0, _2071, -((2.0 * _2074) * _2005))) / (_2079 * _2079));
                 }
                 else
                 {
-                    float _1576 = fma(fma(_333.Roughness * (-0.5), _333.Roughness, 1.0), _1472, _1523);
-                    float _1579 = _1472 / _1576;
-                    _2161 = fma(0.5 * _1484, (((((_1579 * 6.0) * _1541) * _1541) / (_1546 * _1546)) - (((4.0 * _1541) * (_1523 / (_1576 * _1576))) / _1546)) + ((((-2.0) * fma(_333.Roughness * (-0.5), _333.Roughness, 1.0)) * _1523) / ((_1576 * _1576) * _1576)), _1579);
+                    float _2109 = fma(fma(_509.Roughness * (-0.5), _509.Roughness, 1.0), _2005, _2056);
+                    float _2112 = _2005 / _2109;
+                    _2702 = fma(0.5 * _2017, (((((_2112 * 6.0) * _2074) * _2074) / (_2079 * _2079)) - (((4.0 * _2074) * (_2056 / (_2109 * _2109))) / _2079)) + ((((-2.0) * fma(_509.Roughness * (-0.5), _509.Roughness, 1.0)) * _2056) / ((_2109 * _2109) * _2109)), _2112);
                 }
-                _2160 = _2161;
+                _2701 = _2702;
             }
             else
             {
-                float _2159;
-                if ((_1512 > 0.0) && (abs(_1472) <= (5.0 * _1512)))
+                float _2700;
+                if ((_2045 > 0.0) && (abs(_2005) <= (5.0 * _2045)))
                 {
-                    float _1686 = _1472 / _1512;
-                    float _1710 = abs(_1686);
-                    float _1714 = fma(_1710, 0.23164187371730804443359375, 1.0);
-                    float _1715 = 1.0 / _1714;
-                    float _1731 = (0.5 / _1714) * fma(_1715, fma(_1715, fma(_1715, (-1.45315206050872802734375) + (1.0614054203033447265625 / _1714), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
-                    float _1736 = exp((_1710 * (-0.707106769084930419921875)) * (_1710 * 0.707106769084930419921875));
-                    _2159 = fma(_1512, exp(((-0.5) * _1686) * _1686) * 0.398942291736602783203125, _1472 * ((_1686 >= 0.0) ? fma(-_1731, _1736, 1.0) : (_1731 * _1736)));
+                    float _2219 = _2005 / _2045;
+                    float _2243 = abs(_2219);
+                    float _2247 = fma(_2243, 0.23164187371730804443359375, 1.0);
+                    float _2248 = 1.0 / _2247;
+                    float _2264 = (0.5 / _2247) * fma(_2248, fma(_2248, fma(_2248, (-1.45315206050872802734375) + (1.0614054203033447265625 / _2247), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
+                    float _2269 = exp((_2243 * (-0.707106769084930419921875)) * (_2243 * 0.707106769084930419921875));
+                    _2700 = fma(_2045, exp(((-0.5) * _2219) * _2219) * 0.398942291736602783203125, _2005 * ((_2219 >= 0.0) ? fma(-_2264, _2269, 1.0) : (_2264 * _2269)));
                 }
                 else
                 {
-                    _2159 = fast::max(_1472, 0.0);
+                    _2700 = fast::max(_2005, 0.0);
                 }
-                float _1625 = fast::max(_2159, 0.0);
-                _2160 = (_333.Weighting == 0u) ? _1625 : (_1625 / fma(fma(_333.Roughness * (-0.5), _333.Roughness, 1.0), _1625, _1523));
+                float _2158 = fast::max(_2700, 0.0);
+                _2701 = (_509.Weighting == 0u) ? _2158 : (_2158 / fma(fma(_509.Roughness * (-0.5), _509.Roughness, 1.0), _2158, _2056));
             }
-            _1157 = _2128 + (_1117.xyz * (((_1647 * _1647) / ((3.1415927410125732421875 * _1659) * _1659)) * _2160));
-            float _1764 = dot(_1135, _1135);
-            float _1767 = dot(_1258, _1135);
-            float _1779 = (0.5 * fast::max(1.0 - _1764, 0.0)) * fast::max(1.0 - ((_1767 * _1767) / _1764), 0.0);
-            float _1807 = sqrt(fast::max(_1779, 0.0));
-            float _1812 = sqrt(fma(0.5, fast::max(_1767, 0.0), 0.5));
-            float _1942 = _333.Roughness * _333.Roughness;
-            float _1954 = fma(_1812 * _1812, fma(_1942, _1942, -1.0), 1.0);
-            float _1818 = (0.5 * _333.Roughness) * _333.Roughness;
-            float _2172;
-            if (_1767 > (3.0 * _1807))
+            _1292 = _2661 + (_2697.xyz * (((_2180 * _2180) / ((3.1415927410125732421875 * _2192) * _2192)) * _2701));
+            float _2297 = dot(_1270, _1270);
+            float _2300 = dot(_1393, _1270);
+            float _2312 = (0.5 * fast::max(1.0 - _2297, 0.0)) * fast::max(1.0 - ((_2300 * _2300) / _2297), 0.0);
+            float _2340 = sqrt(fast::max(_2312, 0.0));
+            float _2345 = sqrt(fma(0.5, fast::max(_2300, 0.0), 0.5));
+            float _2475 = _509.Roughness * _509.Roughness;
+            float _2487 = fma(_2345 * _2345, fma(_2475, _2475, -1.0), 1.0);
+            float _2351 = (0.5 * _509.Roughness) * _509.Roughness;
+            float _2719;
+            if (_2300 > (3.0 * _2340))
             {
-                float _1830 = ((_333.Roughness * _333.Roughness) * _333.Roughness) * _333.Roughness;
-                float _1833 = fma(0.5, _1830, 0.5);
-                float _1836 = fma(0.5, _1830, -0.5);
-                float _1841 = fma(_1836, _1767, _1833);
-                float _2173;
-                if (_333.Weighting == 0u)
+                float _2363 = ((_509.Roughness * _509.Roughness) * _509.Roughness) * _509.Roughness;
+                float _2366 = fma(0.5, _2363, 0.5);
+                float _2369 = fma(0.5, _2363, -0.5);
+                float _2374 = fma(_2369, _2300, _2366);
+                float _2720;
+                if (_509.Weighting == 0u)
                 {
-                    _2173 = _1767 + ((((0.5 * _1779) * (-_1836)) * fma(4.0, _1833, -((2.0 * _1836) * _1767))) / (_1841 * _1841));
+                    _2720 = _2300 + ((((0.5 * _2312) * (-_2369)) * fma(4.0, _2366, -((2.0 * _2369) * _2300))) / (_2374 * _2374));
                 }
                 else
                 {
-                    float _1871 = fma(fma(_333.Roughness * (-0.5), _333.Roughness, 1.0), _1767, _1818);
-                    float _1874 = _1767 / _1871;
-                    _2173 = fma(0.5 * _1779, (((((_1874 * 6.0) * _1836) * _1836) / (_1841 * _1841)) - (((4.0 * _1836) * (_1818 / (_1871 * _1871))) / _1841)) + ((((-2.0) * fma(_333.Roughness * (-0.5), _333.Roughness, 1.0)) * _1818) / ((_1871 * _1871) * _1871)), _1874);
+                    float _2404 = fma(fma(_509.Roughness * (-0.5), _509.Roughness, 1.0), _2300, _2351);
+                    float _2407 = _2300 / _2404;
+                    _2720 = fma(0.5 * _2312, (((((_2407 * 6.0) * _2369) * _2369) / (_2374 * _2374)) - (((4.0 * _2369) * (_2351 / (_2404 * _2404))) / _2374)) + ((((-2.0) * fma(_509.Roughness * (-0.5), _509.Roughness, 1.0)) * _2351) / ((_2404 * _2404) * _2404)), _2407);
                 }
-                _2172 = _2173;
+                _2719 = _2720;
             }
             else
             {
-                float _2171;
-                if ((_1807 > 0.0) && (abs(_1767) <= (5.0 * _1807)))
+                float _2718;
+                if ((_2340 > 0.0) && (abs(_2300) <= (5.0 * _2340)))
                 {
-                    float _1981 = _1767 / _1807;
-                    float _2005 = abs(_1981);
-                    float _2009 = fma(_2005, 0.23164187371730804443359375, 1.0);
-                    float _2010 = 1.0 / _2009;
-                    float _2026 = (0.5 / _2009) * fma(_2010, fma(_2010, fma(_2010, (-1.45315206050872802734375) + (1.0614054203033447265625 / _2009), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
-                    float _2031 = exp((_2005 * (-0.707106769084930419921875)) * (_2005 * 0.707106769084930419921875));
-                    _2171 = fma(_1807, exp(((-0.5) * _1981) * _1981) * 0.398942291736602783203125, _1767 * ((_1981 >= 0.0) ? fma(-_2026, _2031, 1.0) : (_2026 * _2031)));
+                    float _2514 = _2300 / _2340;
+                    float _2538 = abs(_2514);
+                    float _2542 = fma(_2538, 0.23164187371730804443359375, 1.0);
+                    float _2543 = 1.0 / _2542;
+                    float _2559 = (0.5 / _2542) * fma(_2543, fma(_2543, fma(_2543, (-1.45315206050872802734375) + (1.0614054203033447265625 / _2542), 1.42141377925872802734375), -0.284496724605560302734375), 0.254829585552215576171875);
+                    float _2564 = exp((_2538 * (-0.707106769084930419921875)) * (_2538 * 0.707106769084930419921875));
+                    _2718 = fma(_2340, exp(((-0.5) * _2514) * _2514) * 0.398942291736602783203125, _2300 * ((_2514 >= 0.0) ? fma(-_2559, _2564, 1.0) : (_2559 * _2564)));
                 }
                 else
                 {
-                    _2171 = fast::max(_1767, 0.0);
+                    _2718 = fast::max(_2300, 0.0);
                 }
-                float _1920 = fast::max(_2171, 0.0);
-                _2172 = (_333.Weighting == 0u) ? _1920 : (_1920 / fma(fma(_333.Roughness * (-0.5), _333.Roughness, 1.0), _1920, _1818));
+                float _2453 = fast::max(_2718, 0.0);
+                _2719 = (_509.Weighting == 0u) ? _2453 : (_2453 / fma(fma(_509.Roughness * (-0.5), _509.Roughness, 1.0), _2453, _2351));
             }
-            _1167 = fma(_981.w, ((_1942 * _1942) / ((3.1415927410125732421875 * _1954) * _1954)) * _2172, _2130);
-            _1169 = _2135 + 1u;
-            uint2 _993 = _2137;
-            _2215 = _2132;
-            uint _2070;
-            for (; (_2215 < _333.TopLevel) && (((_993.x & _993.y) & 1u) != 0u); _2215 = _2070)
+            _1302 = fma(_1127.w, ((_2475 * _2475) / ((3.1415927410125732421875 * _2487) * _2487)) * _2719, _2663);
+            _1304 = _2668 + 1u;
+            uint2 _1146 = _2670;
+            _2792 = _2665;
+            uint _2603;
+            for (; (_2792 < _509.TopLevel) && (((_1146.x & _1146.y) & 1u) != 0u); _2792 = _2603)
             {
-                _993 = _993 >> uint2(int2(1));
-                _2070 = _2215 + 1u;
+                _1146 = _1146 >> uint2(int2(1));
+                _2603 = _2792 + 1u;
             }
-            if (_2215 == _333.TopLevel)
+            if (_2792 == _509.TopLevel)
             {
-                uint _2082 = _993.y;
-                uint _2087 = _993.x;
-                uint _2089 = ((((_2127 * _1041) + _2082) * _1041) + _2087) + 1u;
-                _993 = uint2(_2089 % _1041, (_2089 / _1041) % _1041);
-                _2217 = _2089 / (_1041 * _1041);
+                uint _2615 = _1146.y;
+                uint _2620 = _1146.x;
+                uint _2622 = ((((_2660 * _1194) + _2615) * _1194) + _2620) + 1u;
+                _1146 = uint2(_2622 % _1194, (_2622 / _1194) % _1194);
+                _2794 = _2622 / (_1194 * _1194);
             }
             else
             {
-                if ((_993.x & 1u) == 0u)
+                if ((_1146.x & 1u) == 0u)
                 {
-                    _993.x++;
+                    _1146.x++;
                 }
                 else
                 {
-                    _993 += uint2(4294967295u, 1u);
+                    _1146 += uint2(4294967295u, 1u);
                 }
-                _2217 = _2127;
+                _2794 = _2660;
             }
-            _1176 = _993;
+            _1311 = _1146;
         }
-        Prefiltered.write(float4(_2128 / float3(_2130), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Prefiltered.write(float4(_2661 / float3(_2663), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

@@ -1,24 +1,46 @@
 // One level of the energy pyramid that PrefilterConvolutionCS sums: for every texel of the
 // level, the radiance integrated over its exact solid angle, where that light sits (the
 // luminance-weighted sum of its directions) and where the texel itself sits (the solid-angle
-// weighted sum of its directions). A texel of level n covers 2^n x 2^n texels of the
-// source's mip 0, so each level is exact, not a mean of means weighted alike.
-#include "Common/Cube.fxh"
+// weighted sum of its directions). Level n of the pyramid (its mip n) covers 2^(n+1) x 2^(n+1)
+// texels of the source's mip 0, so each level is exact, not a mean of means weighted alike;
+// single texels are no level of it (Common/EnergyPyramid.fxh).
+#include "Common/EnergyPyramid.fxh"
 
 cbuffer ClusterParameter : register( b0 )
 {
-    uint Level; // 0: from Source's mip 0; above it: the 2x2 blocks of level Level - 1
+    uint Level; // 0: from 2x2 texels of Source's mip 0; above it: the 2x2 blocks of level Level - 1
 };
 
 Texture2DArray<float4> Source;     // the radiance cube
-Texture2DArray<float4> EnergyIn;   // Energy and Centroid themselves, read at level Level - 1
+Texture2DArray<float4> EnergyIn;   // Energy, Centroid and Geometry themselves, read at level Level - 1
 Texture2DArray<float4> CentroidIn;
 Texture2DArray<float4> GeometryIn;
 RWTexture2DArray<float4> Energy;   // rgb: radiance times solid angle; a: solid angle
 RWTexture2DArray<float4> Centroid; // xyz: the sum of w times direction; a: the sum of w; w = max(luminance, 0) times solid angle
 RWTexture2DArray<float4> Geometry; // xyz: the sum of solid angle times direction; a: solid angle
+RWTexture2D<float> TexelSolidAngle; // each source texel's (the same on every face), written with level 0
 
-static const float3 LUMINANCE = float3( 0.2126f, 0.7152f, 0.0722f );
+// The four texels of the source below pyramid texel DTid, summed in the order of the levels above.
+void SourceQuad( uint3 DTid, out float4 energy, out float4 weighted, out float4 geometry )
+{
+    uint sourceSize = 0, sourceHeight = 0, layers = 0;
+    Source.GetDimensions( sourceSize, sourceHeight, layers );
+    energy = 0.f;
+    weighted = 0.f;
+    geometry = 0.f;
+    for ( uint corner = 0; corner < 4; ++corner )
+    {
+        uint2 xy = DTid.xy * 2u + uint2( corner & 1u, corner >> 1 );
+        float solidAngle = CubeTexelSolidAngle( xy, sourceSize );
+        if ( DTid.z == 0 )
+            TexelSolidAngle[xy] = solidAngle;
+        float4 e, w, g;
+        SourceTexelBlock( Source.Load( int4( xy, DTid.z, 0 ) ).rgb, DTid.z, xy, sourceSize, solidAngle, e, w, g );
+        energy += e;
+        weighted += w;
+        geometry += g;
+    }
+}
 
 [numthreads(8, 8, 1)]
 void main( uint3 DTid : SV_DispatchThreadId )
@@ -30,13 +52,11 @@ void main( uint3 DTid : SV_DispatchThreadId )
 
     if ( Level == 0 )
     {
-        float3 radiance = Source.Load( int4( DTid, 0 ) ).rgb;
-        float solidAngle = CubeTexelSolidAngle( DTid.xy, dims.x );
-        float3 direction = CubeFaceDirection( DTid.z, ( float2( DTid.xy ) + 0.5f ) / float( dims.x ) );
-        float weight = max( dot( radiance, LUMINANCE ), 0.f ) * solidAngle;
-        Energy[DTid] = float4( radiance * solidAngle, solidAngle );
-        Centroid[DTid] = float4( direction * weight, weight );
-        Geometry[DTid] = float4( direction * solidAngle, solidAngle );
+        float4 energy, weighted, geometry;
+        SourceQuad( DTid, energy, weighted, geometry );
+        Energy[DTid] = energy;
+        Centroid[DTid] = weighted;
+        Geometry[DTid] = geometry;
         return;
     }
 

@@ -3,7 +3,9 @@
 //   P(N) = sum_t L_t W_t / sum_t W_t,  W_t = D(N.H) N.L over texel t,  N.H = sqrt((1 + N.L) / 2),
 // or, with Weighting 1, W_t = D(N.H) G1(N.L), Smith-Schlick's G1 with k = roughness² / 2: the
 // split sum's own reflected lobe at N = V (runtime/shading/lobe_table.hpp).
-// Texels are visited as a tree over ClusterCubeCS's energy pyramid (Barnes & Hut's): a block
+// Texels are visited as a tree over ClusterCubeCS's energy pyramid (Barnes & Hut's), whose level
+// 0 is the source's texels themselves (made where the walk reaches one) and level n > 0 the
+// pyramid's mip n - 1: a block
 // far from N (its centre more than Refine of its own widths away) is one term, its light taken
 // by its mean direction and spread (the luminance-weighted first moment of its directions), so
 // a sun keeps its exact position at every level; the lobe is averaged over that spread to
@@ -14,7 +16,7 @@
 // the same blocks by their solid angles, so a constant environment is returned exactly. No
 // sampling noise; the error falls with Refine, as the number of terms per texel grows.
 #include "Common/PBR.fxh"
-#include "Common/Cube.fxh"
+#include "Common/EnergyPyramid.fxh"
 
 cbuffer PrefilterConvolutionParameter : register( b0 )
 {
@@ -26,10 +28,28 @@ cbuffer PrefilterConvolutionParameter : register( b0 )
     uint Weighting;    // 0: N.L, as the documents; 1: G1(N.L)
 };
 
+Texture2DArray<float4> Source; // the radiance cube the pyramid was made from
+Texture2D<float> TexelSolidAngle; // ClusterCubeCS's table of its texels' solid angles
 Texture2DArray<float4> Energy;
 Texture2DArray<float4> Centroid;
 Texture2DArray<float4> Geometry;
 RWTexture2DArray<float4> Prefiltered;
+
+// Block (face, xy) of tree level `level` of a source of baseSize² texels per face: a source
+// texel at level 0, the pyramid's mip level - 1 above it.
+void LoadBlock( uint face, uint2 xy, uint level, uint baseSize, out float4 energy, out float4 weighted, out float4 geometry )
+{
+    if ( level == 0u )
+    {
+        SourceTexelBlock( Source.Load( int4( xy, face, 0 ) ).rgb, face, xy, baseSize, TexelSolidAngle.Load( int3( xy, 0 ) ),
+                          energy, weighted, geometry );
+        return;
+    }
+    int4 at = int4( xy, face, level - 1u );
+    energy = Energy.Load( at );
+    weighted = Centroid.Load( at );
+    geometry = Geometry.Load( at );
+}
 
 // The integrand of PrefilterSpecular's ratio at N = V, per unit solid angle of L, is the pdf
 // of L (D N.H / (4 V.H), with N.H = V.H) times the N.L weight: D(sqrt((1 + N.L) / 2)) N.L,
@@ -141,13 +161,15 @@ void NextBlock( inout uint face, inout uint2 xy, inout uint level, uint topSize 
 
 // How many times the environment's mean luminance a block's light is: the mean over the whole
 // sphere is the pyramid's top, six texels of one direction each.
-float MeanLuminance( uint topLevel )
+float MeanLuminance( uint topLevel, uint baseSize )
 {
     float light = 0.f, solidAngle = 0.f;
     for ( uint face = 0; face < 6; ++face )
     {
-        light += Centroid.Load( int4( 0, 0, face, topLevel ) ).w;
-        solidAngle += Geometry.Load( int4( 0, 0, face, topLevel ) ).w;
+        float4 energy, weighted, geometry;
+        LoadBlock( face, uint2( 0, 0 ), topLevel, baseSize, energy, weighted, geometry );
+        light += weighted.w;
+        solidAngle += geometry.w;
     }
     return light / solidAngle;
 }
@@ -165,7 +187,7 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
 {
     float3 centre = CubeFaceDirection( face, ( float2( xy ) + 0.5f ) / float( size ) );
     float cosine = dot( normal, centre );
-    int4 at = int4( xy, face, level );
+    int4 at = int4( xy, face, level - 1u ); // level > 0: a block of the pyramid
     float brightness = Centroid.Load( at ).w / max( Geometry.Load( at ).w * meanLuminance, 1e-30f );
     float reach = Refine * 2.f / float( size ) * pow( max( brightness, 1.f ), 1.f / 3.f );
     bool nearN = 2.f - 2.f * cosine < reach * reach;
@@ -194,12 +216,12 @@ void main( uint3 DTid : SV_DispatchThreadId )
     float3 normal = CubeFaceDirection( DTid.z, ( float2( DTid.xy ) + 0.5f ) / float( dims.x ) );
 
     uint baseSize = 0, baseHeight = 0, layers = 0;
-    Energy.GetDimensions( baseSize, baseHeight, layers );
+    Source.GetDimensions( baseSize, baseHeight, layers );
 
     float3 radiance = 0.f;
     float weight = 0.f;
     uint topSize = max( baseSize >> TopLevel, 1u );
-    float meanLuminance = MeanLuminance( firstbithigh( baseSize ) ); // the 1x1 level of the full chain
+    float meanLuminance = MeanLuminance( firstbithigh( baseSize ), baseSize ); // the 1x1 level of the full chain
     uint termCost = 3u + 2u * ( TopLevel - FineLevel );
     uint openLimit = LOOP_BUDGET / termCost - min( 6u * topSize * topSize + 3u * TopLevel + 1u, LOOP_BUDGET / termCost );
     uint terms = 0;
@@ -213,10 +235,8 @@ void main( uint3 DTid : SV_DispatchThreadId )
             xy *= 2;
             level -= 1;
         }
-        int4 at = int4( xy, face, level );
-        float4 energy = Energy.Load( at );
-        float4 weighted = Centroid.Load( at );
-        float4 geometry = Geometry.Load( at );
+        float4 energy, weighted, geometry;
+        LoadBlock( face, xy, level, baseSize, energy, weighted, geometry );
         // The first moments of the block's directions, by solid angle and by light: their
         // length falls short of 1 by their spread.
         float3 extent = geometry.xyz / geometry.w;

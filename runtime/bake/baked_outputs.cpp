@@ -32,8 +32,8 @@ std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e
 void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
                  uint32_t size) {
     const double panorama = double(input.panorama.width) * input.panorama.height * 16;
-    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain.
-    const double pyramids = kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(size) : 0;
+    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain of half the size.
+    const double pyramids = kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(size / 2) : 0;
     const double device = 2 * cubeChainBytes(size) + pyramids + panorama + double(settings.lutSize) * settings.lutSize * 8 +
                           6.0 * settings.irradianceSize * settings.irradianceSize * 16;
     // The host holds each image as floats while it downloads and encodes it.

@@ -10,9 +10,11 @@
 
 namespace iblkit::consistency {
 
-// ClusterCubeCS's three pyramids, each a cube with every level down to 1x1.
+// ClusterCubeCS's three pyramids, each a cube half the source's size with every level down to 1x1,
+// and the source they were made from (the walk reads its texels as the tree's level 0).
 struct PyramidTexels {
-    MippedCube energy, centroid, geometry;
+    MippedCube source, energy, centroid, geometry;
+    std::vector<float> texelSolidAngle; // one face's, row by row
 };
 
 // The convolution method's two kernels, on Vulkan through their kernels::run* steps and on

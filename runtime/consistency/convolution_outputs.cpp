@@ -3,6 +3,7 @@
 #include "cluster_convolution.hpp"
 #include "convolution_bake.hpp"
 #include "kernels/convolution_method.hpp"
+#include "kernels/kernel_steps.hpp"
 #include "suite_run.hpp"
 
 #include <fmt/core.h>
@@ -10,11 +11,12 @@
 namespace iblkit::consistency {
 namespace {
 
+// The reference's levels from 1 up: its level 0, single texels, is no level of the kernel's pyramid.
 template <typename T>
 std::vector<T> levelTexels(const std::vector<std::vector<glm::vec<4, T>>>& levels) {
     std::vector<T> values;
-    for (const auto& level : levels)
-        for (const auto& texel : level) values.insert(values.end(), {texel.x, texel.y, texel.z, texel.w});
+    for (size_t level = 1; level < levels.size(); ++level)
+        for (const auto& texel : levels[level]) values.insert(values.end(), {texel.x, texel.y, texel.z, texel.w});
     return values;
 }
 
@@ -28,11 +30,14 @@ std::vector<T> flattened(const reference::ClusterPyramid<T>& pyramid) {
     return values;
 }
 
-PyramidTexels pyramidTexels(const reference::ClusterPyramid<float>& pyramid) {
+PyramidTexels pyramidTexels(const MippedCube& source, const reference::ClusterPyramid<float>& pyramid) {
     const auto cube = [&](const auto& levels) {
-        return MippedCube{pyramid.size, uint32_t(levels.size()), levelTexels(levels)};
+        if (levels.size() < 2) return MippedCube{1, 1, std::vector<float>(6 * 4, 0.f)}; // a 1x1 source's: never read
+        return MippedCube{kernels::pyramidSize(pyramid.size), uint32_t(levels.size() - 1), levelTexels(levels)};
     };
-    return {cube(pyramid.energy), cube(pyramid.centroid), cube(pyramid.geometry)};
+    std::vector<float> solidAngle; // the reference's level 0 holds each texel's, face by face
+    for (size_t texel = 0; texel < size_t(pyramid.size) * pyramid.size; ++texel) solidAngle.push_back(pyramid.energy[0][texel].w);
+    return {source, cube(pyramid.energy), cube(pyramid.centroid), cube(pyramid.geometry), solidAngle};
 }
 
 void addClusterOutput(SuiteRun& run, const MippedCube& cube, const reference::ClusterPyramid<float>& inFloat,
@@ -44,7 +49,7 @@ void addClusterOutput(SuiteRun& run, const MippedCube& cube, const reference::Cl
 }
 
 // The lobe weighted by N·L (0), as the documents' prefilter, or by G1 (1), as the kit's recipe.
-void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>& inFloat,
+void addConvolutionOutput(SuiteRun& run, const MippedCube& cube, const reference::ClusterPyramid<float>& inFloat,
                           const reference::ClusterPyramid<double>& inDouble, uint32_t weighting) {
     const auto& options = run.options;
     const float roughness = options.convolutionRoughness;
@@ -53,7 +58,7 @@ void addConvolutionOutput(SuiteRun& run, const reference::ClusterPyramid<float>&
     const kernels::PrefilterConvolutionParameters parameters{roughness,  plan.topLevel,      plan.fineLevel,
                                                              plan.refine, plan.horizonLevel, weighting};
     const uint32_t outSize = options.convolutionOutSize;
-    const auto pyramid = pyramidTexels(inFloat);
+    const auto pyramid = pyramidTexels(cube, inFloat);
     const auto output = fmt::format("{}² at roughness {} from the {}² pyramid, {} terms per texel{}", outSize, roughness,
                                     inFloat.size, options.convolutionBudget, weighting ? ", lobe weighted by G1" : "");
     addOutput(run, {"PrefilterConvolutionCS", output, convolutionBounds()},
@@ -73,8 +78,8 @@ void addConvolutionOutputs(SuiteRun& run) {
     const auto inFloat = reference::clusterPyramid<float>(cube.texels, cube.size);
     const auto inDouble = reference::clusterPyramid<double>(cube.texels, cube.size);
     addClusterOutput(run, cube, inFloat, inDouble);
-    addConvolutionOutput(run, inFloat, inDouble, 0);
-    addConvolutionOutput(run, inFloat, inDouble, 1);
+    addConvolutionOutput(run, cube, inFloat, inDouble, 0);
+    addConvolutionOutput(run, cube, inFloat, inDouble, 1);
 }
 
 } // namespace iblkit::consistency

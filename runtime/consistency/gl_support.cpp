@@ -36,6 +36,12 @@ void bindLayeredImage(const opengl::EglContext& context, const OpenGlForm& form,
     context.check("binding an image");
 }
 
+void bindImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+               const opengl::GlObject& texture, GLenum internalFormat) {
+    context.gl().BindImageTexture(slotOf(form, resource), texture.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, internalFormat);
+    context.check("binding an image");
+}
+
 opengl::GlObject program(const opengl::EglContext& context, const OpenGlForm& form) {
     return opengl::createComputeProgram(context, form.glsl.source, form.name + " (GLSL)");
 }

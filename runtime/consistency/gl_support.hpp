@@ -36,6 +36,10 @@ void bindTexture(const opengl::EglContext& context, const OpenGlForm& form, cons
 void bindLayeredImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
                       const opengl::GlObject& texture, uint32_t level);
 
+// Binds level 0 of a 2D texture of `internalFormat` to the image unit of `resource`, for writing.
+void bindImage(const opengl::EglContext& context, const OpenGlForm& form, const std::string& resource,
+               const opengl::GlObject& texture, GLenum internalFormat);
+
 // A GL_TEXTURE_CUBE_MAP or GL_TEXTURE_2D_ARRAY of 6 layers with `mips` levels, filled with
 // `texels` (every level: face, row, column, RGBA) or left empty when there are none.
 opengl::GlObject cubeTexture(const opengl::EglContext& context, GLenum target, uint32_t size, uint32_t mips,

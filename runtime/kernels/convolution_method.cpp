@@ -59,27 +59,33 @@ ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context,
 }
 
 void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
-    const uint32_t size = source.desc().width;
+    const uint32_t size = pyramidSize(source.desc().width);
     const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
     const uint32_t mips = vulkan::fullMipCount(size, size);
     energy_.emplace(context_, vulkan::ImageDesc{"Energy", &rgba32, size, size, 6, mips, true, true});
     centroid_.emplace(context_, vulkan::ImageDesc{"Centroid", &rgba32, size, size, 6, mips, true, true});
     geometry_.emplace(context_, vulkan::ImageDesc{"Geometry", &rgba32, size, size, 6, mips, true, true});
-    runClusterPyramid(cluster_, source, {*energy_, *centroid_, *geometry_});
+    const uint32_t sourceSize = source.desc().width;
+    texelSolidAngle_.emplace(context_, vulkan::ImageDesc{"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), sourceSize,
+                                                         sourceSize, 1, 1, false, true});
+    runClusterPyramid(cluster_, source, pyramid());
     pyramidSource_ = &source;
 }
 
 void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness) {
     const auto plan = planConvolution(source.desc().width, roughness, budget_);
     if (pyramidSource_ != &source) buildPyramid(source);
-    runPrefilterConvolution(convolve_, {*energy_, *centroid_, *geometry_}, target, mip,
+    runPrefilterConvolution(convolve_, source, pyramid(), target, mip,
                             {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, uint32_t(weighting_)});
 }
+
+EnergyPyramid ConvolutionPrefilter::pyramid() { return {*energy_, *centroid_, *geometry_, *texelSolidAngle_}; }
 
 void ConvolutionPrefilter::releasePyramids() {
     energy_.reset();
     centroid_.reset();
     geometry_.reset();
+    texelSolidAngle_.reset();
     pyramidSource_ = nullptr;
 }
 

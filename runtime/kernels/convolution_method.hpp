@@ -1,6 +1,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "kernels/kernel_steps.hpp"
 
 #include "image.hpp"
 #include "shading/lobe_table.hpp"
@@ -54,13 +55,14 @@ public:
 
 private:
     void buildPyramid(vulkan::Image& source);
+    EnergyPyramid pyramid();
 
     const vulkan::VulkanContext& context_;
     uint32_t budget_;
     shading::LobeWeighting weighting_ = shading::LobeWeighting::NdotL;
     Kernel cluster_, convolve_;
     const vulkan::Image* pyramidSource_ = nullptr;
-    std::optional<vulkan::Image> energy_, centroid_, geometry_;
+    std::optional<vulkan::Image> energy_, centroid_, geometry_, texelSolidAngle_;
 };
 
 } // namespace iblkit::kernels

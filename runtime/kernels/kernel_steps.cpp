@@ -2,6 +2,10 @@
 
 #include "buffer.hpp"
 
+#include <algorithm>
+#include <numbers>
+#include <vector>
+
 namespace iblkit::kernels {
 
 void runSkyCube(Kernel& kernel, vulkan::Image& cube, const SupersampleParameters& parameters) {
@@ -91,6 +95,11 @@ void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyrami
     kernel.program().bind("EnergyIn", pyramid.energy);
     kernel.program().bind("CentroidIn", pyramid.centroid);
     kernel.program().bind("GeometryIn", pyramid.geometry);
+    if (source.desc().width < 2) { // no block of more than one texel: the one texel is a face
+        pyramid.texelSolidAngle.upload(kernel.context(), std::vector<float>{float(4 * std::numbers::pi / 6)});
+        return;
+    }
+    kernel.program().bind("TexelSolidAngle", pyramid.texelSolidAngle, 0);
     for (uint32_t level = 0; level < pyramid.energy.desc().mips; ++level) {
         kernel.program().bind("Energy", pyramid.energy, level);
         kernel.program().bind("Centroid", pyramid.centroid, level);
@@ -101,8 +110,12 @@ void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyrami
     }
 }
 
-void runPrefilterConvolution(Kernel& kernel, const EnergyPyramid& pyramid, vulkan::Image& target, uint32_t mip,
-                             const PrefilterConvolutionParameters& parameters) {
+uint32_t pyramidSize(uint32_t sourceSize) { return std::max(sourceSize / 2, 1u); }
+
+void runPrefilterConvolution(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid, vulkan::Image& target,
+                             uint32_t mip, const PrefilterConvolutionParameters& parameters) {
+    kernel.program().bind("Source", source);
+    kernel.program().bind("TexelSolidAngle", pyramid.texelSolidAngle);
     kernel.program().bind("Energy", pyramid.energy);
     kernel.program().bind("Centroid", pyramid.centroid);
     kernel.program().bind("Geometry", pyramid.geometry);

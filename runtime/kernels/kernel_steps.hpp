@@ -72,20 +72,26 @@ void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sa
 void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                       uint32_t mip, const PrefilterRingParameters& ring);
 
-// ClusterCubeCS's three pyramids: RGBA32F cubes the size of the source, with a full mip chain,
-// sampled and storage.
+// ClusterCubeCS's three pyramids: RGBA32F cubes half the size of the source (their mip n holds
+// blocks of 2^(n+1) source texels across), with a full mip chain, sampled and storage; a 1x1
+// source, which has no block of more than one texel, gets 1x1 pyramids that nothing reads. With
+// them, the solid angle of each of the source's texels (R32F, one face's: the same on all six).
 struct EnergyPyramid {
     vulkan::Image& energy;
     vulkan::Image& centroid;
     vulkan::Image& geometry;
+    vulkan::Image& texelSolidAngle;
 };
 
 // ClusterCube: every level of `pyramid` from mip 0 of `source`, each level from the one below.
 void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid);
 
-// PrefilterConvolution: one mip of `target` from the pyramid runClusterPyramid made.
-void runPrefilterConvolution(Kernel& kernel, const EnergyPyramid& pyramid, vulkan::Image& target, uint32_t mip,
-                             const PrefilterConvolutionParameters& parameters);
+// The pyramids' face size for a source of `sourceSize`.
+uint32_t pyramidSize(uint32_t sourceSize);
+
+// PrefilterConvolution: one mip of `target` from `source` and the pyramid runClusterPyramid made of it.
+void runPrefilterConvolution(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid, vulkan::Image& target,
+                             uint32_t mip, const PrefilterConvolutionParameters& parameters);
 
 // BrdfLut: the whole LUT image.
 void runBrdfLut(Kernel& kernel, vulkan::Image& lut);
