@@ -49,8 +49,8 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
     prepared.device.found = findDeviceEarly(settings);
     prepared.device.confirmLater = destination == BakeDestination::Folder;
     progress.begin("load");
-    if (settings.cache) prepared.store.emplace(*settings.cache);
-    auto* store = settings.cache && !settings.context.validation ? &*prepared.store : nullptr;
+    if (usesCache(settings)) prepared.store.emplace(*settings.cache);
+    auto* store = prepared.store ? &*prepared.store : nullptr;
     prepared.input = readEnvironment(settings.environment, {settings.sanitize, settings.strict});
     if (store) prepared.device.remembered = rememberedDevice(*store, settings.context);
     if (const auto facts = store ? rememberedFacts(*store, prepared.input) : std::nullopt) {
@@ -80,7 +80,7 @@ ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, c
     maps.shadingRecord = shadingJson(facts).dump();
     if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = maps.shadingRecord;
     arrangeCubes(settings, outputs);
-    if (store && !settings.context.validation) maps.cache = store->counts();
+    if (store) maps.cache = store->counts();
     return maps;
 }
 

@@ -58,7 +58,7 @@ struct PreparedBake {
     EnvironmentInput input;
     uint32_t size = 0, mips = 0;
     BakePlan plan;
-    std::optional<cache::ContentStore> store; // settings.cache's
+    std::optional<cache::ContentStore> store; // settings.cache's, where the bake uses it (usesCache)
     DeviceSearch device; // findDeviceEarly's, started before the input loads, and the remembered device
     cache::ContentStore::Counts countsBeforeMaps; // the store's, for maps made again (writeBake)
 };

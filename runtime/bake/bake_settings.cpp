@@ -128,6 +128,8 @@ uint32_t resolvedMips(const BakeSettings& settings, uint32_t size) {
     return fullChain - static_cast<uint32_t>(std::bit_width(floor)) + 1;
 }
 
+bool usesCache(const BakeSettings& settings) { return settings.cache && !settings.context.validation; }
+
 void validateSettings(const BakeSettings& settings) {
     if (settings.size) {
         requireRange("--size", *settings.size, 1, kMaxCubeSize);

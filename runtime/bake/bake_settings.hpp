@@ -86,6 +86,11 @@ const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings);
 const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings);
 // Throws BakeError naming the first setting out of range (the output folder is prepareBake's).
 void validateSettings(const BakeSettings& settings);
+
+// Whether the bake reads and writes its cache: it names one and is not validated (a validated
+// bake is one the layer watched: nothing is taken from the cache, and what the layer may yet
+// fail is not put there).
+bool usesCache(const BakeSettings& settings);
 // The roughness of every mip of a `mips` chain from a `size` face, by the recipe's schedule.
 std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_t mips, uint32_t size);
 // roughness = mip / (mips - 1), as in the documents; mip 0 is the mirror (roughness 0).

@@ -133,6 +133,11 @@ void store(cache::ContentStore* cache, const std::string& key, std::string_view 
     store(cache, key, std::span(&payload, 1), warnings);
 }
 
+// The device the search found, or, where none was started, the one `options` chooses.
+vulkan::DeviceInfo foundDevice(const DeviceSearch& search, const vulkan::ContextOptions& options) {
+    return search.found.valid() ? search.found.get() : chosenDevice(options);
+}
+
 // The device's work, each output taken from the cache where it holds it.
 struct DeviceResults {
     vulkan::Image specular, lut;
@@ -289,7 +294,7 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
 bool deviceAsRemembered(const BakedOutputs& outputs, DeviceSearch& search, cache::ContentStore& store,
                         const vulkan::ContextOptions& options) {
     if (!outputs.deviceUnconfirmed) return true;
-    const auto device = search.found.valid() ? search.found.get() : chosenDevice(options);
+    const auto device = foundDevice(search, options);
     if (sameIdentity(device, *search.remembered)) return true;
     rememberDevice(store, options, device);
     search.remembered.reset();
@@ -297,8 +302,7 @@ bool deviceAsRemembered(const BakedOutputs& outputs, DeviceSearch& search, cache
 }
 
 std::shared_future<vulkan::DeviceInfo> findDeviceEarly(const BakeSettings& settings) {
-    // A validated bake keeps no cache (bakeOutputs below).
-    if (!settings.cache || settings.context.validation) return {};
+    if (!usesCache(settings)) return {};
     return std::async(std::launch::async, [options = settings.context] { return chosenDevice(options); }).share();
 }
 
@@ -333,7 +337,7 @@ struct CacheLookUp {
 CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                           const std::string& toolVersion, BakeProgress& progress, cache::ContentStore& store,
                           const DeviceSearch& search) {
-    const auto found = [&] { return search.found.valid() ? search.found.get() : chosenDevice(settings.context); };
+    const auto found = [&] { return foundDevice(search, settings.context); };
     const auto entries = [&](const vulkan::DeviceInfo& device) {
         progress.part("keys");
         auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
@@ -363,9 +367,7 @@ CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& 
 BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
                          const DeviceSearch& device) {
-    // A validated bake is one the layer watched: nothing is taken from the cache, and what the
-    // layer may yet fail is not put there.
-    if (settings.context.validation) store = nullptr;
+    if (!usesCache(settings)) store = nullptr;
     if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
     progress.begin("cache");
     auto [keys, cached, found] = lookUpEntries(settings, input, size, plan, toolVersion, progress, *store, device);
