@@ -1,4 +1,4 @@
-# The installed kit: the iblkit program, the shared library iblkit (the public API of include/iblkit
+# The installed kit: the iblkit program (its launcher in bin/, itself in libexec/iblkit/), the shared library iblkit (the public API of include/iblkit
 # over the static libraries of runtime/), the CMake package (iblkit::iblkit, iblkit::cli,
 # iblkit_add_shader), a pkg-config file, the kit's HLSL, and `cpack -G DEB`.
 include(GNUInstallDirs)
@@ -23,6 +23,8 @@ set_target_properties(iblkit PROPERTIES EXPORT_NAME cli)
 install(TARGETS iblkit iblkit_shared EXPORT iblkitTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The program the launcher `iblkit` starts, where tools/launcher/ looks for it.
+install(TARGETS iblkit_program RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/iblkit)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/iblkit DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/hlsl/ DESTINATION ${IBLKIT_INSTALL_HLSLDIR})
 install(EXPORT iblkitTargets NAMESPACE iblkit:: DESTINATION ${IBLKIT_INSTALL_CMAKEDIR})
