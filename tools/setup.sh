@@ -12,7 +12,7 @@ readonly IBLKIT_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers libglm-dev
   libegl-dev libgl-dev libgl1-mesa-dri
-  libopenexr-dev libstb-dev libssl-dev libtinygltf-dev
+  libopenexr-dev libpng-dev libstb-dev libssl-dev libtinygltf-dev
   ${IBLKIT_EXTRA_PACKAGES[@]+"${IBLKIT_EXTRA_PACKAGES[@]}"}
 )
 
