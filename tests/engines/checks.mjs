@@ -16,7 +16,7 @@ export const white = [1, 1, 1];
 const roughnesses = [0, 0.25, 0.5, 0.75, 1];
 
 // One page a session, its scratch folder served at /scratch/: loading Babylon.js's modules takes
-// 9 s, each time a page opens.
+// 5 s, each time a page opens.
 export class EngineSession {
   constructor(pageName, profile, { cell = 64 } = {}) {
     Object.assign(this, { pageName, profile, cell });
