@@ -1,6 +1,7 @@
-# The installed kit: the iblkit program (its launcher in bin/, itself in libexec/iblkit/), the shared library iblkit (the public API of include/iblkit
-# over the static libraries of runtime/), the CMake package (iblkit::iblkit, iblkit::cli,
-# iblkit_add_shader), a pkg-config file, the kit's HLSL, and `cpack -G DEB`.
+# The installed kit: the iblkit program (its launcher in bin/, the program itself in libexec/iblkit/),
+# the shared library iblkit (the public API of include/iblkit over the static libraries of runtime/),
+# the CMake package (iblkit::iblkit, iblkit::cli, iblkit_add_shader), a pkg-config file, the kit's
+# HLSL, and `cpack -G DEB`.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -23,7 +24,7 @@ set_target_properties(iblkit PROPERTIES EXPORT_NAME cli)
 install(TARGETS iblkit iblkit_shared EXPORT iblkitTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# The program the launcher `iblkit` starts, where tools/launcher/ looks for it.
+# The program the launcher `iblkit` starts, where tools/iblkit/launcher.c looks for it.
 install(TARGETS iblkit_program RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/iblkit)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/iblkit DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/hlsl/ DESTINATION ${IBLKIT_INSTALL_HLSLDIR})

@@ -2,7 +2,7 @@
  * pages on, and is otherwise invisible (the same arguments, output and exit status).
  *
  * Fresh memory costs a page fault per 4 KiB page touched, about 3.5 ms per MB in a virtual
- * machine: a tenth of the default bake, more of a large one. A Debian kernel gives huge pages (one
+ * machine: huge pages made the default bake 0.94x as long, a 1024² bake 0.79x. A Debian kernel gives huge pages (one
  * fault per 2 MiB) only to memory marked for them, and glibc marks its heap only when its tunable
  * glibc.malloc.hugetlb says so as the program starts: too early for the program to set it itself,
  * and starting itself again costs a C++ program's start-up (15 ms), this program's 2-3 ms. A
@@ -19,14 +19,14 @@
 /* Beside this program (the build tree), then where it is installed (PROGRAM_FROM_BINDIR). */
 static const char* const candidates[] = {"iblkit-program", PROGRAM_FROM_BINDIR};
 
-static int addTunable(void) {
+static void addTunable(void) {
     const char* tunables = getenv("GLIBC_TUNABLES");
-    if (tunables && strstr(tunables, TUNABLE)) return 0;
+    if (tunables && strstr(tunables, TUNABLE)) return;
     char value[4096];
     int length = tunables && *tunables ? snprintf(value, sizeof value, "%s:" TUNABLE "=1", tunables)
                                        : snprintf(value, sizeof value, TUNABLE "=1");
-    if (length < 0 || (size_t)length >= sizeof value) return 0; /* left as it is: small pages */
-    return setenv("GLIBC_TUNABLES", value, 1);
+    if (length < 0 || (size_t)length >= sizeof value) return; /* left as it is: small pages */
+    setenv("GLIBC_TUNABLES", value, 1); /* where it fails, small pages too */
 }
 
 int main(int argc, char** argv) {
