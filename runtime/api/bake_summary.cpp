@@ -35,7 +35,8 @@ nlohmann::json summaryJson(const bake::BakeSummary& summary) {
             {"most_negative", summary.negativeTexels.mostNegative},
             {"cache", {{"hits", summary.cache.hits}, {"misses", summary.cache.misses}, {"damaged", summary.cache.corrupt}}},
             {"compiled_kernels", {{"hits", kernels.hits}, {"misses", kernels.misses}, {"stale", kernels.stale},
-                                  {"damaged", kernels.damaged}, {"compile_ms", summary.kernelCompileMilliseconds}}},
+                                  {"damaged", kernels.damaged}, {"built_in", summary.kernelCompiles.builtIn},
+                                  {"compiled", summary.kernelCompiles.compiled}, {"compile_ms", summary.kernelCompileMilliseconds}}},
             {"pipeline_cache_bytes", summary.pipelineCacheBytes},
             {"scene_notes", summary.sceneNotes}};
 }

@@ -132,7 +132,7 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
     const auto& input = prepared.input;
     return {settings.outputDir, outputs.device, progress.steps(), wall, files, outputs.sh.shRadiance, clamps,
             input.sanitizedTexels, input.negative, maps.cache, outputs.cacheWarnings, outputs.compiledKernels,
-            outputs.pipelineCacheBytes, prepared.plan.notes, outputs.kernelCompileMilliseconds};
+            outputs.pipelineCacheBytes, prepared.plan.notes, outputs.kernelCompileMilliseconds, outputs.kernelCompiles};
 }
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {

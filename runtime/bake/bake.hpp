@@ -6,6 +6,7 @@
 #include "baked_outputs.hpp"
 #include "content_store.hpp"
 #include "environment_input.hpp"
+#include "kernels/built_in_kernels.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
 #include "bake_progress.hpp"
 #include "bake_settings.hpp"
@@ -38,6 +39,7 @@ struct BakeSummary {
     size_t pipelineCacheBytes = 0;        // Vulkan pipeline cache data an earlier bake on this device left
     std::vector<std::string> sceneNotes;  // what the scene's reader assumed or clamped (BakePlan::notes)
     double kernelCompileMilliseconds = 0; // on the two threads beside the steps (BakeKernels), summed
+    kernels::KernelCompileCounts kernelCompiles; // taken from the program's built-in kernels, and compiled from source
 };
 
 // Bakes the environment of `settings` into settings.outputDir: specular.ktx2, brdf_lut.ktx2,

@@ -1,9 +1,12 @@
 #include "bake_kernels.hpp"
 
+#include "kernels/built_in_kernels.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
+#include "kernels/grid_lut_method.hpp"
 #include "shading_maps.hpp"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace iblkit::bake {
 namespace {
@@ -56,5 +59,22 @@ kernels::Kernel& BakeKernels::downsample() { return *specularReady().downsample;
 kernels::LutMethod* BakeKernels::lut() { return lutReady().method.get(); }
 IrradianceKernels& BakeKernels::irradiance() { return *lutReady().irradiance; }
 double BakeKernels::compileMilliseconds() { return specularReady().milliseconds + lutReady().milliseconds; }
+
+void precompileBakeKernels(const std::filesystem::path& folder) {
+    kernels::CompiledKernelCache store(folder);
+    const kernels::UseCompiledKernelCache use(&store);
+    const kernels::WithoutBuiltInKernels compileEveryKernel;
+    using kernels::KernelRole;
+    // The source cube, the residual's mips, the irradiance and the preview (gpu_steps.hpp).
+    for (const auto role : {KernelRole::SkyCube, KernelRole::EquirectToCube, KernelRole::DownsampleCube, KernelRole::ShProject,
+                            KernelRole::IrradianceCube, KernelRole::Preview})
+        kernels::compileKernel(kernels::kernelFor(role));
+    // The default prefilter (kernels/convolution_method.hpp) and LUT (kernels/grid_lut_method.hpp).
+    kernels::compileKernel(kernels::kernelFor(KernelRole::ClusterCube));
+    kernels::compileKernel(kernels::kernelFor(KernelRole::PrefilterConvolution, kDefaultSpecularMethod));
+    kernels::compileGridLutNodes(kernels::kDefaultQuadratureNodes);
+    kernels::compileGridLutResample();
+    if (store.counts().unwritable > 0) throw std::runtime_error(folder.string() + ": cannot write the built-in kernels");
+}
 
 } // namespace iblkit::bake

@@ -7,6 +7,7 @@
 #include "kernels/lut_methods.hpp"
 #include "kernels/specular_method.hpp"
 
+#include <filesystem>
 #include <future>
 #include <memory>
 #include <optional>
@@ -50,5 +51,10 @@ private:
     std::optional<Specular> specular_;
     std::optional<Lut> lut_;
 };
+
+// Compiles every kernel of a bake with the default settings (any input, any scene, any profile) into
+// the content store at `folder`, for the program's built-in kernels (kernels/built_in_kernels.hpp):
+// `iblkit-program precompile-kernels` runs it as the program is built. Needs no device.
+void precompileBakeKernels(const std::filesystem::path& folder);
 
 } // namespace iblkit::bake

@@ -258,6 +258,7 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
 // What the cache does not hold, computed on the device, and stored.
 BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                              const BakeKeys& keys, const Cached& cached, BakeProgress& progress, cache::ContentStore* cache) {
+    const auto compilesBefore = kernels::kernelCompileCounts();
     progress.begin("device");
     progress.part("instance and device");
     auto context = std::make_unique<const vulkan::VulkanContext>(settings.context);
@@ -279,6 +280,8 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
     outputs.compiledKernels = caches->compiledKernels();
     outputs.pipelineCacheBytes = caches->pipelineCacheBytesLoaded();
     outputs.kernelCompileMilliseconds = kernels->compileMilliseconds();
+    const auto compiles = kernels::kernelCompileCounts();
+    outputs.kernelCompiles = {compiles.builtIn - compilesBefore.builtIn, compiles.compiled - compilesBefore.compiled};
     progress.end();
     progress.begin("tear-down");
     results.reset();
@@ -384,9 +387,18 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, 
     auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
     const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, plan.schedule, lights);
     const float exposure = previewExposure(*cached.sh, lights);
-    BakedOutputs outputs{std::move(cached.specular), std::move(cached.lut),
-                         plan.irradiance ? std::move(cached.irradiance) : std::nullopt, std::move(cached.lobeTable), *cached.sh,
-                         std::move(lights), lightLevel, std::move(*cached.previewPng), exposure, found.name, {}, {}, 0, 0, unconfirmed};
+    BakedOutputs outputs;
+    outputs.specular = std::move(cached.specular);
+    outputs.lut = std::move(cached.lut);
+    if (plan.irradiance) outputs.irradiance = std::move(cached.irradiance);
+    outputs.lobeTable = std::move(cached.lobeTable);
+    outputs.sh = *cached.sh;
+    outputs.lights = std::move(lights);
+    outputs.lightLevel = lightLevel;
+    outputs.previewPng = std::move(*cached.previewPng);
+    outputs.previewExposure = exposure;
+    outputs.device = found.name;
+    outputs.deviceUnconfirmed = unconfirmed;
     return outputs;
 }
 

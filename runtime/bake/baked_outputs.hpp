@@ -6,6 +6,7 @@
 #include "bake_settings.hpp"
 #include "environment_input.hpp"
 #include "gpu_steps.hpp"
+#include "kernels/built_in_kernels.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
 
 #include <future>
@@ -34,6 +35,7 @@ struct BakedOutputs {
     std::vector<std::string> cacheWarnings; // why an output could not be cached
     kernels::CompiledKernelCache::Counts compiledKernels; // the kernels the cache held, and those compiled
     size_t pipelineCacheBytes = 0;                        // the Vulkan pipeline cache data an earlier bake left
+    kernels::KernelCompileCounts kernelCompiles;           // taken from the program's built-in kernels, and compiled
     double kernelCompileMilliseconds = 0;                 // on the threads beside the steps
     bool deviceUnconfirmed = false; // every output cached under the remembered device's keys (DeviceSearch::confirmLater)
 };

@@ -43,7 +43,7 @@ fs::path temporaryBeside(const fs::path& path) {
 
 } // namespace
 
-ContentStore::ContentStore(fs::path folder) : folder_(std::move(folder)) {}
+ContentStore::ContentStore(fs::path folder, Access access) : folder_(std::move(folder)), access_(access) {}
 
 fs::path ContentStore::pathOf(const std::string& key) const { return folder_ / "objects" / key.substr(0, 2) / key; }
 
@@ -69,7 +69,7 @@ std::optional<ContentStore::Payload> ContentStore::read(const std::string& key, 
     }
     if (!holds(file->bytes(), key)) {
         std::error_code ignored;
-        fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
+        if (access_ == Access::ReadWrite) fs::remove(path, ignored); // damaged, or of the earlier format: computed again and written anew
         if (!file->bytes().starts_with(kEarlierMagic)) ++counts.corrupt;
         ++counts.misses;
         return std::nullopt;
@@ -82,6 +82,7 @@ void ContentStore::put(const std::string& key, std::string_view payload) { put(k
 
 void ContentStore::put(const std::string& key, std::span<const std::string_view> payload) {
     const auto path = pathOf(key);
+    if (access_ == Access::ReadOnly) throw CacheError(folder_.string() + ": error: the store is read-only");
     std::error_code error;
     fs::create_directories(path.parent_path(), error);
     if (error) throw CacheError(path.parent_path().string() + ": error: cannot make the cache folder: " + error.message());

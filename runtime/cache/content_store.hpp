@@ -18,7 +18,9 @@ namespace iblkit::cache {
 // and the last rename wins.
 class ContentStore {
 public:
-    explicit ContentStore(std::filesystem::path folder);
+    // A read-only store leaves damaged entries where they are, and refuses put.
+    enum class Access { ReadWrite, ReadOnly };
+    explicit ContentStore(std::filesystem::path folder, Access access = Access::ReadWrite);
 
     std::optional<std::string> get(const std::string& key);
     // An entry's payload read in place, for payloads of megabytes that are parsed, not kept.
@@ -52,6 +54,7 @@ private:
     std::optional<Payload> read(const std::string& key, Counts& counts);
 
     std::filesystem::path folder_;
+    Access access_;
     Counts counts_;
 };
 

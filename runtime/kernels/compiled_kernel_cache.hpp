@@ -24,7 +24,8 @@ namespace iblkit::kernels {
 // miss, and the new compile replaces it (as ccache's direct mode does). Safe on any thread.
 class CompiledKernelCache {
 public:
-    explicit CompiledKernelCache(const std::filesystem::path& folder);
+    // A read-only cache (built_in_kernels.hpp) is never written: keep counts it unwritable.
+    explicit CompiledKernelCache(const std::filesystem::path& folder, bool readOnly = false);
     ~CompiledKernelCache();
 
     // Empty on a miss; options without a source text are never cached.

@@ -16,7 +16,9 @@ uint32_t checkedGrid(uint32_t gridSize) {
     return gridSize;
 }
 
-KernelProgram compileNodes(uint32_t nodes, const ShaderFiles& files) {
+} // namespace
+
+KernelProgram compileGridLutNodes(uint32_t nodes, const ShaderFiles& files) {
     if (nodes == 0 || nodes > kMaxQuadratureNodes)
         throw std::invalid_argument("the quadrature takes 1 to " + std::to_string(kMaxQuadratureNodes) +
                                     " nodes per panel, not " + std::to_string(nodes));
@@ -24,12 +26,14 @@ KernelProgram compileNodes(uint32_t nodes, const ShaderFiles& files) {
                          {{"SAMPLE_COUNT", std::to_string(nodes)}}, {}, files);
 }
 
-} // namespace
+KernelProgram compileGridLutResample(const ShaderFiles& files) {
+    return compileKernel(kernelFor(KernelRole::BrdfLutResample, kQuadratureGridLutMethod), {}, {{"Precomputed", "rg32f"}},
+                         files);
+}
 
 GridLut::GridLut(const vulkan::VulkanContext& context, uint32_t gridSize, uint32_t nodes, const ShaderFiles& files)
-    : gridSize_(checkedGrid(gridSize)), nodes_(context, compileNodes(nodes, files)),
-      resample_(context, compileKernel(kernelFor(KernelRole::BrdfLutResample, kQuadratureGridLutMethod), {},
-                                       {{"Precomputed", "rg32f"}}, files)) {}
+    : gridSize_(checkedGrid(gridSize)), nodes_(context, compileGridLutNodes(nodes, files)),
+      resample_(context, compileGridLutResample(files)) {}
 
 void GridLut::run(vulkan::Image& lut) {
     const vulkan::Buffer grid(nodes_.context(), vk::DeviceSize(gridSize_) * gridSize_ * 2 * sizeof(float),

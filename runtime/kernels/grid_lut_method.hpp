@@ -12,6 +12,11 @@ namespace iblkit::kernels {
 // at `nodes` Gauss–Legendre nodes per panel, and BrdfLutResampleCS interpolates it to every
 // texel of the LUT. Throws std::invalid_argument for a grid outside kMinLutGrid..kMaxLutGrid or
 // nodes outside 1..kMaxQuadratureNodes.
+// Its two kernels: the nodes' at `nodes` per panel (std::invalid_argument outside
+// 1..kMaxQuadratureNodes), and the resampling.
+KernelProgram compileGridLutNodes(uint32_t nodes, const ShaderFiles& files = embeddedShaderFiles());
+KernelProgram compileGridLutResample(const ShaderFiles& files = embeddedShaderFiles());
+
 class GridLut {
 public:
     GridLut(const vulkan::VulkanContext& context, uint32_t gridSize, uint32_t nodes,

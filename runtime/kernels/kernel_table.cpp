@@ -1,6 +1,7 @@
 #include "kernels/kernel_table.hpp"
 
 #include "compiler.hpp"
+#include "kernels/built_in_kernels.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
 #include "shader_manifest.hpp"
 
@@ -104,10 +105,16 @@ KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::strin
     auto options = optionsReading(kernel, files);
     for (const auto& [name, value] : defines) options.defines[name] = value;
     for (const auto& [name, format] : imageFormats) options.imageFormats[name] = format;
+    if (auto* builtIn = builtInKernels())
+        if (auto program = builtIn->find(options)) {
+            countBuiltInKernel();
+            return std::move(*program);
+        }
     auto* cache = compiledKernelCacheInUse();
     if (cache)
         if (auto program = cache->find(options)) return std::move(*program);
     const auto shader = compiler::compileShader(options);
+    countCompiledKernel();
     if (cache) cache->keep(options, shader);
     return {shader.spirv, shader.reflection};
 }

@@ -21,10 +21,16 @@ run(dpkg -x ${deb} ${root})
 expect_files(${root}/usr bin/iblkit include/iblkit/iblkit.hpp lib/cmake/iblkit/iblkitConfig.cmake lib/pkgconfig/iblkit.pc
              share/iblkit/hlsl/document/Common/PBR.fxh)
 execute_process(COMMAND ${root}/usr/bin/iblkit bake -o ${WORK_DIR}/bake --size 32 --lut-size 64 --irradiance-size 8
-                        --no-cache --quiet
-                WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE result ERROR_VARIABLE err)
+                        --no-cache --quiet --json
+                WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE result OUTPUT_VARIABLE summary ERROR_VARIABLE err)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "the packaged iblkit bake failed (${result}): ${err}")
+endif()
+# The packaged program's built-in kernels (libexec/iblkit/kernels) serve it: it compiles none.
+string(JSON compiled GET "${summary}" compiled_kernels compiled)
+string(JSON built_in GET "${summary}" compiled_kernels built_in)
+if(NOT compiled EQUAL 0 OR built_in LESS 9)
+  message(FATAL_ERROR "the packaged iblkit compiled ${compiled} kernels and took ${built_in} from its own")
 endif()
 expect_files(${WORK_DIR}/bake specular.ktx2 brdf_lut.ktx2 irradiance.ktx2 manifest.json preview.png)
 file(REMOVE_RECURSE ${WORK_DIR})

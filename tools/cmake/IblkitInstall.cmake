@@ -1,4 +1,5 @@
-# The installed kit: the iblkit program (its launcher in bin/, the program itself in libexec/iblkit/),
+# The installed kit: the iblkit program (its launcher in bin/, the program itself and its built-in
+# kernels in libexec/iblkit/),
 # the shared library iblkit (the public API of include/iblkit over the static libraries of runtime/),
 # the CMake package (iblkit::iblkit, iblkit::cli, iblkit_add_shader), a pkg-config file, the kit's
 # HLSL, and `cpack -G DEB`.
@@ -26,6 +27,8 @@ install(TARGETS iblkit iblkit_shared EXPORT iblkitTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # The program the launcher `iblkit` starts, where tools/iblkit/launcher.c looks for it.
 install(TARGETS iblkit_program RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/iblkit)
+# Its built-in kernels, beside it (runtime/kernels/built_in_kernels.hpp).
+install(DIRECTORY $<TARGET_FILE_DIR:iblkit_program>/kernels DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/iblkit)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/iblkit DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/hlsl/ DESTINATION ${IBLKIT_INSTALL_HLSLDIR})
 install(EXPORT iblkitTargets NAMESPACE iblkit:: DESTINATION ${IBLKIT_INSTALL_CMAKEDIR})

@@ -10,6 +10,7 @@
 #include "lut_fit_command.hpp"
 #include "plan_command.hpp"
 #include "porting_command.hpp"
+#include "precompile_kernels_command.hpp"
 #include "render_command.hpp"
 #include "shading_command.hpp"
 #include "run_command.hpp"
@@ -56,6 +57,7 @@ int runCommand(int argc, char** argv) {
     iblkit::cli::addRenderCommand(app);
     iblkit::cli::addRenderReportCommand(app);
     iblkit::cli::addShadingCommand(app);
+    iblkit::cli::addPrecompileKernelsCommand(app);
     // CLI11 calls a word it does not know "A subcommand is required"; name it and the commands.
     const auto commands = app.get_subcommands({});
     const auto known = [&](const std::string& word) {
@@ -63,7 +65,8 @@ int runCommand(int argc, char** argv) {
     };
     if (argc > 1 && argv[1][0] != '-' && !known(argv[1])) {
         std::string names;
-        for (const auto* command : commands) names += (names.empty() ? "" : ", ") + command->get_name();
+        for (const auto* command : commands)
+            if (!command->get_group().empty()) names += (names.empty() ? "" : ", ") + command->get_name();
         fmt::print(stderr, "iblkit: error: unknown command '{}' (commands: {})\n", argv[1], names);
         return 2;
     }

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "kernels/compiled_kernel_cache.hpp"
+
+#include <cstddef>
+#include <filesystem>
+
+namespace iblkit::kernels {
+
+// The kernels compiled when the program was built: `iblkit-program precompile-kernels` keeps the
+// bake's in a content store beside the program, in its folder `kernels` (the build tree's
+// tools/iblkit/kernels, the installed libexec/iblkit/kernels). compileKernel looks there first and
+// never writes there. Its entries are keyed as every compiled kernel's (compiled_kernel_cache.hpp),
+// the program's build among the rest, so a store another build made is never read: each of its
+// entries is a miss, and the kernel is compiled as without one.
+std::filesystem::path builtInKernelFolder();
+// Null where the program has no store beside it (a test program, or a program using the library),
+// and on a thread where a WithoutBuiltInKernels lives.
+CompiledKernelCache* builtInKernels();
+
+// While one lives, compileKernel on this thread ignores the built-in kernels: what makes a store
+// compiles every kernel, whatever the program already has.
+class WithoutBuiltInKernels {
+public:
+    WithoutBuiltInKernels();
+    ~WithoutBuiltInKernels();
+    WithoutBuiltInKernels(const WithoutBuiltInKernels&) = delete;
+    WithoutBuiltInKernels& operator=(const WithoutBuiltInKernels&) = delete;
+
+private:
+    bool previous_;
+};
+
+// What compileKernel has done since the process started: kernels taken from the built-in store,
+// and kernels compiled from their source (with or without a cache to keep them in).
+struct KernelCompileCounts {
+    size_t builtIn = 0, compiled = 0;
+};
+KernelCompileCounts kernelCompileCounts();
+void countBuiltInKernel();
+void countCompiledKernel();
+
+} // namespace iblkit::kernels
