@@ -174,7 +174,8 @@ float MeanLuminance( uint topLevel, uint baseSize )
     return light / solidAngle;
 }
 
-// Whether the block (face, xy) of `level`, size x size per face, opens for N = normal: when N
+// Whether the block (face, xy) of `level` > 0, size x size per face, with its Centroid `weighted`
+// and Geometry `geometry`, opens for N = normal: when N
 // is within Refine of its widths (2 / size each) of its centre, as a chord (|N - centre|^2 =
 // 2 - 2 cos), or, down to HorizonLevel, when it lies across N's horizon, where N.L > 0 clips
 // the lobe. The reach grows as the cube root of the block's brightness against the mean: the
@@ -183,12 +184,11 @@ float MeanLuminance( uint topLevel, uint baseSize )
 // resolved as finely as its share of the result needs (measured over the built-in sky and
 // Blender's HDRIs: the cube root holds the error of small bright lights to that of the rest
 // for about 15 % more terms; the square root costs twice that for no gain).
-bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float meanLuminance )
+bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float meanLuminance, float4 weighted, float4 geometry )
 {
     float3 centre = CubeFaceDirection( face, ( float2( xy ) + 0.5f ) / float( size ) );
     float cosine = dot( normal, centre );
-    int4 at = int4( xy, face, level - 1u ); // level > 0: a block of the pyramid
-    float brightness = Centroid.Load( at ).w / max( Geometry.Load( at ).w * meanLuminance, 1e-30f );
+    float brightness = weighted.w / max( geometry.w * meanLuminance, 1e-30f );
     float reach = Refine * 2.f / float( size ) * pow( max( brightness, 1.f ), 1.f / 3.f );
     bool nearN = 2.f - 2.f * cosine < reach * reach;
     bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN / float( size );
@@ -198,8 +198,9 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
 // llvmpipe counts every iteration of all of an invocation's loops against one budget of 65535
 // (Mesa's gallivm loop limiter: one counter per shader, for the SIMD vector of texels it runs
 // together) and past it ends them all without a word. A term costs the vector an iteration of the
-// walk, the entries of the two inner loops, and as many descents and climbs as its farthest
-// texel makes, each at most the tree's depth. Bright blocks open from farther away, so no budget
+// walk, the entry of NextBlock's loop, and as many descents (each an iteration of the walk) and
+// climbs as its farthest texel makes, each at most the tree's depth: within the 3 + 2 x depth
+// counted below, which held when the descents were a loop of their own. Bright blocks open from farther away, so no budget
 // bounds the walk of every environment: a texel stops opening blocks once its terms at that cost
 // leave only what the rest of its walk needs (the top level's blocks and at most three siblings
 // per level, taken whole).
@@ -227,16 +228,18 @@ void main( uint3 DTid : SV_DispatchThreadId )
     uint terms = 0;
     uint face = 0, level = TopLevel;
     uint2 xy = 0;
+    // Each block is read once: what decides whether it opens is what its term sums.
     while ( face < 6 )
     {
-        while ( level > FineLevel && terms < openLimit
-                && Opens( normal, face, xy, max( baseSize >> level, 1u ), level, meanLuminance ) )
+        float4 energy, weighted, geometry;
+        LoadBlock( face, xy, level, baseSize, energy, weighted, geometry );
+        if ( level > FineLevel && terms < openLimit
+             && Opens( normal, face, xy, max( baseSize >> level, 1u ), level, meanLuminance, weighted, geometry ) )
         {
             xy *= 2;
             level -= 1;
+            continue;
         }
-        float4 energy, weighted, geometry;
-        LoadBlock( face, xy, level, baseSize, energy, weighted, geometry );
         // The first moments of the block's directions, by solid angle and by light: their
         // length falls short of 1 by their spread.
         float3 extent = geometry.xyz / geometry.w;
