@@ -197,10 +197,10 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
 
 // llvmpipe counts every iteration of all of an invocation's loops against one budget of 65535
 // (Mesa's gallivm loop limiter: one counter per shader, for the SIMD vector of texels it runs
-// together) and past it ends them all without a word. A term costs the vector an iteration of the
-// walk, the entry of NextBlock's loop, and as many descents (each an iteration of the walk) and
-// climbs as its farthest texel makes, each at most the tree's depth: within the 3 + 2 x depth
-// counted below, which held when the descents were a loop of their own. Bright blocks open from farther away, so no budget
+// together) and past it ends them all without a word. Every iteration of the walk is a term or a
+// descent, and a descent opens a block into four, so there are at most 4/3 of an iteration per
+// term; each costs the vector itself, the entry of NextBlock's loop and at most depth climbs in
+// it: (4/3) (2 + depth) <= 3 + 2 x depth, the cost per term counted below. Bright blocks open from farther away, so no budget
 // bounds the walk of every environment: a texel stops opening blocks once its terms at that cost
 // leave only what the rest of its walk needs (the top level's blocks and at most three siblings
 // per level, taken whole).

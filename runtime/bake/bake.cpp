@@ -130,9 +130,22 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
 
     const double wall = std::chrono::duration<double, std::milli>(Clock::now() - prepared.started).count();
     const auto& input = prepared.input;
-    return {settings.outputDir, outputs.device, progress.steps(), wall, files, outputs.sh.shRadiance, clamps,
-            input.sanitizedTexels, input.negative, maps.cache, outputs.cacheWarnings, outputs.compiledKernels,
-            outputs.pipelineCacheBytes, prepared.plan.notes, outputs.kernelCompileMilliseconds, outputs.kernelCompiles};
+    return {.outputDir = settings.outputDir,
+            .device = outputs.device,
+            .steps = progress.steps(),
+            .wallMilliseconds = wall,
+            .files = files,
+            .shRadiance = outputs.sh.shRadiance,
+            .halfRangeClamps = clamps,
+            .sanitizedTexels = input.sanitizedTexels,
+            .negativeTexels = input.negative,
+            .cache = maps.cache,
+            .cacheWarnings = outputs.cacheWarnings,
+            .compiledKernels = outputs.compiledKernels,
+            .pipelineCacheBytes = outputs.pipelineCacheBytes,
+            .sceneNotes = prepared.plan.notes,
+            .kernelCompileMilliseconds = outputs.kernelCompileMilliseconds,
+            .kernelCompiles = outputs.kernelCompiles};
 }
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {

@@ -19,23 +19,26 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs) {
     // Two threads for two cores, each in the order the bake needs its kernels.
-    // The workers compile with this thread's kernel cache.
+    // The workers compile with this thread's kernel cache, and count in its counter.
     auto* cache = kernels::compiledKernelCacheInUse();
-    specularFuture_ = std::async(std::launch::async, [&context, cache, method = settings.specularMethod,
+    auto* counter = kernels::kernelCompileCounterInUse();
+    specularFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.specularMethod,
                                                       samples = resolvedSamples(settings), needed = outputs.specular] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
+        const kernels::CountKernelCompiles counting(counter);
         // The residual of a recipe's lights gets its mips first, then the prefilter reads them.
         auto downsample = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::DownsampleCube));
         auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples) : nullptr;
         auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
         return Specular{millisecondsSince(start), std::move(specular), std::move(preview), std::move(downsample)};
     });
-    lutFuture_ = std::async(std::launch::async, [&context, cache, method = settings.lutMethod,
+    lutFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.lutMethod,
                                                  count = resolvedLutSamples(settings), needed = outputs.lut,
                                                  weighting = resolvedRecipe(settings).weighting] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
+        const kernels::CountKernelCompiles counting(counter);
         auto lut = needed ? std::make_unique<kernels::LutMethod>(context, method, count) : nullptr;
         auto irradiance = std::make_unique<IrradianceKernels>(context);
         lobeTableOf(weighting); // the preview's, off the bake's path (48 ms)
@@ -61,6 +64,7 @@ IrradianceKernels& BakeKernels::irradiance() { return *lutReady().irradiance; }
 double BakeKernels::compileMilliseconds() { return specularReady().milliseconds + lutReady().milliseconds; }
 
 void precompileBakeKernels(const std::filesystem::path& folder) {
+    std::filesystem::create_directories(folder); // a folder that cannot be made says why
     kernels::CompiledKernelCache store(folder);
     const kernels::UseCompiledKernelCache use(&store);
     const kernels::WithoutBuiltInKernels compileEveryKernel;

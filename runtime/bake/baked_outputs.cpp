@@ -258,7 +258,8 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
 // What the cache does not hold, computed on the device, and stored.
 BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                              const BakeKeys& keys, const Cached& cached, BakeProgress& progress, cache::ContentStore* cache) {
-    const auto compilesBefore = kernels::kernelCompileCounts();
+    kernels::KernelCompileCounter compiles;
+    const kernels::CountKernelCompiles counting(&compiles);
     progress.begin("device");
     progress.part("instance and device");
     auto context = std::make_unique<const vulkan::VulkanContext>(settings.context);
@@ -280,8 +281,7 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
     outputs.compiledKernels = caches->compiledKernels();
     outputs.pipelineCacheBytes = caches->pipelineCacheBytesLoaded();
     outputs.kernelCompileMilliseconds = kernels->compileMilliseconds();
-    const auto compiles = kernels::kernelCompileCounts();
-    outputs.kernelCompiles = {compiles.builtIn - compilesBefore.builtIn, compiles.compiled - compilesBefore.compiled};
+    outputs.kernelCompiles = compiles.counts(); // both threads' kernels are made by now
     progress.end();
     progress.begin("tear-down");
     results.reset();

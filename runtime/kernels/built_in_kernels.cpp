@@ -1,6 +1,5 @@
 #include "kernels/built_in_kernels.hpp"
 
-#include <atomic>
 #include <memory>
 #include <system_error>
 #include <utility>
@@ -8,8 +7,8 @@
 namespace iblkit::kernels {
 namespace {
 
-std::atomic<size_t> builtInCount{0}, compiledCount{0};
 thread_local bool builtInIgnored = false;
+thread_local KernelCompileCounter* counterInUse = nullptr;
 
 } // namespace
 
@@ -24,17 +23,24 @@ CompiledKernelCache* builtInKernels() {
         const auto folder = builtInKernelFolder();
         std::error_code error;
         if (folder.empty() || !std::filesystem::is_directory(folder / "objects", error)) return nullptr;
-        return std::make_unique<CompiledKernelCache>(folder, true);
+        return std::make_unique<CompiledKernelCache>(folder, cache::ContentStore::Access::ReadOnly);
     }();
     return builtInIgnored ? nullptr : store.get();
+}
+
+std::optional<KernelProgram> builtInKernel(const compiler::CompileOptions& options) {
+    auto* store = builtInKernels();
+    return store ? store->find(options) : std::nullopt;
 }
 
 WithoutBuiltInKernels::WithoutBuiltInKernels() : previous_(std::exchange(builtInIgnored, true)) {}
 
 WithoutBuiltInKernels::~WithoutBuiltInKernels() { builtInIgnored = previous_; }
 
-KernelCompileCounts kernelCompileCounts() { return {builtInCount.load(), compiledCount.load()}; }
-void countBuiltInKernel() { ++builtInCount; }
-void countCompiledKernel() { ++compiledCount; }
+CountKernelCompiles::CountKernelCompiles(KernelCompileCounter* counter) : previous_(std::exchange(counterInUse, counter)) {}
+
+CountKernelCompiles::~CountKernelCompiles() { counterInUse = previous_; }
+
+KernelCompileCounter* kernelCompileCounterInUse() { return counterInUse; }
 
 } // namespace iblkit::kernels

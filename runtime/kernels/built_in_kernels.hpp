@@ -2,8 +2,10 @@
 
 #include "kernels/compiled_kernel_cache.hpp"
 
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 
 namespace iblkit::kernels {
 
@@ -18,6 +20,9 @@ std::filesystem::path builtInKernelFolder();
 // and on a thread where a WithoutBuiltInKernels lives.
 CompiledKernelCache* builtInKernels();
 
+// The built-in store's kernel for `options`, if it holds one (and builtInKernels() is not null).
+std::optional<KernelProgram> builtInKernel(const compiler::CompileOptions& options);
+
 // While one lives, compileKernel on this thread ignores the built-in kernels: what makes a store
 // compiles every kernel, whatever the program already has.
 class WithoutBuiltInKernels {
@@ -31,13 +36,30 @@ private:
     bool previous_;
 };
 
-// What compileKernel has done since the process started: kernels taken from the built-in store,
-// and kernels compiled from their source (with or without a cache to keep them in).
+// What compileKernel did: kernels taken from the built-in store, and kernels compiled from their
+// source (with or without a cache to keep them in).
 struct KernelCompileCounts {
     size_t builtIn = 0, compiled = 0;
 };
-KernelCompileCounts kernelCompileCounts();
-void countBuiltInKernel();
-void countCompiledKernel();
+struct KernelCompileCounter {
+    std::atomic<size_t> builtIn{0}, compiled{0};
+    KernelCompileCounts counts() const { return {builtIn.load(), compiled.load()}; }
+};
+
+// While one lives, compileKernel on this thread counts in `counter` (null: nowhere); the one in
+// use before it is restored when it goes. A thread that compiles for another takes the other's
+// kernelCompileCounterInUse() (BakeKernels does for its workers), so a bake counts its own kernels
+// whatever else the process compiles.
+class CountKernelCompiles {
+public:
+    explicit CountKernelCompiles(KernelCompileCounter* counter);
+    ~CountKernelCompiles();
+    CountKernelCompiles(const CountKernelCompiles&) = delete;
+    CountKernelCompiles& operator=(const CountKernelCompiles&) = delete;
+
+private:
+    KernelCompileCounter* previous_;
+};
+KernelCompileCounter* kernelCompileCounterInUse();
 
 } // namespace iblkit::kernels

@@ -73,9 +73,8 @@ std::vector<uint32_t> wordsOf(const json::binary_t& bytes) {
 
 } // namespace
 
-CompiledKernelCache::CompiledKernelCache(const std::filesystem::path& folder, bool readOnly)
-    : store_(std::make_unique<cache::ContentStore>(folder, readOnly ? cache::ContentStore::Access::ReadOnly
-                                                                     : cache::ContentStore::Access::ReadWrite)) {}
+CompiledKernelCache::CompiledKernelCache(const std::filesystem::path& folder, cache::ContentStore::Access access)
+    : store_(std::make_unique<cache::ContentStore>(folder, access)) {}
 
 CompiledKernelCache::~CompiledKernelCache() = default;
 

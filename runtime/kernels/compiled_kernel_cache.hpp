@@ -1,5 +1,6 @@
 #pragma once
 
+#include "content_store.hpp"
 #include "kernels/kernel_table.hpp"
 
 #include <filesystem>
@@ -7,9 +8,6 @@
 #include <mutex>
 #include <optional>
 
-namespace iblkit::cache {
-class ContentStore;
-}
 namespace iblkit::compiler {
 struct CompiledShader;
 }
@@ -25,7 +23,8 @@ namespace iblkit::kernels {
 class CompiledKernelCache {
 public:
     // A read-only cache (built_in_kernels.hpp) is never written: keep counts it unwritable.
-    explicit CompiledKernelCache(const std::filesystem::path& folder, bool readOnly = false);
+    explicit CompiledKernelCache(const std::filesystem::path& folder,
+                                 cache::ContentStore::Access access = cache::ContentStore::Access::ReadWrite);
     ~CompiledKernelCache();
 
     // Empty on a miss; options without a source text are never cached.

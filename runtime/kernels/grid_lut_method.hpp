@@ -8,15 +8,15 @@
 
 namespace iblkit::kernels {
 
-// The quadrature-grid LUT: BrdfLutGridCS integrates a gridSize² grid of nodes (Common/LutGrid.fxh)
-// at `nodes` Gauss–Legendre nodes per panel, and BrdfLutResampleCS interpolates it to every
-// texel of the LUT. Throws std::invalid_argument for a grid outside kMinLutGrid..kMaxLutGrid or
-// nodes outside 1..kMaxQuadratureNodes.
-// Its two kernels: the nodes' at `nodes` per panel (std::invalid_argument outside
+// GridLut's two kernels: the nodes' at `nodes` per panel (std::invalid_argument outside
 // 1..kMaxQuadratureNodes), and the resampling.
 KernelProgram compileGridLutNodes(uint32_t nodes, const ShaderFiles& files = embeddedShaderFiles());
 KernelProgram compileGridLutResample(const ShaderFiles& files = embeddedShaderFiles());
 
+// The quadrature-grid LUT: BrdfLutGridCS integrates a gridSize² grid of nodes (Common/LutGrid.fxh)
+// at `nodes` Gauss–Legendre nodes per panel, and BrdfLutResampleCS interpolates it to every
+// texel of the LUT. Throws std::invalid_argument for a grid outside kMinLutGrid..kMaxLutGrid or
+// nodes outside 1..kMaxQuadratureNodes.
 class GridLut {
 public:
     GridLut(const vulkan::VulkanContext& context, uint32_t gridSize, uint32_t nodes,

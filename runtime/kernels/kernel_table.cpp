@@ -105,16 +105,16 @@ KernelProgram compileKernel(const KernelEntry& kernel, const std::map<std::strin
     auto options = optionsReading(kernel, files);
     for (const auto& [name, value] : defines) options.defines[name] = value;
     for (const auto& [name, format] : imageFormats) options.imageFormats[name] = format;
-    if (auto* builtIn = builtInKernels())
-        if (auto program = builtIn->find(options)) {
-            countBuiltInKernel();
-            return std::move(*program);
-        }
+    auto* counter = kernelCompileCounterInUse();
+    if (auto program = builtInKernel(options)) {
+        if (counter) ++counter->builtIn;
+        return std::move(*program);
+    }
     auto* cache = compiledKernelCacheInUse();
     if (cache)
         if (auto program = cache->find(options)) return std::move(*program);
     const auto shader = compiler::compileShader(options);
-    countCompiledKernel();
+    if (counter) ++counter->compiled;
     if (cache) cache->keep(options, shader);
     return {shader.spirv, shader.reflection};
 }
