@@ -90,6 +90,7 @@ TEST_F(BenchCli, TheSizeCurveBakesWholeProcessesAtEachSize) {
     EXPECT_NE(report.find("## Cost against size"), std::string::npos);
     EXPECT_NE(report.find("](sizes/size_curve.png)"), std::string::npos);
     EXPECT_NE(report.find("| sky | document | 1024 | 64² |"), std::string::npos) << report;
+    EXPECT_NE(report.find("--outputs bake --sizes 32,64 --out"), std::string::npos) << "the command that makes the curve again";
 }
 
 TEST_F(BenchCli, SizesNeedTheBakeOutputAndPowersOfTwo) {

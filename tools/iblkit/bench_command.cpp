@@ -41,6 +41,7 @@ std::string invocation(const bench::BenchOptions& options, const std::vector<std
                         fmt::join(options.lutGrids, ","), fmt::join(options.lutDegrees, ","), options.size,
                         options.lutSize, options.irradianceSize,
                         options.texelsPerMip, options.seed, options.repeat, fmt::join(outputs, ","));
+    if (!options.sizes.empty()) text += fmt::format(" --sizes {}", fmt::join(options.sizes, ","));
     if (!options.context.device.empty()) text += " --device " + word(options.context.device);
     text += " --out " + word(out);
     if (!markdown.empty()) text += " --markdown " + word(markdown);
