@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <cstddef>
-#include <filesystem>
 #include <optional>
 
 namespace iblkit::kernels {
@@ -15,12 +14,10 @@ namespace iblkit::kernels {
 // never writes there. Its entries are keyed as every compiled kernel's (compiled_kernel_cache.hpp),
 // the program's build among the rest, so a store another build made is never read: each of its
 // entries is a miss, and the kernel is compiled as without one.
-std::filesystem::path builtInKernelFolder();
-// Null where the program has no store beside it (a test program, or a program using the library),
-// and on a thread where a WithoutBuiltInKernels lives.
-CompiledKernelCache* builtInKernels();
-
-// The built-in store's kernel for `options`, if it holds one (and builtInKernels() is not null).
+//
+// The built-in store's kernel for `options`, if it holds one; never one where the program has no
+// store beside it (a test program, or a program using the library), nor on a thread where a
+// WithoutBuiltInKernels lives.
 std::optional<KernelProgram> builtInKernel(const compiler::CompileOptions& options);
 
 // While one lives, compileKernel on this thread ignores the built-in kernels: what makes a store
