@@ -29,6 +29,8 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
     if (!(roughness > 0 && roughness <= 1))
         throw std::invalid_argument("the convolution method takes a roughness in (0, 1], not " + std::to_string(roughness));
     requireBudget(budget);
+    if (!std::has_single_bit(sourceSize))
+        throw std::invalid_argument(fmt::format("the convolution method takes a source a power of two wide, not {}", sourceSize));
     const double alpha = double(roughness) * roughness;
     const double lobeWidth = std::min(2.58 * alpha, std::numbers::pi / 2);
     // A face of w texels is 2 / w radians wide at its centre.

@@ -26,8 +26,9 @@ struct ConvolutionPlan {
 // spends about `budget` block terms per output texel: about 6 top² + π refine² (3 levels + 4),
 // and more where bright blocks open from farther away (the shader's Opens);
 // blocks across N's horizon open down to kHorizonTexels per face, scaled by the cube root of the
-// lobe's weight there. Throws std::invalid_argument for a roughness <= 0 or > 1, or a budget of
-// 0 or above kMaxConvolutionBudget.
+// lobe's weight there. Throws std::invalid_argument for a roughness <= 0 or > 1, a budget of
+// 0 or above kMaxConvolutionBudget, or a source whose width is not a power of two (the pyramid
+// halves it exactly, and the walk steps through its top level by shifts).
 inline constexpr double kFineTexelsPerLobe = 12;
 inline constexpr double kHorizonTexels = 16;
 // llvmpipe ends every loop of an invocation once all of them together have run 65535 iterations,

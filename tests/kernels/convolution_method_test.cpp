@@ -41,6 +41,7 @@ TEST(ConvolutionPlan, RefusesWhatItCannotSum) {
     EXPECT_NO_THROW(planConvolution(256, 0.5f, kMaxConvolutionBudget));
     EXPECT_THROW(planConvolution(256, 0.5f, kMaxConvolutionBudget + 1), std::invalid_argument)
         << "past it, llvmpipe could end the walk's loop early";
+    EXPECT_THROW(planConvolution(96, 0.5f, 128), std::invalid_argument) << "the walk steps through its top level by shifts";
 }
 
 } // namespace
