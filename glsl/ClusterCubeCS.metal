@@ -65,124 +65,203 @@ struct ClusterParameter
     uint Level;
 };
 
-kernel void main0(constant ClusterParameter& _397 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant ClusterParameter& _456 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _742 = uint3(0u);
-        uint3 _743 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
-        _742.x = _743.x;
-        _742.y = _743.y;
-        _742.z = _743.z;
-        if (any(gl_GlobalInvocationID >= _742))
+        uint3 _831 = uint3(0u);
+        uint3 _832 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
+        _831.x = _832.x;
+        _831.y = _832.y;
+        _831.z = _832.z;
+        if (any(gl_GlobalInvocationID >= _831))
         {
             break;
         }
-        if (_397.Level == 0u)
+        if (_456.Level == 0u)
         {
-            uint3 _747 = gl_GlobalInvocationID;
-            uint3 _1083 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
-            float4 _1411;
-            float4 _1412;
-            float4 _1413;
-            _1413 = float4(0.0);
-            _1412 = float4(0.0);
-            _1411 = float4(0.0);
-            float4 _1167;
-            float4 _1170;
-            float4 _1173;
-            for (uint _1410 = 0u; _1410 < 4u; _1413 = _1173, _1412 = _1170, _1411 = _1167, _1410++)
+            uint3 _836 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
+            float4 _1851;
+            float4 _1852;
+            float4 _1853;
+            if (_831.x == _836.x)
             {
-                uint2 _1123 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1410 & 1u, _1410 >> uint(1));
-                uint2 _1087 = _1123;
-                float _1194 = float(_1083.x);
-                float _1195 = 1.0 / _1194;
-                float _1202 = fma(2.0 * float(_1087.x), _1195, -1.0);
-                float _1209 = fma(2.0 * float(_1087.y), _1195, -1.0);
-                float _1213 = _1202 + (2.0 / _1194);
-                float _1217 = _1209 + (2.0 / _1194);
-                float _1232 = ((precise::atan2(_1202 * _1209, sqrt(fma(_1202, _1202, _1209 * _1209) + 1.0)) - precise::atan2(_1202 * _1217, sqrt(fma(_1202, _1202, _1217 * _1217) + 1.0))) - precise::atan2(_1213 * _1209, sqrt(fma(_1213, _1213, _1209 * _1209) + 1.0))) + precise::atan2(_1213 * _1217, sqrt(fma(_1213, _1213, _1217 * _1217) + 1.0));
-                if (_747.z == 0u)
+                uint3 _840 = gl_GlobalInvocationID;
+                uint2 _1200 = gl_GlobalInvocationID.xy;
+                float _1267 = float(_836.x);
+                float _1268 = 1.0 / _1267;
+                float _1275 = fma(2.0 * float(_1200.x), _1268, -1.0);
+                float _1282 = fma(2.0 * float(_1200.y), _1268, -1.0);
+                float _1286 = _1275 + (2.0 / _1267);
+                float _1290 = _1282 + (2.0 / _1267);
+                float _1305 = ((precise::atan2(_1275 * _1282, sqrt(fma(_1275, _1275, _1282 * _1282) + 1.0)) - precise::atan2(_1275 * _1290, sqrt(fma(_1275, _1275, _1290 * _1290) + 1.0))) - precise::atan2(_1286 * _1282, sqrt(fma(_1286, _1286, _1282 * _1282) + 1.0))) + precise::atan2(_1286 * _1290, sqrt(fma(_1286, _1286, _1290 * _1290) + 1.0));
+                if (_840.z == 0u)
                 {
-                    TexelSolidAngle.write(float4(_1232), uint2(_1123));
+                    TexelSolidAngle.write(float4(_1305), uint2(gl_GlobalInvocationID.xy));
                 }
-                int3 _1144 = int4(int2(_1123), int(_747.z), 0).xyz;
-                float3 _1155 = Source.read(uint2(_1144.xy), uint(_1144.z), 0).xyz;
-                float2 _1295 = ((spvFAdd(float2(_1123), float2(0.5)) / float2(float(_1083.x))) - float2(0.5)) * float2(2.0, -2.0);
-                float3 _1414;
-                if (_747.z == 0u)
+                int3 _1231 = int4(int3(gl_GlobalInvocationID), 0).xyz;
+                float3 _1240 = Source.read(uint2(_1231.xy), uint(_1231.z), 0).xyz;
+                float2 _1368 = ((spvFAdd(float2(gl_GlobalInvocationID.xy), float2(0.5)) / float2(float(_836.x))) - float2(0.5)) * float2(2.0, -2.0);
+                float3 _1846;
+                if (_840.z == 0u)
                 {
-                    _1414 = float3(1.0, _1295.y, -_1295.x);
+                    _1846 = float3(1.0, _1368.y, -_1368.x);
                 }
                 else
                 {
-                    float3 _1415;
-                    if (_747.z == 1u)
+                    float3 _1847;
+                    if (_840.z == 1u)
                     {
-                        _1415 = float3(-1.0, _1295.y, _1295.x);
+                        _1847 = float3(-1.0, _1368.y, _1368.x);
                     }
                     else
                     {
-                        float3 _1416;
-                        if (_747.z == 2u)
+                        float3 _1848;
+                        if (_840.z == 2u)
                         {
-                            _1416 = float3(_1295.x, 1.0, -_1295.y);
+                            _1848 = float3(_1368.x, 1.0, -_1368.y);
                         }
                         else
                         {
-                            float3 _1417;
-                            if (_747.z == 3u)
+                            float3 _1849;
+                            if (_840.z == 3u)
                             {
-                                _1417 = float3(_1295.x, -1.0, _1295.y);
+                                _1849 = float3(_1368.x, -1.0, _1368.y);
                             }
                             else
                             {
-                                float3 _1418;
-                                if (_747.z == 4u)
+                                float3 _1850;
+                                if (_840.z == 4u)
                                 {
-                                    _1418 = float3(_1295.x, _1295.y, 1.0);
+                                    _1850 = float3(_1368.x, _1368.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1418 = float3(-_1295.x, _1295.y, -1.0);
+                                    _1850 = float3(-_1368.x, _1368.y, -1.0);
                                 }
-                                _1417 = _1418;
+                                _1849 = _1850;
                             }
-                            _1416 = _1417;
+                            _1848 = _1849;
                         }
-                        _1415 = _1416;
+                        _1847 = _1848;
                     }
-                    _1414 = _1415;
+                    _1846 = _1847;
                 }
-                float3 _1409 = fast::normalize(_1414);
-                float _1315 = spvFMul(fast::max(dot(_1155, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1232);
-                _1167 = _1411 + float4(_1155 * _1232, _1232);
-                _1170 = _1412 + float4(_1409 * _1315, _1315);
-                _1173 = _1413 + float4(_1409 * _1232, _1232);
+                float3 _1482 = fast::normalize(_1846);
+                float _1388 = spvFMul(fast::max(dot(_1240, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1305);
+                _1853 = float4(_1482 * _1305, _1305);
+                _1852 = float4(_1482 * _1388, _1388);
+                _1851 = float4(_1240 * _1305, _1305);
             }
-            Energy.write(_1411, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Centroid.write(_1412, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Geometry.write(_1413, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            else
+            {
+                uint3 _845 = gl_GlobalInvocationID;
+                uint3 _1486 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
+                float4 _1814;
+                float4 _1815;
+                float4 _1816;
+                _1816 = float4(0.0);
+                _1815 = float4(0.0);
+                _1814 = float4(0.0);
+                float4 _1570;
+                float4 _1573;
+                float4 _1576;
+                for (uint _1813 = 0u; _1813 < 4u; _1816 = _1576, _1815 = _1573, _1814 = _1570, _1813++)
+                {
+                    uint2 _1526 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1813 & 1u, _1813 >> uint(1));
+                    uint2 _1490 = _1526;
+                    float _1597 = float(_1486.x);
+                    float _1598 = 1.0 / _1597;
+                    float _1605 = fma(2.0 * float(_1490.x), _1598, -1.0);
+                    float _1612 = fma(2.0 * float(_1490.y), _1598, -1.0);
+                    float _1616 = _1605 + (2.0 / _1597);
+                    float _1620 = _1612 + (2.0 / _1597);
+                    float _1635 = ((precise::atan2(_1605 * _1612, sqrt(fma(_1605, _1605, _1612 * _1612) + 1.0)) - precise::atan2(_1605 * _1620, sqrt(fma(_1605, _1605, _1620 * _1620) + 1.0))) - precise::atan2(_1616 * _1612, sqrt(fma(_1616, _1616, _1612 * _1612) + 1.0))) + precise::atan2(_1616 * _1620, sqrt(fma(_1616, _1616, _1620 * _1620) + 1.0));
+                    if (_845.z == 0u)
+                    {
+                        TexelSolidAngle.write(float4(_1635), uint2(_1526));
+                    }
+                    int3 _1547 = int4(int2(_1526), int(_845.z), 0).xyz;
+                    float3 _1558 = Source.read(uint2(_1547.xy), uint(_1547.z), 0).xyz;
+                    float2 _1698 = ((spvFAdd(float2(_1526), float2(0.5)) / float2(float(_1486.x))) - float2(0.5)) * float2(2.0, -2.0);
+                    float3 _1817;
+                    if (_845.z == 0u)
+                    {
+                        _1817 = float3(1.0, _1698.y, -_1698.x);
+                    }
+                    else
+                    {
+                        float3 _1818;
+                        if (_845.z == 1u)
+                        {
+                            _1818 = float3(-1.0, _1698.y, _1698.x);
+                        }
+                        else
+                        {
+                            float3 _1819;
+                            if (_845.z == 2u)
+                            {
+                                _1819 = float3(_1698.x, 1.0, -_1698.y);
+                            }
+                            else
+                            {
+                                float3 _1820;
+                                if (_845.z == 3u)
+                                {
+                                    _1820 = float3(_1698.x, -1.0, _1698.y);
+                                }
+                                else
+                                {
+                                    float3 _1821;
+                                    if (_845.z == 4u)
+                                    {
+                                        _1821 = float3(_1698.x, _1698.y, 1.0);
+                                    }
+                                    else
+                                    {
+                                        _1821 = float3(-_1698.x, _1698.y, -1.0);
+                                    }
+                                    _1820 = _1821;
+                                }
+                                _1819 = _1820;
+                            }
+                            _1818 = _1819;
+                        }
+                        _1817 = _1818;
+                    }
+                    float3 _1812 = fast::normalize(_1817);
+                    float _1718 = spvFMul(fast::max(dot(_1558, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1635);
+                    _1570 = _1814 + float4(_1558 * _1635, _1635);
+                    _1573 = _1815 + float4(_1812 * _1718, _1718);
+                    _1576 = _1816 + float4(_1812 * _1635, _1635);
+                }
+                _1853 = _1816;
+                _1852 = _1815;
+                _1851 = _1814;
+            }
+            Energy.write(_1851, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Centroid.write(_1852, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Geometry.write(_1853, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
             break;
         }
-        int2 _798 = int2(gl_GlobalInvocationID.xy) * int2(2);
-        int _802 = int(_397.Level) - 1;
-        int3 _812 = int4(_798, int(param.z), _802).xyz;
-        int3 _833 = int4(_798 + int2(1, 0), int(param.z), _802).xyz;
-        int3 _856 = int4(_798 + int2(0, 1), int(param.z), _802).xyz;
-        int3 _879 = int4(_798 + int2(1), int(param.z), _802).xyz;
-        int3 _901 = int4(_798, int(param.z), _802).xyz;
-        int3 _922 = int4(_798 + int2(1, 0), int(param.z), _802).xyz;
-        int3 _945 = int4(_798 + int2(0, 1), int(param.z), _802).xyz;
-        int3 _968 = int4(_798 + int2(1), int(param.z), _802).xyz;
-        int3 _990 = int4(_798, int(param.z), _802).xyz;
-        int3 _1011 = int4(_798 + int2(1, 0), int(param.z), _802).xyz;
-        int3 _1034 = int4(_798 + int2(0, 1), int(param.z), _802).xyz;
-        int3 _1057 = int4(_798 + int2(1), int(param.z), _802).xyz;
-        Energy.write(((EnergyIn.read(uint2(_812.xy), uint(_812.z), _802) + EnergyIn.read(uint2(_833.xy), uint(_833.z), _802)) + EnergyIn.read(uint2(_856.xy), uint(_856.z), _802)) + EnergyIn.read(uint2(_879.xy), uint(_879.z), _802), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Centroid.write(((CentroidIn.read(uint2(_901.xy), uint(_901.z), _802) + CentroidIn.read(uint2(_922.xy), uint(_922.z), _802)) + CentroidIn.read(uint2(_945.xy), uint(_945.z), _802)) + CentroidIn.read(uint2(_968.xy), uint(_968.z), _802), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Geometry.write(((GeometryIn.read(uint2(_990.xy), uint(_990.z), _802) + GeometryIn.read(uint2(_1011.xy), uint(_1011.z), _802)) + GeometryIn.read(uint2(_1034.xy), uint(_1034.z), _802)) + GeometryIn.read(uint2(_1057.xy), uint(_1057.z), _802), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        int2 _917 = int2(gl_GlobalInvocationID.xy) * int2(2);
+        int _921 = int(_456.Level) - 1;
+        int3 _931 = int4(_917, int(param.z), _921).xyz;
+        int3 _952 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
+        int3 _975 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
+        int3 _998 = int4(_917 + int2(1), int(param.z), _921).xyz;
+        int3 _1020 = int4(_917, int(param.z), _921).xyz;
+        int3 _1041 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
+        int3 _1064 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
+        int3 _1087 = int4(_917 + int2(1), int(param.z), _921).xyz;
+        int3 _1109 = int4(_917, int(param.z), _921).xyz;
+        int3 _1130 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
+        int3 _1153 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
+        int3 _1176 = int4(_917 + int2(1), int(param.z), _921).xyz;
+        Energy.write(((EnergyIn.read(uint2(_931.xy), uint(_931.z), _921) + EnergyIn.read(uint2(_952.xy), uint(_952.z), _921)) + EnergyIn.read(uint2(_975.xy), uint(_975.z), _921)) + EnergyIn.read(uint2(_998.xy), uint(_998.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Centroid.write(((CentroidIn.read(uint2(_1020.xy), uint(_1020.z), _921) + CentroidIn.read(uint2(_1041.xy), uint(_1041.z), _921)) + CentroidIn.read(uint2(_1064.xy), uint(_1064.z), _921)) + CentroidIn.read(uint2(_1087.xy), uint(_1087.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Geometry.write(((GeometryIn.read(uint2(_1109.xy), uint(_1109.z), _921) + GeometryIn.read(uint2(_1130.xy), uint(_1130.z), _921)) + GeometryIn.read(uint2(_1153.xy), uint(_1153.z), _921)) + GeometryIn.read(uint2(_1176.xy), uint(_1176.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

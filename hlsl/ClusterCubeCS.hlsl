@@ -1,14 +1,15 @@
 // One level of the energy pyramid that PrefilterConvolutionCS sums: for every texel of the
 // level, the radiance integrated over its exact solid angle, where that light sits (the
 // luminance-weighted sum of its directions) and where the texel itself sits (the solid-angle
-// weighted sum of its directions). Level n of the pyramid (its mip n) covers 2^(n+1) x 2^(n+1)
-// texels of the source's mip 0, so each level is exact, not a mean of means weighted alike;
-// single texels are no level of it (Common/EnergyPyramid.fxh).
+// weighted sum of its directions). Each level is exact, not a mean of means weighted alike. A
+// pyramid half the source's width keeps no single texels (Common/EnergyPyramid.fxh): its mip n
+// covers 2^(n+1) x 2^(n+1) source texels. One as wide as the source keeps them as its mip 0,
+// and its mip n covers 2^n x 2^n.
 #include "Common/EnergyPyramid.fxh"
 
 cbuffer ClusterParameter : register( b0 )
 {
-    uint Level; // 0: from 2x2 texels of Source's mip 0; above it: the 2x2 blocks of level Level - 1
+    uint Level; // 0: from Source's mip 0 (its texels, or 2x2 of them); above it: the 2x2 blocks of level Level - 1
 };
 
 Texture2DArray<float4> Source;     // the radiance cube
@@ -42,6 +43,16 @@ void SourceQuad( uint3 DTid, out float4 energy, out float4 weighted, out float4 
     }
 }
 
+// Source texel DTid itself, where the pyramid is as wide as the source and keeps single texels as
+// its level 0 (PrefilterConvolutionCS's SOURCE_TEXELS_IN_PYRAMID).
+void SourceTexel( uint3 DTid, uint sourceSize, out float4 energy, out float4 weighted, out float4 geometry )
+{
+    float solidAngle = CubeTexelSolidAngle( DTid.xy, sourceSize );
+    if ( DTid.z == 0 )
+        TexelSolidAngle[DTid.xy] = solidAngle;
+    SourceTexelBlock( Source.Load( int4( DTid, 0 ) ).rgb, DTid.z, DTid.xy, sourceSize, solidAngle, energy, weighted, geometry );
+}
+
 [numthreads(8, 8, 1)]
 void main( uint3 DTid : SV_DispatchThreadId )
 {
@@ -52,8 +63,13 @@ void main( uint3 DTid : SV_DispatchThreadId )
 
     if ( Level == 0 )
     {
+        uint sourceSize = 0, sourceHeight = 0, layers = 0;
+        Source.GetDimensions( sourceSize, sourceHeight, layers );
         float4 energy, weighted, geometry;
-        SourceQuad( DTid, energy, weighted, geometry );
+        if ( dims.x == sourceSize )
+            SourceTexel( DTid, sourceSize, energy, weighted, geometry );
+        else
+            SourceQuad( DTid, energy, weighted, geometry );
         Energy[DTid] = energy;
         Centroid[DTid] = weighted;
         Geometry[DTid] = geometry;

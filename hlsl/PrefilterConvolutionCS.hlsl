@@ -4,8 +4,7 @@
 // or, with Weighting 1, W_t = D(N.H) G1(N.L), Smith-Schlick's G1 with k = roughness² / 2: the
 // split sum's own reflected lobe at N = V (runtime/shading/lobe_table.hpp).
 // Texels are visited as a tree over ClusterCubeCS's energy pyramid (Barnes & Hut's), whose level
-// 0 is the source's texels themselves (made where the walk reaches one) and level n > 0 the
-// pyramid's mip n - 1: a block
+// 0 is the source's texels themselves (LoadBlock) and level n > 0 blocks of 2^n x 2^n: a block
 // far from N (its centre more than Refine of its own widths away) is one term, its light taken
 // by its mean direction and spread (the luminance-weighted first moment of its directions), so
 // a sun keeps its exact position at every level; the lobe is averaged over that spread to
@@ -18,6 +17,10 @@
 #include "Common/PBR.fxh"
 #include "Common/EnergyPyramid.fxh"
 
+#ifndef SOURCE_TEXELS_IN_PYRAMID
+#define SOURCE_TEXELS_IN_PYRAMID 0
+#endif
+
 cbuffer PrefilterConvolutionParameter : register( b0 )
 {
     float Roughness; // > 0
@@ -28,17 +31,26 @@ cbuffer PrefilterConvolutionParameter : register( b0 )
     uint Weighting;    // 0: N.L, as the documents; 1: G1(N.L)
 };
 
+#if !SOURCE_TEXELS_IN_PYRAMID
 Texture2DArray<float4> Source; // the radiance cube the pyramid was made from
 Texture2D<float> TexelSolidAngle; // ClusterCubeCS's table of its texels' solid angles
+#endif
 Texture2DArray<float4> Energy;
 Texture2DArray<float4> Centroid;
 Texture2DArray<float4> Geometry;
 RWTexture2DArray<float4> Prefiltered;
 
-// Block (face, xy) of tree level `level` of a source of baseSize² texels per face: a source
-// texel at level 0, the pyramid's mip level - 1 above it.
+// Block (face, xy) of tree level `level` of a source of baseSize² texels per face. With
+// SOURCE_TEXELS_IN_PYRAMID, the pyramid is as wide as the source and its mip `level` is the level.
+// Without, the pyramid is half as wide: a source texel is made here at level 0, and the pyramid's
+// mip level - 1 read above it. (CPU drivers run both sides of a branch for their whole vector of
+// texels, so the first form spares every step of the walk the second's two loads and a direction;
+// the second spares a large source three RGBA32F cubes of its size.)
 void LoadBlock( uint face, uint2 xy, uint level, uint baseSize, out float4 energy, out float4 weighted, out float4 geometry )
 {
+#if SOURCE_TEXELS_IN_PYRAMID
+    int4 at = int4( xy, face, level );
+#else
     if ( level == 0u )
     {
         SourceTexelBlock( Source.Load( int4( xy, face, 0 ) ).rgb, face, xy, baseSize, TexelSolidAngle.Load( int3( xy, 0 ) ),
@@ -46,6 +58,7 @@ void LoadBlock( uint face, uint2 xy, uint level, uint baseSize, out float4 energ
         return;
     }
     int4 at = int4( xy, face, level - 1u );
+#endif
     energy = Energy.Load( at );
     weighted = Centroid.Load( at );
     geometry = Geometry.Load( at );
@@ -220,7 +233,12 @@ void main( uint3 DTid : SV_DispatchThreadId )
     float3 normal = CubeFaceDirection( DTid.z, ( float2( DTid.xy ) + 0.5f ) / float( dims.x ) );
 
     uint baseSize = 0, baseHeight = 0, layers = 0;
+#if SOURCE_TEXELS_IN_PYRAMID
+    uint mips = 0;
+    Energy.GetDimensions( 0, baseSize, baseHeight, layers, mips );
+#else
     Source.GetDimensions( baseSize, baseHeight, layers );
+#endif
 
     float3 radiance = 0.f;
     float weight = 0.f;

@@ -2,6 +2,7 @@
 
 #include "kernels/built_in_kernels.hpp"
 #include "kernels/compiled_kernel_cache.hpp"
+#include "kernels/convolution_method.hpp"
 #include "kernels/grid_lut_method.hpp"
 #include "shading_maps.hpp"
 
@@ -75,7 +76,8 @@ void precompileBakeKernels(const std::filesystem::path& folder) {
         kernels::compileKernel(kernels::kernelFor(role));
     // The default prefilter (kernels/convolution_method.hpp) and LUT (kernels/grid_lut_method.hpp).
     kernels::compileKernel(kernels::kernelFor(KernelRole::ClusterCube));
-    kernels::compileKernel(kernels::kernelFor(KernelRole::PrefilterConvolution, kDefaultSpecularMethod));
+    for (const bool sourceTexelsInPyramid : {true, false})
+        kernels::compileConvolutionWalk(kDefaultSpecularMethod, sourceTexelsInPyramid);
     kernels::compileGridLutNodes(kernels::kDefaultQuadratureNodes);
     kernels::compileGridLutResample();
     if (store.counts().unwritable > 0) throw std::runtime_error(folder.string() + ": cannot write the built-in kernels");

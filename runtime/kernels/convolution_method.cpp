@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include <fmt/core.h>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -52,16 +53,30 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
     return {topLevel, fineLevel, float(std::clamp(refine, 1.0, 1e4)), horizonLevel};
 }
 
+bool pyramidHoldsSourceTexels(uint32_t sourceSize) { return sourceSize <= kMaxSourceTexelsInPyramid; }
+
+KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid, const ShaderFiles& files) {
+    const std::map<std::string, std::string> defines{{"SOURCE_TEXELS_IN_PYRAMID", sourceTexelsInPyramid ? "1" : "0"}};
+    return compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), defines, {}, files);
+}
+
 ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method,
                                            uint32_t budget, const ShaderFiles& files)
-    : context_(context), budget_(budget),
+    : context_(context), method_(method), files_(files), budget_(budget),
       cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)),
-      convolve_(context, compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), {}, {}, files)) {
+      walkInPyramid_(context, compileConvolutionWalk(method, true, files)) {
     requireBudget(budget);
 }
 
+Kernel& ConvolutionPrefilter::walkFor(const EnergyPyramid& pyramid) {
+    if (pyramid.holdsSourceTexels) return walkInPyramid_;
+    if (!walkMakingTexels_) walkMakingTexels_.emplace(context_, compileConvolutionWalk(method_, false, files_));
+    return *walkMakingTexels_;
+}
+
 void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
-    const uint32_t size = pyramidSize(source.desc().width);
+    holdsSourceTexels_ = pyramidHoldsSourceTexels(source.desc().width);
+    const uint32_t size = holdsSourceTexels_ ? source.desc().width : pyramidSize(source.desc().width);
     const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
     const uint32_t mips = vulkan::fullMipCount(size, size);
     energy_.emplace(context_, vulkan::ImageDesc{"Energy", &rgba32, size, size, 6, mips, true, true});
@@ -77,11 +92,14 @@ void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
 void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness) {
     const auto plan = planConvolution(source.desc().width, roughness, budget_);
     if (pyramidSource_ != &source) buildPyramid(source);
-    runPrefilterConvolution(convolve_, source, pyramid(), target, mip,
+    const auto walked = pyramid();
+    runPrefilterConvolution(walkFor(walked), source, walked, target, mip,
                             {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, uint32_t(weighting_)});
 }
 
-EnergyPyramid ConvolutionPrefilter::pyramid() { return {*energy_, *centroid_, *geometry_, *texelSolidAngle_}; }
+EnergyPyramid ConvolutionPrefilter::pyramid() {
+    return {*energy_, *centroid_, *geometry_, *texelSolidAngle_, holdsSourceTexels_};
+}
 
 void ConvolutionPrefilter::releasePyramids() {
     energy_.reset();
@@ -93,7 +111,8 @@ void ConvolutionPrefilter::releasePyramids() {
 
 DispatchTotals ConvolutionPrefilter::takeTotals() {
     auto totals = cluster_.takeTotals();
-    totals += convolve_.takeTotals();
+    totals += walkInPyramid_.takeTotals();
+    if (walkMakingTexels_) totals += walkMakingTexels_->takeTotals();
     return totals;
 }
 

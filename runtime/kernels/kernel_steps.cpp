@@ -95,7 +95,7 @@ void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyrami
     kernel.program().bind("EnergyIn", pyramid.energy);
     kernel.program().bind("CentroidIn", pyramid.centroid);
     kernel.program().bind("GeometryIn", pyramid.geometry);
-    if (source.desc().width < 2) { // no block of more than one texel: the one texel is a face
+    if (!pyramid.holdsSourceTexels && source.desc().width < 2) { // no block of more than one texel: the one texel is a face
         pyramid.texelSolidAngle.upload(kernel.context(), std::vector<float>{float(4 * std::numbers::pi / 6)});
         return;
     }
@@ -114,8 +114,10 @@ uint32_t pyramidSize(uint32_t sourceSize) { return std::max(sourceSize / 2, 1u);
 
 void runPrefilterConvolution(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid, vulkan::Image& target,
                              uint32_t mip, const PrefilterConvolutionParameters& parameters) {
-    kernel.program().bind("Source", source);
-    kernel.program().bind("TexelSolidAngle", pyramid.texelSolidAngle);
+    if (!pyramid.holdsSourceTexels) {
+        kernel.program().bind("Source", source);
+        kernel.program().bind("TexelSolidAngle", pyramid.texelSolidAngle);
+    }
     kernel.program().bind("Energy", pyramid.energy);
     kernel.program().bind("Centroid", pyramid.centroid);
     kernel.program().bind("Geometry", pyramid.geometry);

@@ -76,11 +76,14 @@ void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampl
 // blocks of 2^(n+1) source texels across), with a full mip chain, sampled and storage; a 1x1
 // source, which has no block of more than one texel, gets 1x1 pyramids that nothing reads. With
 // them, the solid angle of each of the source's texels (R32F, one face's: the same on all six).
+// As wide as the source with holdsSourceTexels, its mip 0 the source's texels themselves (for
+// PrefilterConvolution compiled with SOURCE_TEXELS_IN_PYRAMID); else pyramidSize(source) wide.
 struct EnergyPyramid {
     vulkan::Image& energy;
     vulkan::Image& centroid;
     vulkan::Image& geometry;
     vulkan::Image& texelSolidAngle;
+    bool holdsSourceTexels = false;
 };
 
 // ClusterCube: every level of `pyramid` from mip 0 of `source`, each level from the one below.
@@ -89,7 +92,9 @@ void runClusterPyramid(Kernel& kernel, vulkan::Image& source, const EnergyPyrami
 // The pyramids' face size for a source of `sourceSize`.
 uint32_t pyramidSize(uint32_t sourceSize);
 
-// PrefilterConvolution: one mip of `target` from `source` and the pyramid runClusterPyramid made of it.
+// PrefilterConvolution: one mip of `target` from `source` and the pyramid runClusterPyramid made of
+// it, by a kernel compiled for the pyramid's layout (with SOURCE_TEXELS_IN_PYRAMID where it holds
+// the source's texels).
 void runPrefilterConvolution(Kernel& kernel, vulkan::Image& source, const EnergyPyramid& pyramid, vulkan::Image& target,
                              uint32_t mip, const PrefilterConvolutionParameters& parameters);
 
