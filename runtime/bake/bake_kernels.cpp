@@ -35,14 +35,12 @@ BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSetting
         return Specular{millisecondsSince(start), std::move(specular), std::move(preview), std::move(downsample)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.lutMethod,
-                                                 count = resolvedLutSamples(settings), needed = outputs.lut,
-                                                 weighting = resolvedRecipe(settings).weighting] {
+                                                 count = resolvedLutSamples(settings), needed = outputs.lut] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
         const kernels::CountKernelCompiles counting(counter);
         auto lut = needed ? std::make_unique<kernels::LutMethod>(context, method, count) : nullptr;
         auto irradiance = std::make_unique<IrradianceKernels>(context);
-        lobeTableOf(weighting); // the preview's, off the bake's path (48 ms)
         return Lut{millisecondsSince(start), std::move(lut), std::move(irradiance)};
     });
 }

@@ -5,6 +5,7 @@
 #include "kernels/kernel_steps.hpp"
 #include "reference_irradiance.hpp"
 #include "shading/built_glass_tables.hpp"
+#include "shading/built_lobe_tables.hpp"
 #include "shading/disk_light.hpp"
 #include "shading/sphere_transmission.hpp"
 #include "shading/transmission_table.hpp"
@@ -84,14 +85,14 @@ void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
     irradiance.upload(context, values);
 }
 
-// The table depends on the weighting alone: computed once per process (48 ms), not once per bake.
+// The table depends on the weighting alone: computed when the kit was built (built_lobe_tables.hpp).
 const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting) {
-    static std::mutex mutex;
-    static std::map<shading::LobeWeighting, std::vector<float>> tables;
-    const std::lock_guard lock(mutex);
-    auto found = tables.find(weighting);
-    if (found == tables.end()) found = tables.emplace(weighting, shading::lobeTable(shading::kLobeTableSize, weighting)).first;
-    return found->second;
+    static const auto copied = [](shading::LobeWeighting of) {
+        const auto table = shading::builtLobeTable(of);
+        return std::vector<float>(table.begin(), table.end());
+    };
+    static const std::vector<float> byNdotL = copied(shading::LobeWeighting::NdotL), byG1 = copied(shading::LobeWeighting::G1);
+    return weighting == shading::LobeWeighting::G1 ? byG1 : byNdotL;
 }
 
 vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting) {
