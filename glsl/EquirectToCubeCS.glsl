@@ -4,7 +4,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, std140) uniform EquirectToCubeParameter
 {
     uint Supersample;
-} _298;
+} _312;
 
 layout(binding = 0, rgba32f) uniform writeonly image2DArray Cube;
 layout(binding = 0) uniform sampler2D Equirect;
@@ -14,100 +14,104 @@ void main()
     uvec3 param = gl_GlobalInvocationID;
     do
     {
-        uvec3 _385 = uvec3(0u);
-        uvec3 _386 = uvec3(imageSize(Cube));
-        _385.x = _386.x;
-        _385.y = _386.y;
-        _385.z = _386.z;
-        if (any(greaterThanEqual(gl_GlobalInvocationID, _385)))
+        uvec3 _399 = uvec3(0u);
+        uvec3 _400 = uvec3(imageSize(Cube));
+        _399.x = _400.x;
+        _399.y = _400.y;
+        _399.z = _400.z;
+        if (any(greaterThanEqual(gl_GlobalInvocationID, _399)))
         {
             break;
         }
-        uvec2 _387 = uvec2(0u);
-        uvec2 _388 = uvec2(textureSize(Equirect, 0));
-        _387.x = _388.x;
-        _387.y = _388.y;
-        vec3 _779;
-        _779 = vec3(0.0);
-        vec3 _788;
-        for (uint _778 = 0u; _778 < _298.Supersample; _779 = _788, _778++)
+        uvec2 _401 = uvec2(0u);
+        uvec2 _402 = uvec2(textureSize(Equirect, 0));
+        _401.x = _402.x;
+        _401.y = _402.y;
+        vec3 _849;
+        _849 = vec3(0.0);
+        vec3 _858;
+        for (uint _848 = 0u; _848 < _312.Supersample; _849 = _858, _848++)
         {
-            _788 = _779;
-            vec3 _469;
-            for (uint _780 = 0u; _780 < _298.Supersample; _788 = _469, _780++)
+            _858 = _849;
+            vec3 _483;
+            for (uint _850 = 0u; _850 < _312.Supersample; _858 = _483, _850++)
             {
-                vec2 _395 = (((vec2(gl_GlobalInvocationID.xy) + ((vec2(float(_780), float(_778)) + vec2(0.5)) / vec2(float(_298.Supersample)))) / vec2(_385.xy)) - vec2(0.5)) * vec2(2.0, -2.0);
-                vec3 _782;
+                vec2 _409 = (((vec2(gl_GlobalInvocationID.xy) + ((vec2(float(_850), float(_848)) + vec2(0.5)) / vec2(float(_312.Supersample)))) / vec2(_399.xy)) - vec2(0.5)) * vec2(2.0, -2.0);
+                vec3 _852;
                 if (param.z == 0u)
                 {
-                    _782 = vec3(1.0, _395.y, -_395.x);
+                    _852 = vec3(1.0, _409.y, -_409.x);
                 }
                 else
                 {
-                    vec3 _783;
+                    vec3 _853;
                     if (param.z == 1u)
                     {
-                        _783 = vec3(-1.0, _395.y, _395.x);
+                        _853 = vec3(-1.0, _409.y, _409.x);
                     }
                     else
                     {
-                        vec3 _784;
+                        vec3 _854;
                         if (param.z == 2u)
                         {
-                            _784 = vec3(_395.x, 1.0, -_395.y);
+                            _854 = vec3(_409.x, 1.0, -_409.y);
                         }
                         else
                         {
-                            vec3 _785;
+                            vec3 _855;
                             if (param.z == 3u)
                             {
-                                _785 = vec3(_395.x, -1.0, _395.y);
+                                _855 = vec3(_409.x, -1.0, _409.y);
                             }
                             else
                             {
-                                vec3 _786;
+                                vec3 _856;
                                 if (param.z == 4u)
                                 {
-                                    _786 = vec3(_395.x, _395.y, 1.0);
+                                    _856 = vec3(_409.x, _409.y, 1.0);
                                 }
                                 else
                                 {
-                                    _786 = vec3(-_395.x, _395.y, -1.0);
+                                    _856 = vec3(-_409.x, _409.y, -1.0);
                                 }
-                                _785 = _786;
+                                _855 = _856;
                             }
-                            _784 = _785;
+                            _854 = _855;
                         }
-                        _783 = _784;
+                        _853 = _854;
                     }
-                    _782 = _783;
+                    _852 = _853;
                 }
-                ivec2 _465 = ivec2(_387);
-                vec3 _563 = normalize(_782);
-                vec2 _585 = fma(vec2(fma(atan(_563.x, -_563.z), 0.15915493667125701904296875, 0.5), acos(clamp(_563.y, -1.0, 1.0)) * 0.3183098733425140380859375), vec2(_465), vec2(-0.5));
-                vec2 _587 = floor(_585);
-                vec2 _565 = _585 - _587;
-                ivec2 _592 = ivec2(_587);
-                ivec2 _568 = _592;
-                ivec2 _569 = _465;
-                _568.x = ((_568.x % _569.x) + _569.x) % _569.x;
-                _568.y = clamp(_568.y, 0, _569.y - 1);
-                ivec2 _570 = _592 + ivec2(1, 0);
-                ivec2 _571 = _465;
-                _570.x = ((_570.x % _571.x) + _571.x) % _571.x;
-                _570.y = clamp(_570.y, 0, _571.y - 1);
-                ivec2 _573 = _592 + ivec2(0, 1);
-                ivec2 _574 = _465;
-                _573.x = ((_573.x % _574.x) + _574.x) % _574.x;
-                _573.y = clamp(_573.y, 0, _574.y - 1);
-                ivec2 _575 = _592 + ivec2(1);
-                ivec2 _576 = _465;
-                _575.x = ((_575.x % _576.x) + _576.x) % _576.x;
-                _575.y = clamp(_575.y, 0, _576.y - 1);
-                _469 = _788 + mix(mix(texelFetch(Equirect, ivec3(_568, 0).xy, 0).xyz, texelFetch(Equirect, ivec3(_570, 0).xy, 0).xyz, vec3(_565.x)), mix(texelFetch(Equirect, ivec3(_573, 0).xy, 0).xyz, texelFetch(Equirect, ivec3(_575, 0).xy, 0).xyz, vec3(_565.x)), vec3(_565.y));
+                ivec2 _479 = ivec2(_401);
+                vec3 _577 = normalize(_852);
+                vec2 _599 = fma(vec2(fma(atan(_577.x, -_577.z), 0.15915493667125701904296875, 0.5), acos(clamp(_577.y, -1.0, 1.0)) * 0.3183098733425140380859375), vec2(_479), vec2(-0.5));
+                vec2 _601 = floor(_599);
+                vec2 _579 = _599 - _601;
+                ivec2 _606 = ivec2(_601);
+                ivec2 _582 = _606;
+                ivec2 _583 = _479;
+                _582.x += ((_582.x < 0) ? _583.x : ((_582.x >= _583.x) ? (-_583.x) : 0));
+                _582.x = clamp(_582.x, 0, _583.x - 1);
+                _582.y = clamp(_582.y, 0, _583.y - 1);
+                ivec2 _584 = _606 + ivec2(1, 0);
+                ivec2 _585 = _479;
+                _584.x += ((_584.x < 0) ? _585.x : ((_584.x >= _585.x) ? (-_585.x) : 0));
+                _584.x = clamp(_584.x, 0, _585.x - 1);
+                _584.y = clamp(_584.y, 0, _585.y - 1);
+                ivec2 _587 = _606 + ivec2(0, 1);
+                ivec2 _588 = _479;
+                _587.x += ((_587.x < 0) ? _588.x : ((_587.x >= _588.x) ? (-_588.x) : 0));
+                _587.x = clamp(_587.x, 0, _588.x - 1);
+                _587.y = clamp(_587.y, 0, _588.y - 1);
+                ivec2 _589 = _606 + ivec2(1);
+                ivec2 _590 = _479;
+                _589.x += ((_589.x < 0) ? _590.x : ((_589.x >= _590.x) ? (-_590.x) : 0));
+                _589.x = clamp(_589.x, 0, _590.x - 1);
+                _589.y = clamp(_589.y, 0, _590.y - 1);
+                _483 = _858 + mix(mix(texelFetch(Equirect, ivec3(_582, 0).xy, 0).xyz, texelFetch(Equirect, ivec3(_584, 0).xy, 0).xyz, vec3(_579.x)), mix(texelFetch(Equirect, ivec3(_587, 0).xy, 0).xyz, texelFetch(Equirect, ivec3(_589, 0).xy, 0).xyz, vec3(_579.x)), vec3(_579.y));
             }
         }
-        imageStore(Cube, ivec3(gl_GlobalInvocationID), vec4(_779 / vec3(float(_298.Supersample * _298.Supersample)), 1.0));
+        imageStore(Cube, ivec3(gl_GlobalInvocationID), vec4(_849 / vec3(float(_312.Supersample * _312.Supersample)), 1.0));
         break;
     } while(false);
 }

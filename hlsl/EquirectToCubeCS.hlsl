@@ -11,10 +11,13 @@ cbuffer EquirectToCubeParameter : register( b0 )
 Texture2D<float4> Equirect;
 RWTexture2DArray<float4> Cube;
 
-// Longitude wraps around; latitude stops at the poles.
+// Longitude wraps around; latitude stops at the poles. A bilinear read's column is -1 to
+// dims.x, so one step either way wraps it (where a remainder would be an integer division per
+// lane on CPU drivers, most of this kernel's time there); the clamp keeps any other in the image.
 float3 EquirectTexel( int2 texel, int2 dims )
 {
-    texel.x = ( texel.x % dims.x + dims.x ) % dims.x;
+    texel.x += texel.x < 0 ? dims.x : ( texel.x >= dims.x ? -dims.x : 0 );
+    texel.x = clamp( texel.x, 0, dims.x - 1 );
     texel.y = clamp( texel.y, 0, dims.y - 1 );
     return Equirect.Load( int3( texel, 0 ) ).rgb;
 }
