@@ -30,11 +30,10 @@ Bounds tableBounds() { return {1.8e-4, 1.7e-6, 1e-3, 6e-5}; }
 Bounds pyramidBounds() { return {1.6e-5, 5e-7, 1.7e-5, 5.3e-7}; }
 Bounds ringBounds() { return {3.8e-6, 2.7e-7, 4.8e-6, 3e-7}; }
 
-std::string knownDivergence(const std::string& kernel, const std::string& path) {
-    if (kernel == "PrefilterConvolutionCS" && path.starts_with("b."))
-        return "lavapipe runs PrefilterConvolutionCS's -O SPIR-V wrong";
-    return {};
-}
+// None is known now. PrefilterConvolutionCS's -O SPIR-V ran wrong on lavapipe (up to 16 relative)
+// while its walk climbed the tree in a loop nested in the walk's own; it climbs without one now, and
+// the -O form is within the convolution's bounds on every row.
+std::string knownDivergence(const std::string&, const std::string&) { return {}; }
 Bounds previewBounds() { return {1e-6, 1e-7, 1e-6, 1e-7}; }
 Bounds pbrProbeBounds() { return {1.4e-6, 1.5e-7, 1.1e-6, 1.6e-7}; }
 Bounds lutProbeBounds() { return {1.2e-6, 2.4e-7, 2.4e-6, 6e-7}; }
@@ -133,14 +132,11 @@ std::string boundsRationale() {
            "the same tree over the float reference's pyramid (uploaded, so that the row measures the convolution "
            "alone) and lands 6.7e-6 from float, 7.2e-6 from double, RMS 4.6e-7 and 6.9e-7 (5.5e-7 on OpenGL), on "
            "values up to ~9.\n"
-           "- **Known divergence: PrefilterConvolution on path b.** The -O form returns wrong values (largest "
-           "error 3.4–3.7, RMS 0.4, on values up to ~9; 15–16 and 0.8 before the walk read each block once): "
-           "on lavapipe (Mesa 22.3), SPIRV-Tools 2023.1's "
-           "performance passes turn the tree walk into SPIR-V that llvmpipe executes wrong. The -O SPIR-V itself "
-           "is right: SPIRV-Cross's HLSL of it, compiled again without -O, matches the reference on lavapipe to "
-           "6e-6 (tried with the walk as one loop, as two nested loops, with and without a struct, with single-exit "
-           "functions: the same). The kit's own runs compile without -O; the row is kept, expected to fail, so "
-           "that the day it passes the entry goes.\n"
+           "- **PrefilterConvolution on path b** was a known divergence: its -O form returned wrong values on "
+           "lavapipe (Mesa 22.3; largest error 3.4–3.7, RMS 0.4, on values up to ~9) while the walk climbed the tree "
+           "in a loop of its own inside the walk's (SPIRV-Tools 2023.1's performance passes made SPIR-V that llvmpipe "
+           "executed wrong; SPIRV-Cross's HLSL of it, compiled again without -O, was right). The walk climbs without a "
+           "loop now, and the -O form lands where the other paths do; the entry is gone.\n"
            "- **Preview** (max 1e-6, RMS 1e-7): no C++ reference — sampling a cube with trilinear, seamless filtering "
            "(and llvmpipe's choice at cube corners, which every texel of the 1x1 and 2x2 mips touches) is the texture "
            "unit's business, and a reference of it would measure the reference — so paths b, c, e and d are compared "
