@@ -53,16 +53,14 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
     return {topLevel, fineLevel, float(std::clamp(refine, 1.0, 1e4)), horizonLevel};
 }
 
-bool pyramidHoldsSourceTexels(uint32_t sourceSize) { return sourceSize <= kMaxSourceTexelsInPyramid; }
-
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid, const ShaderFiles& files) {
     const std::map<std::string, std::string> defines{{"SOURCE_TEXELS_IN_PYRAMID", sourceTexelsInPyramid ? "1" : "0"}};
     return compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), defines, {}, files);
 }
 
 ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method,
-                                           uint32_t budget, const ShaderFiles& files)
-    : context_(context), method_(method), files_(files), budget_(budget),
+                                           uint32_t budget, const ShaderFiles& files, uint32_t maxSourceTexelsInPyramid)
+    : context_(context), method_(method), files_(files), budget_(budget), maxSourceTexelsInPyramid_(maxSourceTexelsInPyramid),
       cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)),
       walkInPyramid_(context, compileConvolutionWalk(method, true, files)) {
     requireBudget(budget);
@@ -75,7 +73,7 @@ Kernel& ConvolutionPrefilter::walkFor(const EnergyPyramid& pyramid) {
 }
 
 void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
-    holdsSourceTexels_ = pyramidHoldsSourceTexels(source.desc().width);
+    holdsSourceTexels_ = source.desc().width <= maxSourceTexelsInPyramid_;
     const uint32_t size = holdsSourceTexels_ ? source.desc().width : pyramidSize(source.desc().width);
     const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
     const uint32_t mips = vulkan::fullMipCount(size, size);

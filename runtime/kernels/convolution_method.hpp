@@ -45,7 +45,6 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
 // cubes of the source's size (72 MiB at 512², 288 MiB at 1024²), and a walk that reads every
 // block alike, 0.78 of the time of one that makes single texels where it reaches them.
 inline constexpr uint32_t kMaxSourceTexelsInPyramid = 512;
-bool pyramidHoldsSourceTexels(uint32_t sourceSize);
 
 // PrefilterConvolution for a pyramid that holds the source's texels, or for one half its width.
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid,
@@ -56,8 +55,10 @@ KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexel
 // compiled at once; the other when a larger source first needs it.
 class ConvolutionPrefilter {
 public:
+    // Sources up to `maxSourceTexelsInPyramid` wide keep their texels in the pyramid.
     ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t budget,
-                         const ShaderFiles& files = embeddedShaderFiles());
+                         const ShaderFiles& files = embeddedShaderFiles(),
+                         uint32_t maxSourceTexelsInPyramid = kMaxSourceTexelsInPyramid);
     // Writes mip `mip` of `target` (RGBA32F, storage) from mip 0 of `source` at `roughness`.
     // `source` must keep its texels while this object runs on it.
     void run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness);
@@ -73,7 +74,7 @@ private:
     const vulkan::VulkanContext& context_;
     std::string method_;
     ShaderFiles files_;
-    uint32_t budget_;
+    uint32_t budget_, maxSourceTexelsInPyramid_;
     shading::LobeWeighting weighting_ = shading::LobeWeighting::NdotL;
     Kernel cluster_, walkInPyramid_;
     std::optional<Kernel> walkMakingTexels_;

@@ -61,10 +61,25 @@ TEST_F(ConvolutionLayouts, SumTheSameBlocksBitForBit) {
     EXPECT_EQ(planConvolution(kSourceSize, 0.05f, 128).fineLevel, 0u) << "the narrowest lobe reaches single texels";
 }
 
-TEST_F(ConvolutionLayouts, SourcesUpTo512HoldTheirTexels) {
-    EXPECT_TRUE(pyramidHoldsSourceTexels(256));
-    EXPECT_TRUE(pyramidHoldsSourceTexels(512));
-    EXPECT_FALSE(pyramidHoldsSourceTexels(1024)) << "three more RGBA32F cubes of 1024² would be 288 MiB";
+// ConvolutionPrefilter picks the layout by the source's width: a 32² source past a limit of 16 is
+// walked through the half-width pyramid, by the walk compiled when it is first needed.
+TEST_F(ConvolutionLayouts, ThePrefilterWalksEitherLayoutToTheSameMips) {
+    auto from = source();
+    const vulkan::Sampler linear(context(), {});
+    const auto prefiltered = [&](uint32_t maxSourceTexelsInPyramid) {
+        auto target = cube("Target", kSourceSize, 4);
+        ConvolutionPrefilter prefilter(context(), "convolution", 128, embeddedShaderFiles(), maxSourceTexelsInPyramid);
+        prefilter.setWeighting(shading::LobeWeighting::G1);
+        for (uint32_t mip = 1; mip < 4; ++mip) prefilter.run(from, target, mip, 0.1f * float(mip * mip));
+        const uint32_t pyramidWidth = kSourceSize <= maxSourceTexelsInPyramid ? kSourceSize : kSourceSize / 2;
+        EXPECT_EQ(prefilter.takeTotals().dispatches, uint32_t(std::bit_width(pyramidWidth)) + 3u)
+            << "the pyramid's levels once (as wide as the source, or half), then one walk per mip";
+        const auto values = target.download(context()); // mip 0 is never written
+        return std::vector<float>(values.begin() + long(target.valueOffset(1, 0)), values.end());
+    };
+    const auto inPyramid = prefiltered(kMaxSourceTexelsInPyramid), madeByTheWalk = prefiltered(16);
+    EXPECT_EQ(inPyramid, madeByTheWalk);
+    EXPECT_GE(kMaxSourceTexelsInPyramid, 512u) << "the default bake's sources and the next size up keep their texels";
 }
 
 } // namespace
