@@ -65,203 +65,202 @@ struct ClusterParameter
     uint Level;
 };
 
-kernel void main0(constant ClusterParameter& _456 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant ClusterParameter& _444 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _831 = uint3(0u);
-        uint3 _832 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
-        _831.x = _832.x;
-        _831.y = _832.y;
-        _831.z = _832.z;
-        if (any(gl_GlobalInvocationID >= _831))
+        uint3 _821 = uint3(0u);
+        uint3 _822 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
+        _821.x = _822.x;
+        _821.y = _822.y;
+        _821.z = _822.z;
+        if (any(gl_GlobalInvocationID >= _821))
         {
             break;
         }
-        if (_456.Level == 0u)
+        if (_444.Level == 0u)
         {
-            uint3 _836 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
-            float4 _1851;
-            float4 _1852;
-            float4 _1853;
-            if (_831.x == _836.x)
+            uint3 _826 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
+            float4 _1831;
+            float4 _1832;
+            float4 _1833;
+            if (_821.x == _826.x)
             {
-                uint3 _840 = gl_GlobalInvocationID;
-                uint2 _1200 = gl_GlobalInvocationID.xy;
-                float _1267 = float(_836.x);
-                float _1268 = 1.0 / _1267;
-                float _1275 = fma(2.0 * float(_1200.x), _1268, -1.0);
-                float _1282 = fma(2.0 * float(_1200.y), _1268, -1.0);
-                float _1286 = _1275 + (2.0 / _1267);
-                float _1290 = _1282 + (2.0 / _1267);
-                float _1305 = ((precise::atan2(_1275 * _1282, sqrt(fma(_1275, _1275, _1282 * _1282) + 1.0)) - precise::atan2(_1275 * _1290, sqrt(fma(_1275, _1275, _1290 * _1290) + 1.0))) - precise::atan2(_1286 * _1282, sqrt(fma(_1286, _1286, _1282 * _1282) + 1.0))) + precise::atan2(_1286 * _1290, sqrt(fma(_1286, _1286, _1290 * _1290) + 1.0));
-                if (_840.z == 0u)
+                uint3 _830 = gl_GlobalInvocationID;
+                uint2 _1192 = gl_GlobalInvocationID.xy;
+                float _1259 = float(_826.x);
+                float _1260 = 1.0 / _1259;
+                float _1267 = fma(2.0 * float(_1192.x), _1260, -1.0);
+                float _1274 = fma(2.0 * float(_1192.y), _1260, -1.0);
+                float _1278 = _1267 + (2.0 / _1259);
+                float _1282 = _1274 + (2.0 / _1259);
+                float _1297 = ((precise::atan2(_1267 * _1274, sqrt(fma(_1267, _1267, _1274 * _1274) + 1.0)) - precise::atan2(_1267 * _1282, sqrt(fma(_1267, _1267, _1282 * _1282) + 1.0))) - precise::atan2(_1278 * _1274, sqrt(fma(_1278, _1278, _1274 * _1274) + 1.0))) + precise::atan2(_1278 * _1282, sqrt(fma(_1278, _1278, _1282 * _1282) + 1.0));
+                if (_830.z == 0u)
                 {
-                    TexelSolidAngle.write(float4(_1305), uint2(gl_GlobalInvocationID.xy));
+                    TexelSolidAngle.write(float4(_1297), uint2(gl_GlobalInvocationID.xy));
                 }
-                int3 _1231 = int4(int3(gl_GlobalInvocationID), 0).xyz;
-                float3 _1240 = Source.read(uint2(_1231.xy), uint(_1231.z), 0).xyz;
-                float2 _1368 = ((spvFAdd(float2(gl_GlobalInvocationID.xy), float2(0.5)) / float2(float(_836.x))) - float2(0.5)) * float2(2.0, -2.0);
-                float3 _1846;
-                if (_840.z == 0u)
+                int3 _1223 = int4(int3(gl_GlobalInvocationID), 0).xyz;
+                float3 _1232 = Source.read(uint2(_1223.xy), uint(_1223.z), 0).xyz;
+                float2 _1360 = ((spvFAdd(float2(gl_GlobalInvocationID.xy), float2(0.5)) / float2(float(_826.x))) - float2(0.5)) * float2(2.0, -2.0);
+                float3 _1826;
+                if (_830.z == 0u)
                 {
-                    _1846 = float3(1.0, _1368.y, -_1368.x);
+                    _1826 = float3(1.0, _1360.y, -_1360.x);
                 }
                 else
                 {
-                    float3 _1847;
-                    if (_840.z == 1u)
+                    float3 _1827;
+                    if (_830.z == 1u)
                     {
-                        _1847 = float3(-1.0, _1368.y, _1368.x);
+                        _1827 = float3(-1.0, _1360.y, _1360.x);
                     }
                     else
                     {
-                        float3 _1848;
-                        if (_840.z == 2u)
+                        float3 _1828;
+                        if (_830.z == 2u)
                         {
-                            _1848 = float3(_1368.x, 1.0, -_1368.y);
+                            _1828 = float3(_1360.x, 1.0, -_1360.y);
                         }
                         else
                         {
-                            float3 _1849;
-                            if (_840.z == 3u)
+                            float3 _1829;
+                            if (_830.z == 3u)
                             {
-                                _1849 = float3(_1368.x, -1.0, _1368.y);
+                                _1829 = float3(_1360.x, -1.0, _1360.y);
                             }
                             else
                             {
-                                float3 _1850;
-                                if (_840.z == 4u)
+                                float3 _1830;
+                                if (_830.z == 4u)
                                 {
-                                    _1850 = float3(_1368.x, _1368.y, 1.0);
+                                    _1830 = float3(_1360.x, _1360.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1850 = float3(-_1368.x, _1368.y, -1.0);
+                                    _1830 = float3(-_1360.x, _1360.y, -1.0);
                                 }
-                                _1849 = _1850;
+                                _1829 = _1830;
                             }
-                            _1848 = _1849;
+                            _1828 = _1829;
                         }
-                        _1847 = _1848;
+                        _1827 = _1828;
                     }
-                    _1846 = _1847;
+                    _1826 = _1827;
                 }
-                float3 _1482 = fast::normalize(_1846);
-                float _1388 = spvFMul(fast::max(dot(_1240, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1305);
-                _1853 = float4(_1482 * _1305, _1305);
-                _1852 = float4(_1482 * _1388, _1388);
-                _1851 = float4(_1240 * _1305, _1305);
+                float3 _1474 = fast::normalize(_1826);
+                float _1380 = spvFMul(fast::max(dot(_1232, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1297);
+                _1833 = float4(_1474 * _1297, _1297);
+                _1832 = float4(_1474 * _1380, _1380);
+                _1831 = float4(_1232 * _1297, _1297);
             }
             else
             {
-                uint3 _845 = gl_GlobalInvocationID;
-                uint3 _1486 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
-                float4 _1814;
-                float4 _1815;
-                float4 _1816;
-                _1816 = float4(0.0);
-                _1815 = float4(0.0);
-                _1814 = float4(0.0);
-                float4 _1570;
-                float4 _1573;
-                float4 _1576;
-                for (uint _1813 = 0u; _1813 < 4u; _1816 = _1576, _1815 = _1573, _1814 = _1570, _1813++)
+                uint3 _835 = gl_GlobalInvocationID;
+                float4 _1794;
+                float4 _1795;
+                float4 _1796;
+                _1796 = float4(0.0);
+                _1795 = float4(0.0);
+                _1794 = float4(0.0);
+                float4 _1550;
+                float4 _1553;
+                float4 _1556;
+                for (uint _1793 = 0u; _1793 < 4u; _1796 = _1556, _1795 = _1553, _1794 = _1550, _1793++)
                 {
-                    uint2 _1526 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1813 & 1u, _1813 >> uint(1));
-                    uint2 _1490 = _1526;
-                    float _1597 = float(_1486.x);
-                    float _1598 = 1.0 / _1597;
-                    float _1605 = fma(2.0 * float(_1490.x), _1598, -1.0);
-                    float _1612 = fma(2.0 * float(_1490.y), _1598, -1.0);
-                    float _1616 = _1605 + (2.0 / _1597);
-                    float _1620 = _1612 + (2.0 / _1597);
-                    float _1635 = ((precise::atan2(_1605 * _1612, sqrt(fma(_1605, _1605, _1612 * _1612) + 1.0)) - precise::atan2(_1605 * _1620, sqrt(fma(_1605, _1605, _1620 * _1620) + 1.0))) - precise::atan2(_1616 * _1612, sqrt(fma(_1616, _1616, _1612 * _1612) + 1.0))) + precise::atan2(_1616 * _1620, sqrt(fma(_1616, _1616, _1620 * _1620) + 1.0));
-                    if (_845.z == 0u)
+                    uint2 _1506 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1793 & 1u, _1793 >> uint(1));
+                    uint2 _1478 = _1506;
+                    float _1577 = float(_826.x);
+                    float _1578 = 1.0 / _1577;
+                    float _1585 = fma(2.0 * float(_1478.x), _1578, -1.0);
+                    float _1592 = fma(2.0 * float(_1478.y), _1578, -1.0);
+                    float _1596 = _1585 + (2.0 / _1577);
+                    float _1600 = _1592 + (2.0 / _1577);
+                    float _1615 = ((precise::atan2(_1585 * _1592, sqrt(fma(_1585, _1585, _1592 * _1592) + 1.0)) - precise::atan2(_1585 * _1600, sqrt(fma(_1585, _1585, _1600 * _1600) + 1.0))) - precise::atan2(_1596 * _1592, sqrt(fma(_1596, _1596, _1592 * _1592) + 1.0))) + precise::atan2(_1596 * _1600, sqrt(fma(_1596, _1596, _1600 * _1600) + 1.0));
+                    if (_835.z == 0u)
                     {
-                        TexelSolidAngle.write(float4(_1635), uint2(_1526));
+                        TexelSolidAngle.write(float4(_1615), uint2(_1506));
                     }
-                    int3 _1547 = int4(int2(_1526), int(_845.z), 0).xyz;
-                    float3 _1558 = Source.read(uint2(_1547.xy), uint(_1547.z), 0).xyz;
-                    float2 _1698 = ((spvFAdd(float2(_1526), float2(0.5)) / float2(float(_1486.x))) - float2(0.5)) * float2(2.0, -2.0);
-                    float3 _1817;
-                    if (_845.z == 0u)
+                    int3 _1527 = int4(int2(_1506), int(_835.z), 0).xyz;
+                    float3 _1538 = Source.read(uint2(_1527.xy), uint(_1527.z), 0).xyz;
+                    float2 _1678 = ((spvFAdd(float2(_1506), float2(0.5)) / float2(float(_826.x))) - float2(0.5)) * float2(2.0, -2.0);
+                    float3 _1797;
+                    if (_835.z == 0u)
                     {
-                        _1817 = float3(1.0, _1698.y, -_1698.x);
+                        _1797 = float3(1.0, _1678.y, -_1678.x);
                     }
                     else
                     {
-                        float3 _1818;
-                        if (_845.z == 1u)
+                        float3 _1798;
+                        if (_835.z == 1u)
                         {
-                            _1818 = float3(-1.0, _1698.y, _1698.x);
+                            _1798 = float3(-1.0, _1678.y, _1678.x);
                         }
                         else
                         {
-                            float3 _1819;
-                            if (_845.z == 2u)
+                            float3 _1799;
+                            if (_835.z == 2u)
                             {
-                                _1819 = float3(_1698.x, 1.0, -_1698.y);
+                                _1799 = float3(_1678.x, 1.0, -_1678.y);
                             }
                             else
                             {
-                                float3 _1820;
-                                if (_845.z == 3u)
+                                float3 _1800;
+                                if (_835.z == 3u)
                                 {
-                                    _1820 = float3(_1698.x, -1.0, _1698.y);
+                                    _1800 = float3(_1678.x, -1.0, _1678.y);
                                 }
                                 else
                                 {
-                                    float3 _1821;
-                                    if (_845.z == 4u)
+                                    float3 _1801;
+                                    if (_835.z == 4u)
                                     {
-                                        _1821 = float3(_1698.x, _1698.y, 1.0);
+                                        _1801 = float3(_1678.x, _1678.y, 1.0);
                                     }
                                     else
                                     {
-                                        _1821 = float3(-_1698.x, _1698.y, -1.0);
+                                        _1801 = float3(-_1678.x, _1678.y, -1.0);
                                     }
-                                    _1820 = _1821;
+                                    _1800 = _1801;
                                 }
-                                _1819 = _1820;
+                                _1799 = _1800;
                             }
-                            _1818 = _1819;
+                            _1798 = _1799;
                         }
-                        _1817 = _1818;
+                        _1797 = _1798;
                     }
-                    float3 _1812 = fast::normalize(_1817);
-                    float _1718 = spvFMul(fast::max(dot(_1558, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1635);
-                    _1570 = _1814 + float4(_1558 * _1635, _1635);
-                    _1573 = _1815 + float4(_1812 * _1718, _1718);
-                    _1576 = _1816 + float4(_1812 * _1635, _1635);
+                    float3 _1792 = fast::normalize(_1797);
+                    float _1698 = spvFMul(fast::max(dot(_1538, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1615);
+                    _1550 = _1794 + float4(_1538 * _1615, _1615);
+                    _1553 = _1795 + float4(_1792 * _1698, _1698);
+                    _1556 = _1796 + float4(_1792 * _1615, _1615);
                 }
-                _1853 = _1816;
-                _1852 = _1815;
-                _1851 = _1814;
+                _1833 = _1796;
+                _1832 = _1795;
+                _1831 = _1794;
             }
-            Energy.write(_1851, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Centroid.write(_1852, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Geometry.write(_1853, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Energy.write(_1831, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Centroid.write(_1832, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Geometry.write(_1833, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
             break;
         }
-        int2 _917 = int2(gl_GlobalInvocationID.xy) * int2(2);
-        int _921 = int(_456.Level) - 1;
-        int3 _931 = int4(_917, int(param.z), _921).xyz;
-        int3 _952 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
-        int3 _975 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
-        int3 _998 = int4(_917 + int2(1), int(param.z), _921).xyz;
-        int3 _1020 = int4(_917, int(param.z), _921).xyz;
-        int3 _1041 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
-        int3 _1064 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
-        int3 _1087 = int4(_917 + int2(1), int(param.z), _921).xyz;
-        int3 _1109 = int4(_917, int(param.z), _921).xyz;
-        int3 _1130 = int4(_917 + int2(1, 0), int(param.z), _921).xyz;
-        int3 _1153 = int4(_917 + int2(0, 1), int(param.z), _921).xyz;
-        int3 _1176 = int4(_917 + int2(1), int(param.z), _921).xyz;
-        Energy.write(((EnergyIn.read(uint2(_931.xy), uint(_931.z), _921) + EnergyIn.read(uint2(_952.xy), uint(_952.z), _921)) + EnergyIn.read(uint2(_975.xy), uint(_975.z), _921)) + EnergyIn.read(uint2(_998.xy), uint(_998.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Centroid.write(((CentroidIn.read(uint2(_1020.xy), uint(_1020.z), _921) + CentroidIn.read(uint2(_1041.xy), uint(_1041.z), _921)) + CentroidIn.read(uint2(_1064.xy), uint(_1064.z), _921)) + CentroidIn.read(uint2(_1087.xy), uint(_1087.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Geometry.write(((GeometryIn.read(uint2(_1109.xy), uint(_1109.z), _921) + GeometryIn.read(uint2(_1130.xy), uint(_1130.z), _921)) + GeometryIn.read(uint2(_1153.xy), uint(_1153.z), _921)) + GeometryIn.read(uint2(_1176.xy), uint(_1176.z), _921), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        int2 _909 = int2(gl_GlobalInvocationID.xy) * int2(2);
+        int _913 = int(_444.Level) - 1;
+        int3 _923 = int4(_909, int(param.z), _913).xyz;
+        int3 _944 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _967 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _990 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        int3 _1012 = int4(_909, int(param.z), _913).xyz;
+        int3 _1033 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _1056 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _1079 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        int3 _1101 = int4(_909, int(param.z), _913).xyz;
+        int3 _1122 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _1145 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _1168 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        Energy.write(((EnergyIn.read(uint2(_923.xy), uint(_923.z), _913) + EnergyIn.read(uint2(_944.xy), uint(_944.z), _913)) + EnergyIn.read(uint2(_967.xy), uint(_967.z), _913)) + EnergyIn.read(uint2(_990.xy), uint(_990.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Centroid.write(((CentroidIn.read(uint2(_1012.xy), uint(_1012.z), _913) + CentroidIn.read(uint2(_1033.xy), uint(_1033.z), _913)) + CentroidIn.read(uint2(_1056.xy), uint(_1056.z), _913)) + CentroidIn.read(uint2(_1079.xy), uint(_1079.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Geometry.write(((GeometryIn.read(uint2(_1101.xy), uint(_1101.z), _913) + GeometryIn.read(uint2(_1122.xy), uint(_1122.z), _913)) + GeometryIn.read(uint2(_1145.xy), uint(_1145.z), _913)) + GeometryIn.read(uint2(_1168.xy), uint(_1168.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

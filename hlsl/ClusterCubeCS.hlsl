@@ -22,10 +22,8 @@ RWTexture2DArray<float4> Geometry; // xyz: the sum of solid angle times directio
 RWTexture2D<float> TexelSolidAngle; // each source texel's (the same on every face), written with level 0
 
 // The four texels of the source below pyramid texel DTid, summed in the order of the levels above.
-void SourceQuad( uint3 DTid, out float4 energy, out float4 weighted, out float4 geometry )
+void SourceQuad( uint3 DTid, uint sourceSize, out float4 energy, out float4 weighted, out float4 geometry )
 {
-    uint sourceSize = 0, sourceHeight = 0, layers = 0;
-    Source.GetDimensions( sourceSize, sourceHeight, layers );
     energy = 0.f;
     weighted = 0.f;
     geometry = 0.f;
@@ -69,7 +67,7 @@ void main( uint3 DTid : SV_DispatchThreadId )
         if ( dims.x == sourceSize )
             SourceTexel( DTid, sourceSize, energy, weighted, geometry );
         else
-            SourceQuad( DTid, energy, weighted, geometry );
+            SourceQuad( DTid, sourceSize, energy, weighted, geometry );
         Energy[DTid] = energy;
         Centroid[DTid] = weighted;
         Geometry[DTid] = geometry;

@@ -215,9 +215,9 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
 // (Mesa's gallivm loop limiter: one counter per shader, for the SIMD vector of texels it runs
 // together) and past it ends them all without a word. Every iteration of the walk is a term or a
 // descent, and a descent opens a block into four, so there are at most 4/3 of an iteration per
-// term, each of them one iteration. The cost per term counted below, 3 + 2 x depth, is what it
-// was when NextBlock climbed in a loop of its own, (4/3) (2 + depth): kept, so that where the
-// budget binds the walk sums what it did, and conservative. Bright blocks open from farther away, so no budget
+// term, each of them one iteration. The cost per term counted below, 3 + 2 x depth, bounded that
+// when NextBlock climbed in a loop of its own ((4/3) (2 + depth) <= 3 + 2 x depth): kept, so that
+// where the budget binds the walk sums what it did, and now conservative. Bright blocks open from farther away, so no budget
 // bounds the walk of every environment: a texel stops opening blocks once its terms at that cost
 // leave only what the rest of its walk needs (the top level's blocks and at most three siblings
 // per level, taken whole).

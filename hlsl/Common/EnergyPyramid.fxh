@@ -9,11 +9,13 @@ static const float3 PYRAMID_LUMINANCE = float3( 0.2126f, 0.7152f, 0.0722f );
 // Texel xy of face `face` of a size x size source, holding `radiance` over `solidAngle`
 // (CubeTexelSolidAngle's), as the pyramid's three sums: Energy (radiance times solid angle; solid
 // angle), Centroid (w times direction; w, with w = max(luminance, 0) times solid angle) and
-// Geometry (solid angle times direction; solid angle). The pyramid keeps no level of single
-// texels: ClusterCubeCS sums four of these for its first level, and PrefilterConvolutionCS makes
-// one wherever its walk reaches a source texel, with the solid angle ClusterCubeCS tabled (at
-// 1024², three RGBA32F cubes of 96 MiB each are never made). `precise`: each product is rounded
-// as a stored value would be, never fused into the sum that follows.
+// Geometry (solid angle times direction; solid angle). A pyramid as wide as the source (sources up
+// to 512²) keeps these as its level 0. A half-width one keeps no level of single texels:
+// ClusterCubeCS sums four of these for its first level, and PrefilterConvolutionCS makes one
+// wherever its walk reaches a source texel, with the solid angle ClusterCubeCS tabled (at 1024²,
+// three RGBA32F cubes of 96 MiB each are never made). Either way the same products, so the sums
+// are the same bit for bit. `precise`: each product is rounded as a stored value would be, never
+// fused into the sum that follows.
 void SourceTexelBlock( float3 radiance, uint face, uint2 xy, uint size, float solidAngle, out float4 energy,
                        out float4 weighted, out float4 geometry )
 {

@@ -18,19 +18,23 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs) {
+BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs,
+                         uint32_t sourceSize) {
     // Two threads for two cores, each in the order the bake needs its kernels.
     // The workers compile with this thread's kernel cache, and count in its counter.
     auto* cache = kernels::compiledKernelCacheInUse();
     auto* counter = kernels::kernelCompileCounterInUse();
     specularFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.specularMethod,
-                                                      samples = resolvedSamples(settings), needed = outputs.specular] {
+                                                      samples = resolvedSamples(settings), needed = outputs.specular,
+                                                      sourceSize] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
         const kernels::CountKernelCompiles counting(counter);
         // The residual of a recipe's lights gets its mips first, then the prefilter reads them.
         auto downsample = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::DownsampleCube));
-        auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples) : nullptr;
+        auto specular = needed ? std::make_unique<kernels::SpecularMethod>(context, method, samples,
+                                                                          kernels::embeddedShaderFiles(), sourceSize)
+                               : nullptr;
         auto preview = std::make_unique<kernels::Kernel>(makeKernel(context, kernels::KernelRole::Preview));
         return Specular{millisecondsSince(start), std::move(specular), std::move(preview), std::move(downsample)};
     });

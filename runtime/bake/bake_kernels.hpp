@@ -19,9 +19,11 @@ namespace iblkit::bake {
 // the dispatches otherwise: 55 ms for the quadrature grid's node kernel alone, about 150 ms in all.
 // Each getter waits for its kernels; the destructor waits for both threads. The prefilter and the
 // LUT are compiled only where `outputs` needs them: their getters give null otherwise.
+// `sourceSize`, where known, is the source cube's width, for which the prefilter compiles first.
 class BakeKernels {
 public:
-    BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs = {});
+    BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs = {},
+                uint32_t sourceSize = 0);
 
     kernels::SpecularMethod* specular();
     kernels::Kernel& preview();

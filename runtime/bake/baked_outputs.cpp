@@ -32,8 +32,10 @@ std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e
 void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
                  uint32_t size) {
     const double panorama = double(input.panorama.width) * input.panorama.height * 16;
-    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain of half the size.
-    const double pyramids = kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(size / 2) : 0;
+    // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain, as wide as
+    // the source up to 512², half as wide above.
+    const double pyramids =
+        kernels::isConvolutionMethod(settings.specularMethod) ? 3 * cubeChainBytes(kernels::convolutionPyramidSize(size)) : 0;
     const double device = 2 * cubeChainBytes(size) + pyramids + panorama + double(settings.lutSize) * settings.lutSize * 8 +
                           6.0 * settings.irradianceSize * settings.irradianceSize * 16;
     // The host holds each image as floats while it downloads and encodes it.
@@ -266,8 +268,8 @@ BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInpu
     progress.part("pipeline cache");
     auto caches = std::make_unique<DeviceCaches>(cache, *context);
     progress.part("kernel threads");
-    auto kernels = std::make_unique<BakeKernels>(*context, settings,
-                                                 NeededOutputs{plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut});
+    auto kernels = std::make_unique<BakeKernels>(
+        *context, settings, NeededOutputs{plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut}, size);
     progress.part("memory check");
     checkMemory(*context, settings, input, size);
     progress.end();

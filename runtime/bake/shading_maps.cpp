@@ -87,7 +87,7 @@ void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
 
 // The table depends on the weighting alone: computed when the kit was built (built_lobe_tables.hpp).
 const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting) {
-    static const auto copied = [](shading::LobeWeighting of) {
+    const auto copied = [](shading::LobeWeighting of) {
         const auto table = shading::builtLobeTable(of);
         return std::vector<float>(table.begin(), table.end());
     };

@@ -30,9 +30,7 @@ Bounds tableBounds() { return {1.8e-4, 1.7e-6, 1e-3, 6e-5}; }
 Bounds pyramidBounds() { return {1.6e-5, 5e-7, 1.7e-5, 5.3e-7}; }
 Bounds ringBounds() { return {3.8e-6, 2.7e-7, 4.8e-6, 3e-7}; }
 
-// None is known now. PrefilterConvolutionCS's -O SPIR-V ran wrong on lavapipe (up to 16 relative)
-// while its walk climbed the tree in a loop nested in the walk's own; it climbs without one now, and
-// the -O form is within the convolution's bounds on every row.
+// The rows expected to fail, with why: none now (boundsRationale() says which one was).
 std::string knownDivergence(const std::string&, const std::string&) { return {}; }
 Bounds previewBounds() { return {1e-6, 1e-7, 1e-6, 1e-7}; }
 Bounds pbrProbeBounds() { return {1.4e-6, 1.5e-7, 1.1e-6, 1.6e-7}; }
@@ -136,7 +134,9 @@ std::string boundsRationale() {
            "lavapipe (Mesa 22.3; largest error 3.4–3.7, RMS 0.4, on values up to ~9) while the walk climbed the tree "
            "in a loop of its own inside the walk's (SPIRV-Tools 2023.1's performance passes made SPIR-V that llvmpipe "
            "executed wrong; SPIRV-Cross's HLSL of it, compiled again without -O, was right). The walk climbs without a "
-           "loop now, and the -O form lands where the other paths do; the entry is gone.\n"
+           "loop now, and the -O form lands where the other paths do; the entry is gone. (The suite's rows are the "
+           "walk that makes source texels as it goes; the one that reads them from a pyramid as wide as the source, "
+           "the bake's up to 512², is held to it bit for bit by tests/kernels' ConvolutionLayouts.)\n"
            "- **Preview** (max 1e-6, RMS 1e-7): no C++ reference — sampling a cube with trilinear, seamless filtering "
            "(and llvmpipe's choice at cube corners, which every texel of the 1x1 and 2x2 mips touches) is the texture "
            "unit's business, and a reference of it would measure the reference — so paths b, c, e and d are compared "

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-
-#include <fmt/core.h>
 #include <map>
 #include <numbers>
 #include <stdexcept>
+
+#include <fmt/core.h>
 
 namespace iblkit::kernels {
 namespace {
@@ -53,28 +53,37 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
     return {topLevel, fineLevel, float(std::clamp(refine, 1.0, 1e4)), horizonLevel};
 }
 
+bool pyramidHoldsSourceTexels(uint32_t sourceSize, uint32_t maxSourceTexelsInPyramid) {
+    return sourceSize >= 2 && sourceSize <= maxSourceTexelsInPyramid;
+}
+
+uint32_t convolutionPyramidSize(uint32_t sourceSize, uint32_t maxSourceTexelsInPyramid) {
+    return pyramidHoldsSourceTexels(sourceSize, maxSourceTexelsInPyramid) ? sourceSize : pyramidSize(sourceSize);
+}
+
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid, const ShaderFiles& files) {
     const std::map<std::string, std::string> defines{{"SOURCE_TEXELS_IN_PYRAMID", sourceTexelsInPyramid ? "1" : "0"}};
     return compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), defines, {}, files);
 }
 
 ConvolutionPrefilter::ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method,
-                                           uint32_t budget, const ShaderFiles& files, uint32_t maxSourceTexelsInPyramid)
+                                           uint32_t budget, const ShaderFiles& files, uint32_t expectedSourceSize,
+                                           uint32_t maxSourceTexelsInPyramid)
     : context_(context), method_(method), files_(files), budget_(budget), maxSourceTexelsInPyramid_(maxSourceTexelsInPyramid),
-      cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)),
-      walkInPyramid_(context, compileConvolutionWalk(method, true, files)) {
+      cluster_(context, compileKernel(kernelFor(KernelRole::ClusterCube), {}, {}, files)) {
     requireBudget(budget);
+    walkFor(expectedSourceSize == 0 || pyramidHoldsSourceTexels(expectedSourceSize, maxSourceTexelsInPyramid));
 }
 
-Kernel& ConvolutionPrefilter::walkFor(const EnergyPyramid& pyramid) {
-    if (pyramid.holdsSourceTexels) return walkInPyramid_;
-    if (!walkMakingTexels_) walkMakingTexels_.emplace(context_, compileConvolutionWalk(method_, false, files_));
-    return *walkMakingTexels_;
+Kernel& ConvolutionPrefilter::walkFor(bool holdsSourceTexels) {
+    auto& walk = holdsSourceTexels ? walkInPyramid_ : walkMakingTexels_;
+    if (!walk) walk.emplace(context_, compileConvolutionWalk(method_, holdsSourceTexels, files_));
+    return *walk;
 }
 
 void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
-    holdsSourceTexels_ = source.desc().width <= maxSourceTexelsInPyramid_;
-    const uint32_t size = holdsSourceTexels_ ? source.desc().width : pyramidSize(source.desc().width);
+    holdsSourceTexels_ = pyramidHoldsSourceTexels(source.desc().width, maxSourceTexelsInPyramid_);
+    const uint32_t size = convolutionPyramidSize(source.desc().width, maxSourceTexelsInPyramid_);
     const auto& rgba32 = vulkan::texelFormatNamed("R32G32B32A32_SFLOAT");
     const uint32_t mips = vulkan::fullMipCount(size, size);
     energy_.emplace(context_, vulkan::ImageDesc{"Energy", &rgba32, size, size, 6, mips, true, true});
@@ -90,8 +99,7 @@ void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
 void ConvolutionPrefilter::run(vulkan::Image& source, vulkan::Image& target, uint32_t mip, float roughness) {
     const auto plan = planConvolution(source.desc().width, roughness, budget_);
     if (pyramidSource_ != &source) buildPyramid(source);
-    const auto walked = pyramid();
-    runPrefilterConvolution(walkFor(walked), source, walked, target, mip,
+    runPrefilterConvolution(walkFor(holdsSourceTexels_), source, pyramid(), target, mip,
                             {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, uint32_t(weighting_)});
 }
 
@@ -109,8 +117,8 @@ void ConvolutionPrefilter::releasePyramids() {
 
 DispatchTotals ConvolutionPrefilter::takeTotals() {
     auto totals = cluster_.takeTotals();
-    totals += walkInPyramid_.takeTotals();
-    if (walkMakingTexels_) totals += walkMakingTexels_->takeTotals();
+    for (auto* walk : {&walkInPyramid_, &walkMakingTexels_})
+        if (*walk) totals += (*walk)->takeTotals();
     return totals;
 }
 

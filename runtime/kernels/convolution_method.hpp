@@ -43,21 +43,28 @@ ConvolutionPlan planConvolution(uint32_t sourceSize, float roughness, uint32_t b
 
 // Sources up to this wide keep their own texels as the pyramid's level 0: three more RGBA32F
 // cubes of the source's size (72 MiB at 512², 288 MiB at 1024²), and a walk that reads every
-// block alike, 0.78 of the time of one that makes single texels where it reaches them.
+// block alike, 0.83 of the time of one that makes single texels where it reaches them (mip 1 of
+// the default bake).
 inline constexpr uint32_t kMaxSourceTexelsInPyramid = 512;
+
+// Whether a source of `sourceSize` keeps its texels in the pyramid: from 2² (a single texel is a
+// whole face, made by the walk) to `maxSourceTexelsInPyramid`.
+bool pyramidHoldsSourceTexels(uint32_t sourceSize, uint32_t maxSourceTexelsInPyramid = kMaxSourceTexelsInPyramid);
+// The pyramids' face size for such a source: its own where it keeps its texels, else pyramidSize's.
+uint32_t convolutionPyramidSize(uint32_t sourceSize, uint32_t maxSourceTexelsInPyramid = kMaxSourceTexelsInPyramid);
 
 // PrefilterConvolution for a pyramid that holds the source's texels, or for one half its width.
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid,
                                      const ShaderFiles& files = embeddedShaderFiles());
 
 // The convolution method: the energy pyramid of a source (built once per source image, on its
-// first run), then one tree walk per mip. The walk for a pyramid holding the source's texels is
-// compiled at once; the other when a larger source first needs it.
+// first run), then one tree walk per mip. The walk for the pyramid of an `expectedSourceSize`
+// source (0: one that holds its texels) is compiled at once; the other when a source first needs it.
 class ConvolutionPrefilter {
 public:
     // Sources up to `maxSourceTexelsInPyramid` wide keep their texels in the pyramid.
     ConvolutionPrefilter(const vulkan::VulkanContext& context, const std::string& method, uint32_t budget,
-                         const ShaderFiles& files = embeddedShaderFiles(),
+                         const ShaderFiles& files = embeddedShaderFiles(), uint32_t expectedSourceSize = 0,
                          uint32_t maxSourceTexelsInPyramid = kMaxSourceTexelsInPyramid);
     // Writes mip `mip` of `target` (RGBA32F, storage) from mip 0 of `source` at `roughness`.
     // `source` must keep its texels while this object runs on it.
@@ -69,15 +76,15 @@ public:
 private:
     void buildPyramid(vulkan::Image& source);
     EnergyPyramid pyramid();
-    Kernel& walkFor(const EnergyPyramid& pyramid);
+    Kernel& walkFor(bool holdsSourceTexels);
 
     const vulkan::VulkanContext& context_;
     std::string method_;
     ShaderFiles files_;
     uint32_t budget_, maxSourceTexelsInPyramid_;
     shading::LobeWeighting weighting_ = shading::LobeWeighting::NdotL;
-    Kernel cluster_, walkInPyramid_;
-    std::optional<Kernel> walkMakingTexels_;
+    Kernel cluster_;
+    std::optional<Kernel> walkInPyramid_, walkMakingTexels_;
     const vulkan::Image* pyramidSource_ = nullptr;
     bool holdsSourceTexels_ = false;
     std::optional<vulkan::Image> energy_, centroid_, geometry_, texelSolidAngle_;

@@ -72,12 +72,13 @@ void runPrefilterPyramid(Kernel& kernel, vulkan::Image& source, const vulkan::Sa
 void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target,
                       uint32_t mip, const PrefilterRingParameters& ring);
 
-// ClusterCubeCS's three pyramids: RGBA32F cubes half the size of the source (their mip n holds
-// blocks of 2^(n+1) source texels across), with a full mip chain, sampled and storage; a 1x1
-// source, which has no block of more than one texel, gets 1x1 pyramids that nothing reads. With
-// them, the solid angle of each of the source's texels (R32F, one face's: the same on all six).
-// As wide as the source with holdsSourceTexels, its mip 0 the source's texels themselves (for
-// PrefilterConvolution compiled with SOURCE_TEXELS_IN_PYRAMID); else pyramidSize(source) wide.
+// ClusterCubeCS's three pyramids: RGBA32F cubes with a full mip chain, sampled and storage. With
+// holdsSourceTexels, as wide as the source (mip n holds blocks of 2^n source texels across, mip 0
+// its texels themselves), for PrefilterConvolution compiled with SOURCE_TEXELS_IN_PYRAMID; else
+// pyramidSize(source) wide (mip n holds blocks of 2^(n+1)), and a 1x1 source, which has no block
+// of more than one texel, gets 1x1 pyramids that nothing reads. With them, the solid angle of
+// each of the source's texels (R32F, one face's: the same on all six), which the walk reads only
+// where the pyramids do not hold the texels.
 struct EnergyPyramid {
     vulkan::Image& energy;
     vulkan::Image& centroid;

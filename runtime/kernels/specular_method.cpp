@@ -47,9 +47,9 @@ uint32_t maxSamplesOf(const std::string& method) {
 }
 
 SpecularMethod::SpecularMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
-                               const ShaderFiles& files) {
+                               const ShaderFiles& files, uint32_t expectedSourceSize) {
     switch (specularKindOf(method)) {
-    case SpecularKind::Convolution: convolution_.emplace(context, method, samples, files); break;
+    case SpecularKind::Convolution: convolution_.emplace(context, method, samples, files, expectedSourceSize); break;
     case SpecularKind::Table: table_.emplace(context, method, samples, files); break;
     case SpecularKind::Pyramid: pyramid_.emplace(context, method, samples, files); break;
     case SpecularKind::MipChain:

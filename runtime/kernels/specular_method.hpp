@@ -35,11 +35,12 @@ uint32_t maxSamplesOf(const std::string& method);
 
 // A prefilter method by name, whichever kernels implement it. `samples` is the sample count of
 // a sampled method, the reads per texel of the pyramid, and the budget of terms per output texel
-// of the convolution.
+// of the convolution. `expectedSourceSize`, where known, is the width of the sources it will run
+// on (the convolution compiles the walk for their pyramid first).
 class SpecularMethod {
 public:
     SpecularMethod(const vulkan::VulkanContext& context, const std::string& method, uint32_t samples,
-                   const ShaderFiles& files = embeddedShaderFiles());
+                   const ShaderFiles& files = embeddedShaderFiles(), uint32_t expectedSourceSize = 0);
     // Writes mip `mip` of `target` (RGBA32F, storage) from `source` at `roughness`; a sampled
     // method reads `source` through `sampler`.
     void run(vulkan::Image& source, const vulkan::Sampler& sampler, vulkan::Image& target, uint32_t mip, float roughness);

@@ -7,7 +7,7 @@
 namespace iblkit::shading {
 
 // shading::lobeTable(kLobeTableSize, weighting), computed once by lobe_tables_main.cpp and
-// committed (built_lobe_tables.cpp): 1024 lobe fits, about 85 ms of a core per weighting, that
+// committed (built_lobe_tables.cpp): 1024 lobe fits per weighting, about 0.1 s of a core, that
 // every bake would otherwise spend again beside the device.
 std::span<const float> builtLobeTable(LobeWeighting weighting);
 
