@@ -38,17 +38,19 @@ protected:
         return image;
     }
 
-    std::vector<float> walked(vulkan::Image& from, bool holdsSourceTexels, float roughness) {
-        const uint32_t size = holdsSourceTexels ? kSourceSize : pyramidSize(kSourceSize);
+    // Mip 0 of an outSize cube walked from `from`'s pyramid of either layout.
+    std::vector<float> walked(vulkan::Image& from, bool holdsSourceTexels, float roughness, uint32_t outSize = kSourceSize / 2) {
+        const uint32_t sourceSize = from.desc().width;
+        const uint32_t size = holdsSourceTexels ? sourceSize : pyramidSize(sourceSize);
         const uint32_t mips = uint32_t(std::bit_width(size));
         auto energy = cube("Energy", size, mips), centroid = cube("Centroid", size, mips), geometry = cube("Geometry", size, mips);
-        vulkan::Image solidAngle(context(), {"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), kSourceSize, kSourceSize, 1, 1, false, true});
+        vulkan::Image solidAngle(context(), {"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), sourceSize, sourceSize, 1, 1, false, true});
         const EnergyPyramid pyramid{energy, centroid, geometry, solidAngle, holdsSourceTexels};
         Kernel cluster(context(), compileKernel(kernelFor(KernelRole::ClusterCube)));
         runClusterPyramid(cluster, from, pyramid);
         Kernel walk(context(), compileConvolutionWalk("convolution", holdsSourceTexels));
-        auto target = cube("Prefiltered", kSourceSize / 2, 1);
-        const auto plan = planConvolution(kSourceSize, roughness, 128);
+        auto target = cube("Prefiltered", outSize, 1);
+        const auto plan = planConvolution(sourceSize, roughness, 128);
         runPrefilterConvolution(walk, from, pyramid, target, 0,
                                 {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, 1});
         return target.download(context());
@@ -100,22 +102,13 @@ TEST_F(ConvolutionLayouts, AWalkFromTwoBlocksPerFaceIsTheReferences) {
     for (size_t c = 0; c < 3; ++c) texels[4 * (3 * size * size + 40 * size + 200) + c] = 5000.f;
     auto from = cube("Source", size, 1);
     from.upload(context(), texels);
-    const uint32_t mips = uint32_t(std::bit_width(size));
-    auto energy = cube("Energy", size, mips), centroid = cube("Centroid", size, mips), geometry = cube("Geometry", size, mips);
-    vulkan::Image solidAngle(context(), {"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), size, size, 1, 1, false, true});
-    const EnergyPyramid pyramid{energy, centroid, geometry, solidAngle, true};
-    Kernel cluster(context(), compileKernel(kernelFor(KernelRole::ClusterCube)));
-    runClusterPyramid(cluster, from, pyramid);
-    Kernel walk(context(), compileConvolutionWalk("convolution", true));
-    auto target = cube("Prefiltered", outSize, 1);
-    runPrefilterConvolution(walk, from, pyramid, target, 0, {roughness, plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, 1});
-    const auto walked = target.download(context());
+    const auto onDevice = walked(from, true, roughness, outSize);
     const reference::ConvolutionTree tree{plan.topLevel, plan.fineLevel, plan.refine, plan.horizonLevel, 1};
     const auto expected = reference::convolvePrefilter(reference::clusterPyramid<float>(texels, size), roughness, outSize, tree);
-    ASSERT_EQ(walked.size(), expected.size());
+    ASSERT_EQ(onDevice.size(), expected.size());
     double largest = 0;
-    for (size_t i = 0; i < walked.size(); ++i)
-        largest = std::max(largest, std::abs(double(walked[i]) - expected[i]) / std::max(1.0, double(std::abs(expected[i]))));
+    for (size_t i = 0; i < onDevice.size(); ++i)
+        largest = std::max(largest, std::abs(double(onDevice[i]) - expected[i]) / std::max(1.0, double(std::abs(expected[i]))));
     EXPECT_LT(largest, kWalkAgainstReference) << "a block visited twice, or one left out, moves a texel by percents";
 }
 
