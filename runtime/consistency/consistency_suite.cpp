@@ -39,6 +39,9 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
             shader.imageFormats = {{"Precomputed", "rg32f"}, {"Accumulated", "rg32f"}};
         options.shaders.emplace(kernel.name, std::move(shader));
     }
+    auto inPyramid = options.shaders.at("PrefilterConvolutionCS");
+    inPyramid.defines["SOURCE_TEXELS_IN_PYRAMID"] = "1";
+    options.shaders.emplace(kConvolutionInPyramidShader, std::move(inPyramid));
     return options;
 }
 

@@ -56,9 +56,15 @@ struct SuiteOptions {
     std::set<std::string> kernels;
 };
 
+// PrefilterConvolutionCS as bakes of sources up to 512² run it, compiled with
+// SOURCE_TEXELS_IN_PYRAMID over a pyramid that holds the source's texels: a shader of the suite's
+// own beside the manifest's, judged on every path as they are.
+inline constexpr const char* kConvolutionInPyramidShader = "PrefilterConvolutionCS, SOURCE_TEXELS_IN_PYRAMID";
+
 // The options the suite runs every kernel with: the manifest's (or, when there is no such file,
 // those of the hlsl/ built into the program), with SAMPLE_COUNT set and the LUTs written as
-// R32G32_SFLOAT (so that the comparison measures arithmetic, not storage).
+// R32G32_SFLOAT (so that the comparison measures arithmetic, not storage); and
+// kConvolutionInPyramidShader.
 SuiteOptions defaultSuiteOptions(const std::string& manifest = "hlsl/shaders.json", uint32_t sampleCount = 1024);
 
 // Bounds on the largest absolute error and the RMS error of a path, against each reference.

@@ -12,9 +12,12 @@ namespace iblkit::consistency {
 
 // ClusterCubeCS's three pyramids, each a cube half the source's size with every level down to 1x1,
 // and the source they were made from (the walk reads its texels as the tree's level 0).
+// As wide as the source, its level 0 the source's texels, with holdsSourceTexels (for the walk
+// compiled with SOURCE_TEXELS_IN_PYRAMID); else half as wide.
 struct PyramidTexels {
     MippedCube source, energy, centroid, geometry;
     std::vector<float> texelSolidAngle; // one face's, row by row
+    bool holdsSourceTexels = false;
 };
 
 // The convolution method's two kernels, on Vulkan through their kernels::run* steps and on

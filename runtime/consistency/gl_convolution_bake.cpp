@@ -53,10 +53,12 @@ std::vector<float> glPrefilterConvolution(const opengl::EglContext& context, con
     };
     const auto source = upload(pyramid.source);
     const auto energy = upload(pyramid.energy), centroid = upload(pyramid.centroid), geometry = upload(pyramid.geometry);
-    glpath::bindTexture(context, form, "Source", source);
     const auto solidAngle =
         glpath::texture2D(context, GL_R32F, GL_RED, pyramid.source.size, pyramid.source.size, pyramid.texelSolidAngle);
-    glpath::bindTexture(context, form, "TexelSolidAngle", solidAngle);
+    if (!pyramid.holdsSourceTexels) { // the walk makes the texels it reaches
+        glpath::bindTexture(context, form, "Source", source);
+        glpath::bindTexture(context, form, "TexelSolidAngle", solidAngle);
+    }
     glpath::bindTexture(context, form, "Energy", energy);
     glpath::bindTexture(context, form, "Centroid", centroid);
     glpath::bindTexture(context, form, "Geometry", geometry);

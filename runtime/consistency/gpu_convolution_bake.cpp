@@ -55,7 +55,8 @@ std::vector<float> gpuPrefilterConvolution(const vulkan::VulkanContext& context,
     vulkan::Image target(context, {"Prefiltered", &rgba32, outSize, outSize, 6, 1, false, true});
     auto solidAngle = solidAngleImage(context, pyramid.source.size);
     solidAngle.upload(context, pyramid.texelSolidAngle);
-    kernels::runPrefilterConvolution(kernel, source, {energy, centroid, geometry, solidAngle}, target, 0, parameters);
+    kernels::runPrefilterConvolution(kernel, source, {energy, centroid, geometry, solidAngle, pyramid.holdsSourceTexels}, target,
+                                     0, parameters);
     return target.download(context);
 }
 

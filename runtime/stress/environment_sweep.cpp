@@ -12,7 +12,8 @@ double boundOf(const std::string& kernel) {
     static const std::map<std::string, double> bounds{
         {"PrefilterSpecularCS", 1.5e-4},   {"PrefilterSpecularChunkCS", 1.2e-5}, {"PrefilterFilteredCS", 1.5e-4},
         {"PrefilterTableCS", 3e-5},        {"PrefilterPyramidCS", 1.5e-6},       {"PrefilterRingCS", 7e-7},
-        {"ClusterCubeCS", 8e-5},           {"PrefilterConvolutionCS", 9e-6},     {"EquirectToCubeCS", 3.2e-3},
+        {"ClusterCubeCS", 8e-5},           {"PrefilterConvolutionCS", 9e-6},     {consistency::kConvolutionInPyramidShader, 9e-6},
+        {"EquirectToCubeCS", 3.2e-3},
         {"DownsampleCubeCS", 2.1e-7},      {"ShProjectCS", 8.1e-5},              {"IrradianceCubeCS", 3e-6},
         {"PreviewCS", 1e-6},               {"RenderReferenceCS", 2.8e-4},        {"RenderReferenceSplitSumMaterialCS", 2.8e-4},
         {"SplitSumSpheresCS", 6.6e-6},

@@ -84,8 +84,8 @@ std::string environmentTable(const std::vector<EnvironmentRow>& rows) {
         "environment's errors), the absolute error where they are all 0; PreviewCS, RenderReferenceCS, "
         "RenderReferenceSplitSumMaterialCS and SplitSumSpheresCS have no C++ reference and are compared with path a (the Monte Carlo references' OpenGL form rounds sin, cos and sqrt otherwise and its paths "
         "carry it into the sums: 1.4e-4 of the largest, with the suite's lights on a black environment). One line per "
-        "environment and kernel, with its worst output and path (the path b rows of PrefilterConvolutionCS, which "
-        "lavapipe runs wrong, are left out as in docs/consistency.md).\n\n"
+        "environment and kernel, with its worst output and path (the rows of a known divergence, none now, are left "
+        "out as in docs/consistency.md).\n\n"
         "| environment | cube | kernel | rows | NaN/Inf | worst error / largest value | where | bound | |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& key : order) {
