@@ -4,7 +4,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, std140) uniform ClusterParameter
 {
     uint Level;
-} _444;
+} _433;
 
 layout(binding = 3, r32f) uniform writeonly image2D TexelSolidAngle;
 layout(binding = 0, rgba32f) uniform writeonly image2DArray Energy;
@@ -20,193 +20,189 @@ void main()
     uvec3 param = gl_GlobalInvocationID;
     do
     {
-        uvec3 _821 = uvec3(0u);
-        uvec3 _822 = uvec3(imageSize(Energy));
-        _821.x = _822.x;
-        _821.y = _822.y;
-        _821.z = _822.z;
-        if (any(greaterThanEqual(gl_GlobalInvocationID, _821)))
+        uvec3 _810 = uvec3(0u);
+        uvec3 _811 = uvec3(imageSize(Energy));
+        _810.x = _811.x;
+        _810.y = _811.y;
+        _810.z = _811.z;
+        if (any(greaterThanEqual(gl_GlobalInvocationID, _810)))
         {
             break;
         }
-        if (_444.Level == 0u)
+        if (_433.Level == 0u)
         {
-            uvec3 _826 = uvec3(textureSize(Source, 0));
-            vec4 _1831;
-            vec4 _1832;
-            vec4 _1833;
-            if (_821.x == _826.x)
+            uvec3 _815 = uvec3(textureSize(Source, 0));
+            vec4 _1809;
+            vec4 _1810;
+            vec4 _1811;
+            if (_810.x == _815.x)
             {
-                uvec3 _830 = gl_GlobalInvocationID;
-                uvec2 _1192 = gl_GlobalInvocationID.xy;
-                float _1259 = float(_826.x);
-                float _1260 = 1.0 / _1259;
-                float _1267 = fma(2.0 * float(_1192.x), _1260, -1.0);
-                float _1274 = fma(2.0 * float(_1192.y), _1260, -1.0);
-                float _1278 = _1267 + (2.0 / _1259);
-                float _1282 = _1274 + (2.0 / _1259);
-                float _1297 = ((atan(_1267 * _1274, sqrt(fma(_1267, _1267, _1274 * _1274) + 1.0)) - atan(_1267 * _1282, sqrt(fma(_1267, _1267, _1282 * _1282) + 1.0))) - atan(_1278 * _1274, sqrt(fma(_1278, _1278, _1274 * _1274) + 1.0))) + atan(_1278 * _1282, sqrt(fma(_1278, _1278, _1282 * _1282) + 1.0));
-                if (_830.z == 0u)
+                uvec3 _819 = gl_GlobalInvocationID;
+                uvec2 _1180 = gl_GlobalInvocationID.xy;
+                float _1237 = float(_815.x);
+                float _1238 = 1.0 / _1237;
+                float _1245 = fma(2.0 * float(_1180.x), _1238, -1.0);
+                float _1252 = fma(2.0 * float(_1180.y), _1238, -1.0);
+                float _1256 = _1245 + (2.0 / _1237);
+                float _1260 = _1252 + (2.0 / _1237);
+                float _1275 = ((atan(_1245 * _1252, sqrt(fma(_1245, _1245, _1252 * _1252) + 1.0)) - atan(_1245 * _1260, sqrt(fma(_1245, _1245, _1260 * _1260) + 1.0))) - atan(_1256 * _1252, sqrt(fma(_1256, _1256, _1252 * _1252) + 1.0))) + atan(_1256 * _1260, sqrt(fma(_1256, _1256, _1260 * _1260) + 1.0));
+                vec3 _1211 = texelFetch(Source, ivec4(ivec3(gl_GlobalInvocationID), 0).xyz, 0).xyz;
+                precise vec2 _1347 = vec2(gl_GlobalInvocationID.xy) + vec2(0.5);
+                precise vec2 _1351 = _1347 / vec2(float(_815.x));
+                vec2 _1338 = (_1351 - vec2(0.5)) * vec2(2.0, -2.0);
+                vec3 _1804;
+                if (_819.z == 0u)
                 {
-                    imageStore(TexelSolidAngle, ivec2(gl_GlobalInvocationID.xy), vec4(_1297));
-                }
-                vec3 _1232 = texelFetch(Source, ivec4(ivec3(gl_GlobalInvocationID), 0).xyz, 0).xyz;
-                precise vec2 _1369 = vec2(gl_GlobalInvocationID.xy) + vec2(0.5);
-                precise vec2 _1373 = _1369 / vec2(float(_826.x));
-                vec2 _1360 = (_1373 - vec2(0.5)) * vec2(2.0, -2.0);
-                vec3 _1826;
-                if (_830.z == 0u)
-                {
-                    _1826 = vec3(1.0, _1360.y, -_1360.x);
+                    _1804 = vec3(1.0, _1338.y, -_1338.x);
                 }
                 else
                 {
-                    vec3 _1827;
-                    if (_830.z == 1u)
+                    vec3 _1805;
+                    if (_819.z == 1u)
                     {
-                        _1827 = vec3(-1.0, _1360.y, _1360.x);
+                        _1805 = vec3(-1.0, _1338.y, _1338.x);
                     }
                     else
                     {
-                        vec3 _1828;
-                        if (_830.z == 2u)
+                        vec3 _1806;
+                        if (_819.z == 2u)
                         {
-                            _1828 = vec3(_1360.x, 1.0, -_1360.y);
+                            _1806 = vec3(_1338.x, 1.0, -_1338.y);
                         }
                         else
                         {
-                            vec3 _1829;
-                            if (_830.z == 3u)
+                            vec3 _1807;
+                            if (_819.z == 3u)
                             {
-                                _1829 = vec3(_1360.x, -1.0, _1360.y);
+                                _1807 = vec3(_1338.x, -1.0, _1338.y);
                             }
                             else
                             {
-                                vec3 _1830;
-                                if (_830.z == 4u)
+                                vec3 _1808;
+                                if (_819.z == 4u)
                                 {
-                                    _1830 = vec3(_1360.x, _1360.y, 1.0);
+                                    _1808 = vec3(_1338.x, _1338.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1830 = vec3(-_1360.x, _1360.y, -1.0);
+                                    _1808 = vec3(-_1338.x, _1338.y, -1.0);
                                 }
-                                _1829 = _1830;
+                                _1807 = _1808;
                             }
-                            _1828 = _1829;
+                            _1806 = _1807;
                         }
-                        _1827 = _1828;
+                        _1805 = _1806;
                     }
-                    _1826 = _1827;
+                    _1804 = _1805;
                 }
-                vec3 _1474 = normalize(_1826);
-                precise float _1380 = max(dot(_1232, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1297;
-                precise vec3 _1383 = _1232 * _1297;
-                precise vec3 _1386 = _1474 * _1380;
-                precise vec3 _1389 = _1474 * _1297;
-                _1833 = vec4(_1389, _1297);
-                _1832 = vec4(_1386, _1380);
-                _1831 = vec4(_1383, _1297);
+                vec3 _1452 = normalize(_1804);
+                precise float _1358 = max(dot(_1211, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1275;
+                precise vec3 _1361 = _1211 * _1275;
+                precise vec3 _1364 = _1452 * _1358;
+                precise vec3 _1367 = _1452 * _1275;
+                _1811 = vec4(_1367, _1275);
+                _1810 = vec4(_1364, _1358);
+                _1809 = vec4(_1361, _1275);
             }
             else
             {
-                uvec3 _835 = gl_GlobalInvocationID;
-                vec4 _1794;
-                vec4 _1795;
-                vec4 _1796;
-                _1796 = vec4(0.0);
-                _1795 = vec4(0.0);
-                _1794 = vec4(0.0);
-                vec4 _1550;
-                vec4 _1553;
-                vec4 _1556;
-                for (uint _1793 = 0u; _1793 < 4u; _1796 = _1556, _1795 = _1553, _1794 = _1550, _1793++)
+                uvec3 _824 = gl_GlobalInvocationID;
+                vec4 _1772;
+                vec4 _1773;
+                vec4 _1774;
+                _1774 = vec4(0.0);
+                _1773 = vec4(0.0);
+                _1772 = vec4(0.0);
+                vec4 _1528;
+                vec4 _1531;
+                vec4 _1534;
+                for (uint _1771 = 0u; _1771 < 4u; _1774 = _1534, _1773 = _1531, _1772 = _1528, _1771++)
                 {
-                    uvec2 _1506 = (gl_GlobalInvocationID.xy * uvec2(2u)) + uvec2(_1793 & 1u, _1793 >> uint(1));
-                    uvec2 _1478 = _1506;
-                    float _1577 = float(_826.x);
-                    float _1578 = 1.0 / _1577;
-                    float _1585 = fma(2.0 * float(_1478.x), _1578, -1.0);
-                    float _1592 = fma(2.0 * float(_1478.y), _1578, -1.0);
-                    float _1596 = _1585 + (2.0 / _1577);
-                    float _1600 = _1592 + (2.0 / _1577);
-                    float _1615 = ((atan(_1585 * _1592, sqrt(fma(_1585, _1585, _1592 * _1592) + 1.0)) - atan(_1585 * _1600, sqrt(fma(_1585, _1585, _1600 * _1600) + 1.0))) - atan(_1596 * _1592, sqrt(fma(_1596, _1596, _1592 * _1592) + 1.0))) + atan(_1596 * _1600, sqrt(fma(_1596, _1596, _1600 * _1600) + 1.0));
-                    if (_835.z == 0u)
+                    uvec2 _1484 = (gl_GlobalInvocationID.xy * uvec2(2u)) + uvec2(_1771 & 1u, _1771 >> uint(1));
+                    uvec2 _1456 = _1484;
+                    float _1555 = float(_815.x);
+                    float _1556 = 1.0 / _1555;
+                    float _1563 = fma(2.0 * float(_1456.x), _1556, -1.0);
+                    float _1570 = fma(2.0 * float(_1456.y), _1556, -1.0);
+                    float _1574 = _1563 + (2.0 / _1555);
+                    float _1578 = _1570 + (2.0 / _1555);
+                    float _1593 = ((atan(_1563 * _1570, sqrt(fma(_1563, _1563, _1570 * _1570) + 1.0)) - atan(_1563 * _1578, sqrt(fma(_1563, _1563, _1578 * _1578) + 1.0))) - atan(_1574 * _1570, sqrt(fma(_1574, _1574, _1570 * _1570) + 1.0))) + atan(_1574 * _1578, sqrt(fma(_1574, _1574, _1578 * _1578) + 1.0));
+                    if (_824.z == 0u)
                     {
-                        imageStore(TexelSolidAngle, ivec2(_1506), vec4(_1615));
+                        imageStore(TexelSolidAngle, ivec2(_1484), vec4(_1593));
                     }
-                    vec3 _1538 = texelFetch(Source, ivec4(ivec2(_1506), int(_835.z), 0).xyz, 0).xyz;
-                    precise vec2 _1687 = vec2(_1506) + vec2(0.5);
-                    precise vec2 _1691 = _1687 / vec2(float(_826.x));
-                    vec2 _1678 = (_1691 - vec2(0.5)) * vec2(2.0, -2.0);
-                    vec3 _1797;
-                    if (_835.z == 0u)
+                    vec3 _1516 = texelFetch(Source, ivec4(ivec2(_1484), int(_824.z), 0).xyz, 0).xyz;
+                    precise vec2 _1665 = vec2(_1484) + vec2(0.5);
+                    precise vec2 _1669 = _1665 / vec2(float(_815.x));
+                    vec2 _1656 = (_1669 - vec2(0.5)) * vec2(2.0, -2.0);
+                    vec3 _1775;
+                    if (_824.z == 0u)
                     {
-                        _1797 = vec3(1.0, _1678.y, -_1678.x);
+                        _1775 = vec3(1.0, _1656.y, -_1656.x);
                     }
                     else
                     {
-                        vec3 _1798;
-                        if (_835.z == 1u)
+                        vec3 _1776;
+                        if (_824.z == 1u)
                         {
-                            _1798 = vec3(-1.0, _1678.y, _1678.x);
+                            _1776 = vec3(-1.0, _1656.y, _1656.x);
                         }
                         else
                         {
-                            vec3 _1799;
-                            if (_835.z == 2u)
+                            vec3 _1777;
+                            if (_824.z == 2u)
                             {
-                                _1799 = vec3(_1678.x, 1.0, -_1678.y);
+                                _1777 = vec3(_1656.x, 1.0, -_1656.y);
                             }
                             else
                             {
-                                vec3 _1800;
-                                if (_835.z == 3u)
+                                vec3 _1778;
+                                if (_824.z == 3u)
                                 {
-                                    _1800 = vec3(_1678.x, -1.0, _1678.y);
+                                    _1778 = vec3(_1656.x, -1.0, _1656.y);
                                 }
                                 else
                                 {
-                                    vec3 _1801;
-                                    if (_835.z == 4u)
+                                    vec3 _1779;
+                                    if (_824.z == 4u)
                                     {
-                                        _1801 = vec3(_1678.x, _1678.y, 1.0);
+                                        _1779 = vec3(_1656.x, _1656.y, 1.0);
                                     }
                                     else
                                     {
-                                        _1801 = vec3(-_1678.x, _1678.y, -1.0);
+                                        _1779 = vec3(-_1656.x, _1656.y, -1.0);
                                     }
-                                    _1800 = _1801;
+                                    _1778 = _1779;
                                 }
-                                _1799 = _1800;
+                                _1777 = _1778;
                             }
-                            _1798 = _1799;
+                            _1776 = _1777;
                         }
-                        _1797 = _1798;
+                        _1775 = _1776;
                     }
-                    vec3 _1792 = normalize(_1797);
-                    precise float _1698 = max(dot(_1538, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1615;
-                    precise vec3 _1701 = _1538 * _1615;
-                    precise vec3 _1704 = _1792 * _1698;
-                    precise vec3 _1707 = _1792 * _1615;
-                    _1550 = _1794 + vec4(_1701, _1615);
-                    _1553 = _1795 + vec4(_1704, _1698);
-                    _1556 = _1796 + vec4(_1707, _1615);
+                    vec3 _1770 = normalize(_1775);
+                    precise float _1676 = max(dot(_1516, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1593;
+                    precise vec3 _1679 = _1516 * _1593;
+                    precise vec3 _1682 = _1770 * _1676;
+                    precise vec3 _1685 = _1770 * _1593;
+                    _1528 = _1772 + vec4(_1679, _1593);
+                    _1531 = _1773 + vec4(_1682, _1676);
+                    _1534 = _1774 + vec4(_1685, _1593);
                 }
-                _1833 = _1796;
-                _1832 = _1795;
-                _1831 = _1794;
+                _1811 = _1774;
+                _1810 = _1773;
+                _1809 = _1772;
             }
-            imageStore(Energy, ivec3(gl_GlobalInvocationID), _1831);
-            imageStore(Centroid, ivec3(gl_GlobalInvocationID), _1832);
-            imageStore(Geometry, ivec3(gl_GlobalInvocationID), _1833);
+            imageStore(Energy, ivec3(gl_GlobalInvocationID), _1809);
+            imageStore(Centroid, ivec3(gl_GlobalInvocationID), _1810);
+            imageStore(Geometry, ivec3(gl_GlobalInvocationID), _1811);
             break;
         }
-        ivec2 _909 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
-        int _913 = int(_444.Level) - 1;
-        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(EnergyIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(EnergyIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(EnergyIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
-        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(CentroidIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(CentroidIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(CentroidIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
-        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(GeometryIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(GeometryIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(GeometryIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
+        ivec2 _898 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
+        int _902 = int(_433.Level) - 1;
+        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(EnergyIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(EnergyIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(EnergyIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
+        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(CentroidIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(CentroidIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(CentroidIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
+        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(GeometryIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(GeometryIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(GeometryIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
         break;
     } while(false);
 }

@@ -19,7 +19,7 @@ Texture2DArray<float4> GeometryIn;
 RWTexture2DArray<float4> Energy;   // rgb: radiance times solid angle; a: solid angle
 RWTexture2DArray<float4> Centroid; // xyz: the sum of w times direction; a: the sum of w; w = max(luminance, 0) times solid angle
 RWTexture2DArray<float4> Geometry; // xyz: the sum of solid angle times direction; a: solid angle
-RWTexture2D<float> TexelSolidAngle; // each source texel's (the same on every face), written with level 0
+RWTexture2D<float> TexelSolidAngle; // each source texel's (the same on every face), written with a half-width level 0
 
 // The four texels of the source below pyramid texel DTid, summed in the order of the levels above.
 void SourceQuad( uint3 DTid, uint sourceSize, out float4 energy, out float4 weighted, out float4 geometry )
@@ -42,13 +42,11 @@ void SourceQuad( uint3 DTid, uint sourceSize, out float4 energy, out float4 weig
 }
 
 // Source texel DTid itself, where the pyramid is as wide as the source and keeps single texels as
-// its level 0 (PrefilterConvolutionCS's SOURCE_TEXELS_IN_PYRAMID).
+// its level 0 (PrefilterConvolutionCS's SOURCE_TEXELS_IN_PYRAMID, which reads no TexelSolidAngle).
 void SourceTexel( uint3 DTid, uint sourceSize, out float4 energy, out float4 weighted, out float4 geometry )
 {
-    float solidAngle = CubeTexelSolidAngle( DTid.xy, sourceSize );
-    if ( DTid.z == 0 )
-        TexelSolidAngle[DTid.xy] = solidAngle;
-    SourceTexelBlock( Source.Load( int4( DTid, 0 ) ).rgb, DTid.z, DTid.xy, sourceSize, solidAngle, energy, weighted, geometry );
+    SourceTexelBlock( Source.Load( int4( DTid, 0 ) ).rgb, DTid.z, DTid.xy, sourceSize, CubeTexelSolidAngle( DTid.xy, sourceSize ),
+                      energy, weighted, geometry );
 }
 
 [numthreads(8, 8, 1)]

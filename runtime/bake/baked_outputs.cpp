@@ -11,6 +11,7 @@
 #include "float_image.hpp"
 #include "kernels/specular_method.hpp"
 #include "shading_maps.hpp"
+#include "shading/built_lobe_tables.hpp"
 #include "vulkan_context.hpp"
 
 #include <fmt/core.h>
@@ -235,10 +236,12 @@ BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kerne
     progress.part("download");
     const auto rgba16 = image_io::PixelFormat::Rgba16Float;
     if (plan.specular) outputs.specular = cached.specular ? *cached.specular : download(context, results.specular, "specular", rgba16);
-    if (writesLobeTable(plan))
+    if (writesLobeTable(plan)) {
+        const auto table = shading::builtLobeTable(plan.recipe->weighting);
         outputs.lobeTable = cached.lobeTable ? *cached.lobeTable
                                              : BakedTexture{"lobe_table", image_io::PixelFormat::Rgba32Float, shading::kLobeTableSize,
-                                                            1, 1, lobeTableOf(plan.recipe->weighting)};
+                                                            1, 1, std::vector<float>(table.begin(), table.end())};
+    }
     if (plan.lut) outputs.lut = cached.lut ? *cached.lut : download(context, results.lut, "brdf_lut", lutFormatOf(settings));
     outputs.irradiance = cached.irradiance ? *cached.irradiance : download(context, results.irradiance.cube, "irradiance", rgba16);
     return outputs;

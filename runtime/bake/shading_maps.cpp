@@ -85,20 +85,10 @@ void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Imag
     irradiance.upload(context, values);
 }
 
-// The table depends on the weighting alone: computed when the kit was built (built_lobe_tables.hpp).
-const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting) {
-    const auto copied = [](shading::LobeWeighting of) {
-        const auto table = shading::builtLobeTable(of);
-        return std::vector<float>(table.begin(), table.end());
-    };
-    static const std::vector<float> byNdotL = copied(shading::LobeWeighting::NdotL), byG1 = copied(shading::LobeWeighting::G1);
-    return weighting == shading::LobeWeighting::G1 ? byG1 : byNdotL;
-}
-
 vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting) {
     const uint32_t size = shading::kLobeTableSize;
     vulkan::Image table(context, {"LobeTable", &vulkan::texelFormatNamed("R32G32B32A32_SFLOAT"), size, size, 1, 1, false, false});
-    table.upload(context, lobeTableOf(weighting));
+    table.upload(context, shading::builtLobeTable(weighting));
     return table;
 }
 

@@ -32,9 +32,7 @@ TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan:
 // the rest, the texel is clamped at 0.
 void addLightTexelsIrradiance(const vulkan::VulkanContext& context, vulkan::Image& irradiance, const TakenOutLights& taken);
 
-// The lobe table of a weighting (shading::lobeTable, fitted when the kit was built:
-// shading/built_lobe_tables.hpp), as values and as an RGBA32F image for the shading to read.
-const std::vector<float>& lobeTableOf(shading::LobeWeighting weighting);
+// The lobe table of a weighting (shading::builtLobeTable) as an RGBA32F image for the shading to read.
 vulkan::Image lobeTableImage(const vulkan::VulkanContext& context, shading::LobeWeighting weighting);
 
 // The glass shading's tables, each computed once per process at its full size where the recipe

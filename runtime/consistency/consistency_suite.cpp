@@ -1,6 +1,7 @@
 #include "consistency_suite.hpp"
 
 #include "bake_progress.hpp"
+#include "kernels/convolution_method.hpp"
 #include "kernels/kernel_table.hpp"
 #include "kernels/lut_methods.hpp"
 #include "shader_manifest.hpp"
@@ -40,7 +41,7 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
         options.shaders.emplace(kernel.name, std::move(shader));
     }
     auto inPyramid = options.shaders.at("PrefilterConvolutionCS");
-    inPyramid.defines["SOURCE_TEXELS_IN_PYRAMID"] = "1";
+    inPyramid.defines[kernels::kSourceTexelsInPyramidDefine] = "1";
     options.shaders.emplace(kConvolutionInPyramidShader, std::move(inPyramid));
     return options;
 }

@@ -3,6 +3,7 @@
 #include "cube_environment.hpp"
 #include "reference_bake.hpp"
 #include "shading_maps.hpp"
+#include "shading/built_lobe_tables.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -56,7 +57,8 @@ PreviewInputs previewInputs(const SuiteEnvironment& environment, uint32_t column
     inputs.width = columns * cellSize;
     const uint32_t panelWidth = inputs.width / inputs.specular.mips;
     inputs.height = rows * cellSize + panelWidth / 2;
-    inputs.lobeTable = bake::lobeTableOf(shading::LobeWeighting::G1);
+    const auto lobeTable = shading::builtLobeTable(shading::LobeWeighting::G1);
+    inputs.lobeTable.assign(lobeTable.begin(), lobeTable.end());
     inputs.lights = bake::packEnvironmentLights({{glm::normalize(glm::dvec3(0.3, 0.5, 0.8)), {40, 30, 20}, 0.0086, 0.0524, 0.2}});
     const kernels::IblRecipeParameters recipe{specularSize, 0, 1.f, uint32_t(shading::LookupDirection::Fitted),
                                               uint32_t(shading::LookupLobe::Pair), 1, 2};

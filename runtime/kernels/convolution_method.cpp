@@ -62,7 +62,7 @@ uint32_t convolutionPyramidSize(uint32_t sourceSize, uint32_t maxSourceTexelsInP
 }
 
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid, const ShaderFiles& files) {
-    const std::map<std::string, std::string> defines{{"SOURCE_TEXELS_IN_PYRAMID", sourceTexelsInPyramid ? "1" : "0"}};
+    const std::map<std::string, std::string> defines{{kSourceTexelsInPyramidDefine, sourceTexelsInPyramid ? "1" : "0"}};
     return compileKernel(kernelFor(KernelRole::PrefilterConvolution, method), defines, {}, files);
 }
 

@@ -53,6 +53,9 @@ bool pyramidHoldsSourceTexels(uint32_t sourceSize, uint32_t maxSourceTexelsInPyr
 // The pyramids' face size for such a source: its own where it keeps its texels, else pyramidSize's.
 uint32_t convolutionPyramidSize(uint32_t sourceSize, uint32_t maxSourceTexelsInPyramid = kMaxSourceTexelsInPyramid);
 
+// The define that compiles PrefilterConvolution for a pyramid holding the source's texels ("1").
+inline constexpr const char* kSourceTexelsInPyramidDefine = "SOURCE_TEXELS_IN_PYRAMID";
+
 // PrefilterConvolution for a pyramid that holds the source's texels, or for one half its width.
 KernelProgram compileConvolutionWalk(const std::string& method, bool sourceTexelsInPyramid,
                                      const ShaderFiles& files = embeddedShaderFiles());
