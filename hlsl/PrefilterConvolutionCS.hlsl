@@ -68,13 +68,13 @@ void LoadBlock( uint face, uint2 xy, uint level, uint baseSize, out float4 energ
 // of L (D N.H / (4 V.H), with N.H = V.H) times the N.L weight: D(sqrt((1 + N.L) / 2)) N.L,
 // without the constant 1/4, which cancels (ExpectedLobeWeight).
 
-// Phi(z), the standard normal distribution, by Abramowitz & Stegun 7.1.26 (|error| < 1.5e-7 in erf).
-float NormalCdf( float z )
+// Phi(z), the standard normal distribution, by Abramowitz & Stegun 7.1.26 (|error| < 1.5e-7 in
+// erf), given its density's exponential exp(-z²/2), which ClippedMean needs too: one exp, not two.
+float NormalCdf( float z, float gaussian )
 {
-    float x = abs( z ) * 0.70710678f;
-    float t = 1.f / ( 1.f + 0.3275911f * x );
+    float t = 1.f / ( 1.f + 0.3275911f * 0.70710678f * abs( z ) );
     float polynomial = 0.254829592f + t * ( -0.284496736f + t * ( 1.421413741f + t * ( -1.453152027f + t * 1.061405429f ) ) );
-    float tail = 0.5f * t * polynomial * exp( -x * x );
+    float tail = 0.5f * t * polynomial * gaussian;
     return z >= 0.f ? 1.f - tail : tail;
 }
 
@@ -85,8 +85,8 @@ float ClippedMean( float mean, float spread )
     if ( spread > 0.f && abs( mean ) <= 5.f * spread )
     {
         float z = mean / spread;
-        float density = exp( -0.5f * z * z ) * 0.39894228f;
-        clipped = spread * density + mean * NormalCdf( z );
+        float gaussian = exp( -0.5f * z * z );
+        clipped = spread * gaussian * 0.39894228f + mean * NormalCdf( z, gaussian );
     }
     return clipped;
 }
@@ -204,9 +204,11 @@ bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float mea
 {
     float3 centre = CubeFaceDirection( face, ( float2( xy ) + 0.5f ) / float( size ) );
     float cosine = dot( normal, centre );
-    float brightness = weighted.w / max( geometry.w * meanLuminance, 1e-30f );
-    float reach = Refine * 2.f / float( size ) * pow( max( brightness, 1.f ), 1.f / 3.f );
-    bool nearN = 2.f - 2.f * cosine < reach * reach;
+    float reach = Refine * 2.f / float( size );
+    float brightness = max( weighted.w / max( geometry.w * meanLuminance, 1e-30f ), 1.f );
+    // chord < reach x cbrt(brightness), cubed: CPU drivers make a pow of a log and an exp.
+    float widths = ( 2.f - 2.f * cosine ) / ( reach * reach );
+    bool nearN = widths * widths * widths < brightness * brightness;
     bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN / float( size );
     return nearN || acrossHorizon;
 }

@@ -26,15 +26,12 @@ struct ChangedTexels {
     std::vector<float> residual;
 };
 
-ChangedTexels changedTexels(const std::vector<float>& source, const std::vector<float>& residual, uint32_t size) {
+ChangedTexels changedTexels(const shading::Extraction& extraction, uint32_t size) {
     ChangedTexels changed;
-    for (size_t texel = 0; texel < source.size() / 4; ++texel) {
-        const float* before = &source[4 * texel];
-        const float* after = &residual[4 * texel];
-        const glm::vec3 taken(before[0] - after[0], before[1] - after[1], before[2] - after[2]);
-        if (taken == glm::vec3(0)) continue;
+    for (const auto& [texel, taken] : extraction.taken) {
         changed.light.push_back({uint32_t(texel), taken});
         changed.where.push_back({uint32_t(texel / (size_t(size) * size)), uint32_t(texel / size % size), uint32_t(texel % size)});
+        const float* after = &extraction.residual[4 * texel];
         changed.residual.insert(changed.residual.end(), after, after + 4);
     }
     return changed;
@@ -46,17 +43,15 @@ TakenOutLights takeOutLights(const vulkan::VulkanContext& context, const vulkan:
                              const shading::ExtractionSettings& settings, kernels::Kernel& downsample, BakeProgress& progress) {
     progress.begin("lights");
     const uint32_t size = source.desc().width;
-    auto faces = vulkan::downloadMip(context, source, 0);
-    auto extraction = shading::extractLights(faces, size, settings);
+    auto extraction = shading::extractLights(vulkan::downloadMip(context, source, 0), size, settings);
     TakenOutLights result{std::move(extraction.lights), std::nullopt, {}, {}};
     if (result.lights.empty()) {
-        result.restMipZero = std::move(faces);
+        result.restMipZero = std::move(extraction.residual);
         progress.end();
         return result;
     }
     progress.advance(0.8, "residual");
-    auto changed = changedTexels(faces, extraction.residual, size);
-    std::vector<float>().swap(faces); // before the residual cube is made (at 1024², 96 MiB of the step's peak)
+    auto changed = changedTexels(extraction, size);
     result.lightTexels = std::move(changed.light);
     // The residual is the source but for the lights' few texels: copied on the device, those written over it.
     auto& residual = result.residual.emplace(

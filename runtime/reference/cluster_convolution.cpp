@@ -19,13 +19,13 @@ vec3<T> blockCentre(uint32_t face, uint32_t x, uint32_t y, uint32_t size) {
     return CubeFaceDirection<T>(face, (vec2<T>(T(x), T(y)) + T(0.5)) / T(size));
 }
 
+// The shader's NormalCdf, given the exponential exp(-z²/2) it shares with ClippedMean.
 template <typename T>
-T NormalCdf(T z) {
-    const T x = std::abs(z) * T(0.70710678);
-    const T t = T(1) / (T(1) + T(0.3275911) * x);
+T NormalCdf(T z, T gaussian) {
+    const T t = T(1) / (T(1) + T(0.3275911) * T(0.70710678) * std::abs(z));
     const T polynomial =
         T(0.254829592) + t * (T(-0.284496736) + t * (T(1.421413741) + t * (T(-1.453152027) + t * T(1.061405429))));
-    const T tail = T(0.5) * t * polynomial * std::exp(-x * x);
+    const T tail = T(0.5) * t * polynomial * gaussian;
     return z >= T(0) ? T(1) - tail : tail;
 }
 
@@ -33,8 +33,8 @@ template <typename T>
 T ClippedMean(T mean, T spread) {
     if (!(spread > T(0) && std::abs(mean) <= T(5) * spread)) return std::max(mean, T(0));
     const T z = mean / spread;
-    const T density = std::exp(T(-0.5) * z * z) * T(0.39894228);
-    return spread * density + mean * NormalCdf(z);
+    const T gaussian = std::exp(T(-0.5) * z * z);
+    return spread * gaussian * T(0.39894228) + mean * NormalCdf(z, gaussian);
 }
 
 // The shader's ExpectedLobeWeight: E[D(u) w(u)] for N.L = u of mean `ndotl` and variance
@@ -153,8 +153,10 @@ bool opens(const ClusterPyramid<T>& pyramid, vec3<T> normal, const Block& block,
     const size_t i = pyramid.index(block.level, block.face, block.x, block.y);
     const T brightness =
         pyramid.centroid[block.level][i].w / std::max(pyramid.geometry[block.level][i].w * meanLight, T(1e-30));
-    const T reach = T(tree.refine) * T(2) / T(size) * std::pow(std::max(brightness, T(1)), T(1) / T(3));
-    const bool nearN = T(2) - T(2) * cosine < reach * reach;
+    const T reach = T(tree.refine) * T(2) / T(size);
+    const T widths = (T(2) - T(2) * cosine) / (reach * reach);
+    const T light = std::max(brightness, T(1));
+    const bool nearN = widths * widths * widths < light * light;
     const bool acrossHorizon = block.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
     return nearN || acrossHorizon;
 }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace iblkit::shading {
 namespace {
@@ -51,14 +52,31 @@ struct Region {
     double light = 0, solidAngle = 0; // luminance times solid angle, and solid angle
 };
 
-// Each texel's solid angle, the same on every face: one face's, not six copies (at 1024², 48 MiB).
+// Each texel's solid angle, the same on every face: one face's, not six copies (at 1024², 48 MiB),
+// from the area element at the face's (size + 1)² texel corners, each evaluated once (CubeTexelSolidAngle
+// evaluates the four of every texel: at 1024², 4 million arctangents instead of 1).
 struct CubeSolidAngles {
     std::vector<double> face;
     double operator[](size_t texel) const { return face[texel % face.size()]; }
 };
 
-std::vector<Region> brightRegions(const std::vector<bool>& bright, const std::vector<double>& luminance,
-                                  const CubeSolidAngles& solidAngle, uint32_t size) {
+CubeSolidAngles cubeSolidAngles(uint32_t size) {
+    std::vector<double> corner(size + 1);
+    const double inverseSize = 1.0 / size; // as CubeTexelSolidAngle has it
+    for (uint32_t i = 0; i <= size; ++i) corner[i] = 2.0 * i * inverseSize - 1;
+    std::vector<double> area(size_t(size + 1) * (size + 1));
+    for (uint32_t y = 0; y <= size; ++y)
+        for (uint32_t x = 0; x <= size; ++x) area[size_t(y) * (size + 1) + x] = reference::CubeAreaElement(corner[x], corner[y]);
+    CubeSolidAngles solidAngle{std::vector<double>(size_t(size) * size)};
+    const auto at = [&](uint32_t x, uint32_t y) { return area[size_t(y) * (size + 1) + x]; };
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x)
+            solidAngle.face[size_t(y) * size + x] = at(x, y) - at(x, y + 1) - at(x + 1, y) + at(x + 1, y + 1);
+    return solidAngle;
+}
+
+std::vector<Region> brightRegions(const std::vector<bool>& bright, std::span<const float> faces, const CubeSolidAngles& solidAngle,
+                                  uint32_t size) {
     std::vector<bool> seen(bright.size(), false);
     std::vector<Region> regions;
     for (size_t start = 0; start < bright.size(); ++start) {
@@ -70,7 +88,7 @@ std::vector<Region> brightRegions(const std::vector<bool>& bright, const std::ve
             const size_t texel = stack.back();
             stack.pop_back();
             region.texels.push_back(texel);
-            region.light += luminance[texel] * solidAngle[texel];
+            region.light += std::max(luminanceOf(&faces[4 * texel]), 0.0) * solidAngle[texel];
             region.solidAngle += solidAngle[texel];
             for (const size_t next : neighboursOf(texel, size))
                 if (bright[next] && !seen[next]) seen[next] = true, stack.push_back(next);
@@ -110,39 +128,39 @@ void fillFromSurroundings(std::vector<float>& residual, const Region& hole, uint
 
 } // namespace
 
-Extraction extractLights(std::span<const float> faces, uint32_t size, const ExtractionSettings& settings) {
-    const size_t texels = size_t(6) * size * size, perFace = size_t(size) * size;
-    CubeSolidAngles solidAngle{std::vector<double>(perFace)}; // computed once, not six times
-    for (size_t texel = 0; texel < perFace; ++texel)
-        solidAngle.face[texel] = CubeTexelSolidAngle<double>(uint32_t(texel % size), uint32_t(texel / size), size);
-    std::vector<double> luminance(texels);
+Extraction extractLights(std::vector<float> faces, uint32_t size, const ExtractionSettings& settings) {
+    const size_t texels = size_t(6) * size * size;
+    const auto solidAngle = cubeSolidAngles(size);
     double total = 0;
-    for (size_t texel = 0; texel < texels; ++texel) {
-        luminance[texel] = std::max(luminanceOf(&faces[4 * texel]), 0.0);
-        total += luminance[texel] * solidAngle[texel];
-    }
-    Extraction result{{}, std::vector<float>(faces.begin(), faces.end())};
-    if (!(total > 0) || !std::isfinite(total)) return result;
+    for (size_t texel = 0; texel < texels; ++texel) total += std::max(luminanceOf(&faces[4 * texel]), 0.0) * solidAngle[texel];
+    if (!(total > 0) || !std::isfinite(total)) return {{}, std::move(faces), {}};
     const double mean = total / (4 * std::numbers::pi);
     std::vector<bool> bright(texels);
-    for (size_t texel = 0; texel < texels; ++texel) bright[texel] = luminance[texel] > settings.threshold * mean;
-    auto regions = brightRegions(bright, luminance, solidAngle, size);
+    for (size_t texel = 0; texel < texels; ++texel) bright[texel] = luminanceOf(&faces[4 * texel]) > settings.threshold * mean;
+    auto regions = brightRegions(bright, faces, solidAngle, size);
     std::erase_if(regions, [&](const Region& region) {
         return region.light < settings.minShare * total || diskRadius(region.solidAngle) > settings.maxRadius;
     });
     std::sort(regions.begin(), regions.end(), [](const Region& a, const Region& b) { return a.light > b.light; });
     if (regions.size() > settings.maxLights) regions.resize(settings.maxLights);
+    Extraction result{{}, std::move(faces), {}};
+    auto& residual = result.residual;
     for (const auto& region : regions) {
-        fillFromSurroundings(result.residual, region, size);
+        std::vector<glm::vec3> before;
+        before.reserve(region.texels.size());
+        for (const size_t texel : region.texels) before.emplace_back(residual[4 * texel], residual[4 * texel + 1], residual[4 * texel + 2]);
+        fillFromSurroundings(residual, region, size);
         EnvironmentLight light;
         glm::dvec3 power(0), centre(0);
-        for (const size_t texel : region.texels) {
+        for (size_t i = 0; i < region.texels.size(); ++i) {
+            const size_t texel = region.texels[i];
             const auto x = uint32_t(texel % size), y = uint32_t(texel / size % size), face = uint32_t(texel / (size_t(size) * size));
-            glm::dvec3 removed(0);
-            for (int c = 0; c < 3; ++c) removed[c] = double(faces[4 * texel + c]) - double(result.residual[4 * texel + c]);
+            const glm::vec3 after(residual[4 * texel], residual[4 * texel + 1], residual[4 * texel + 2]);
+            const glm::dvec3 removed = glm::dvec3(before[i]) - glm::dvec3(after);
             power += removed * solidAngle[texel];
             const glm::dvec3 d = CubeFaceDirection<double>(face, glm::dvec2((x + 0.5) / size, (y + 0.5) / size));
             centre += (0.2126 * removed.r + 0.7152 * removed.g + 0.0722 * removed.b) * solidAngle[texel] * d;
+            if (before[i] != after) result.taken.push_back({texel, before[i] - after});
         }
         light.direction = glm::normalize(centre);
         light.solidAngle = region.solidAngle;
@@ -151,6 +169,7 @@ Extraction extractLights(std::span<const float> faces, uint32_t size, const Extr
         light.share = (0.2126 * power.r + 0.7152 * power.g + 0.0722 * power.b) / total;
         result.lights.push_back(light);
     }
+    std::sort(result.taken.begin(), result.taken.end(), [](const TakenTexel& a, const TakenTexel& b) { return a.texel < b.texel; });
     return result;
 }
 

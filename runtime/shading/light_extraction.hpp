@@ -29,9 +29,17 @@ struct ExtractionSettings {
     uint32_t maxLights = 8;
 };
 
+// A texel the extraction changed: its index in the faces (face, row, column) and the radiance taken
+// out of it, its value less the residual's.
+struct TakenTexel {
+    size_t texel = 0;
+    glm::vec3 taken{0};
+};
+
 struct Extraction {
     std::vector<EnvironmentLight> lights;
     std::vector<float> residual; // the faces with each light's texels filled in from their surroundings
+    std::vector<TakenTexel> taken; // by texel index, every texel whose residual differs from the faces
 };
 
 // `faces`: RGBA floats, face +X..-Z, row, column, size x size each (the bake's source cube, mip 0).
@@ -39,6 +47,7 @@ struct Extraction {
 // ring at a time (the mean of the neighbours already known), never above their own value; the
 // light is what that leaves, so the residual plus the lights hold the environment's light
 // exactly.
-Extraction extractLights(std::span<const float> faces, uint32_t size, const ExtractionSettings& settings);
+// The residual is `faces` itself, changed in place: move a cube in to spare its copy.
+Extraction extractLights(std::vector<float> faces, uint32_t size, const ExtractionSettings& settings);
 
 } // namespace iblkit::shading

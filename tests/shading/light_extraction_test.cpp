@@ -68,6 +68,24 @@ TEST(LightExtraction, ASmallSunBecomesOneLightAndTheResidualKeepsTheRest) {
         << "the sun's light above the sky, over the disk of its texels' solid angle";
 }
 
+TEST(LightExtraction, ListsEveryTexelItChangedInOrderWithWhatItTookOut) {
+    const auto faces = environment({{{0.3, 0.5, 0.8}, 4 * kDegree, 2000.f}, {{-0.7, 0.1, -0.4}, 3 * kDegree, 3000.f}});
+    const auto extraction = extractLights(faces, kSize, {});
+    ASSERT_EQ(extraction.lights.size(), 2u);
+    size_t listed = 0;
+    for (size_t texel = 0; texel < faces.size() / 4; ++texel) {
+        const glm::vec3 before(faces[4 * texel], faces[4 * texel + 1], faces[4 * texel + 2]);
+        const glm::vec3 after(extraction.residual[4 * texel], extraction.residual[4 * texel + 1], extraction.residual[4 * texel + 2]);
+        if (before == after) continue;
+        ASSERT_LT(listed, extraction.taken.size()) << texel;
+        EXPECT_EQ(extraction.taken[listed].texel, texel);
+        EXPECT_EQ(extraction.taken[listed].taken, before - after) << texel;
+        ++listed;
+    }
+    EXPECT_EQ(listed, extraction.taken.size()) << "a listed texel the residual did not change";
+    EXPECT_GE(listed, 8u) << "two suns of 4 and 3 degrees on 32² faces, of 2.8-degree texels: about 6 and 4 texels";
+}
+
 TEST(LightExtraction, ASunAcrossAFaceEdgeIsOneLight) {
     const Disk sun{{1.0, 0.1, 1.0}, 5 * kDegree, 2000.f}; // on the edge of +X and +Z
     const auto extraction = extractLights(environment({sun}), kSize, {});
