@@ -4,7 +4,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, std140) uniform ClusterParameter
 {
     uint Level;
-} _433;
+} _444;
 
 layout(binding = 3, r32f) uniform writeonly image2D TexelSolidAngle;
 layout(binding = 0, rgba32f) uniform writeonly image2DArray Energy;
@@ -20,189 +20,189 @@ void main()
     uvec3 param = gl_GlobalInvocationID;
     do
     {
-        uvec3 _810 = uvec3(0u);
-        uvec3 _811 = uvec3(imageSize(Energy));
-        _810.x = _811.x;
-        _810.y = _811.y;
-        _810.z = _811.z;
-        if (any(greaterThanEqual(gl_GlobalInvocationID, _810)))
+        uvec3 _821 = uvec3(0u);
+        uvec3 _822 = uvec3(imageSize(Energy));
+        _821.x = _822.x;
+        _821.y = _822.y;
+        _821.z = _822.z;
+        if (any(greaterThanEqual(gl_GlobalInvocationID, _821)))
         {
             break;
         }
-        if (_433.Level == 0u)
+        if (_444.Level == 0u)
         {
-            uvec3 _815 = uvec3(textureSize(Source, 0));
-            vec4 _1809;
-            vec4 _1810;
-            vec4 _1811;
-            if (_810.x == _815.x)
+            uvec3 _826 = uvec3(textureSize(Source, 0));
+            vec4 _1834;
+            vec4 _1835;
+            vec4 _1836;
+            if (_821.x == _826.x)
             {
-                uvec3 _819 = gl_GlobalInvocationID;
-                uvec2 _1180 = gl_GlobalInvocationID.xy;
-                float _1237 = float(_815.x);
-                float _1238 = 1.0 / _1237;
-                float _1245 = fma(2.0 * float(_1180.x), _1238, -1.0);
-                float _1252 = fma(2.0 * float(_1180.y), _1238, -1.0);
-                float _1256 = _1245 + (2.0 / _1237);
-                float _1260 = _1252 + (2.0 / _1237);
-                float _1275 = ((atan(_1245 * _1252, sqrt(fma(_1245, _1245, _1252 * _1252) + 1.0)) - atan(_1245 * _1260, sqrt(fma(_1245, _1245, _1260 * _1260) + 1.0))) - atan(_1256 * _1252, sqrt(fma(_1256, _1256, _1252 * _1252) + 1.0))) + atan(_1256 * _1260, sqrt(fma(_1256, _1256, _1260 * _1260) + 1.0));
-                vec3 _1211 = texelFetch(Source, ivec4(ivec3(gl_GlobalInvocationID), 0).xyz, 0).xyz;
-                precise vec2 _1347 = vec2(gl_GlobalInvocationID.xy) + vec2(0.5);
-                precise vec2 _1351 = _1347 / vec2(float(_815.x));
-                vec2 _1338 = (_1351 - vec2(0.5)) * vec2(2.0, -2.0);
-                vec3 _1804;
-                if (_819.z == 0u)
+                uvec3 _830 = gl_GlobalInvocationID;
+                uvec2 _1191 = gl_GlobalInvocationID.xy;
+                float _1248 = float(_826.x);
+                float _1249 = 1.0 / _1248;
+                float _1256 = fma(2.0 * float(_1191.x), _1249, -1.0);
+                float _1263 = fma(2.0 * float(_1191.y), _1249, -1.0);
+                float _1267 = _1256 + (2.0 / _1248);
+                float _1271 = _1263 + (2.0 / _1248);
+                float _1286 = ((atan(_1256 * _1263, sqrt(fma(_1256, _1256, _1263 * _1263) + 1.0)) - atan(_1256 * _1271, sqrt(fma(_1256, _1256, _1271 * _1271) + 1.0))) - atan(_1267 * _1263, sqrt(fma(_1267, _1267, _1263 * _1263) + 1.0))) + atan(_1267 * _1271, sqrt(fma(_1267, _1267, _1271 * _1271) + 1.0));
+                vec3 _1222 = texelFetch(Source, ivec4(ivec3(gl_GlobalInvocationID), 0).xyz, 0).xyz;
+                precise vec2 _1358 = vec2(gl_GlobalInvocationID.xy) + vec2(0.5);
+                precise vec2 _1362 = _1358 / vec2(float(_826.x));
+                vec2 _1398 = (_1362 - vec2(0.5)) * vec2(2.0, -2.0);
+                vec3 _1829;
+                if (_830.z == 0u)
                 {
-                    _1804 = vec3(1.0, _1338.y, -_1338.x);
+                    _1829 = vec3(1.0, _1398.y, -_1398.x);
                 }
                 else
                 {
-                    vec3 _1805;
-                    if (_819.z == 1u)
+                    vec3 _1830;
+                    if (_830.z == 1u)
                     {
-                        _1805 = vec3(-1.0, _1338.y, _1338.x);
+                        _1830 = vec3(-1.0, _1398.y, _1398.x);
                     }
                     else
                     {
-                        vec3 _1806;
-                        if (_819.z == 2u)
+                        vec3 _1831;
+                        if (_830.z == 2u)
                         {
-                            _1806 = vec3(_1338.x, 1.0, -_1338.y);
+                            _1831 = vec3(_1398.x, 1.0, -_1398.y);
                         }
                         else
                         {
-                            vec3 _1807;
-                            if (_819.z == 3u)
+                            vec3 _1832;
+                            if (_830.z == 3u)
                             {
-                                _1807 = vec3(_1338.x, -1.0, _1338.y);
+                                _1832 = vec3(_1398.x, -1.0, _1398.y);
                             }
                             else
                             {
-                                vec3 _1808;
-                                if (_819.z == 4u)
+                                vec3 _1833;
+                                if (_830.z == 4u)
                                 {
-                                    _1808 = vec3(_1338.x, _1338.y, 1.0);
+                                    _1833 = vec3(_1398.x, _1398.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1808 = vec3(-_1338.x, _1338.y, -1.0);
+                                    _1833 = vec3(-_1398.x, _1398.y, -1.0);
                                 }
-                                _1807 = _1808;
+                                _1832 = _1833;
                             }
-                            _1806 = _1807;
+                            _1831 = _1832;
                         }
-                        _1805 = _1806;
+                        _1830 = _1831;
                     }
-                    _1804 = _1805;
+                    _1829 = _1830;
                 }
-                vec3 _1452 = normalize(_1804);
-                precise float _1358 = max(dot(_1211, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1275;
-                precise vec3 _1361 = _1211 * _1275;
-                precise vec3 _1364 = _1452 * _1358;
-                precise vec3 _1367 = _1452 * _1275;
-                _1811 = vec4(_1367, _1275);
-                _1810 = vec4(_1364, _1358);
-                _1809 = vec4(_1361, _1275);
+                vec3 _1404 = normalize(_1829);
+                precise float _1369 = max(dot(_1222, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1286;
+                precise vec3 _1372 = _1222 * _1286;
+                precise vec3 _1375 = _1404 * _1369;
+                precise vec3 _1378 = _1404 * _1286;
+                _1836 = vec4(_1378, _1286);
+                _1835 = vec4(_1375, _1369);
+                _1834 = vec4(_1372, _1286);
             }
             else
             {
-                uvec3 _824 = gl_GlobalInvocationID;
-                vec4 _1772;
-                vec4 _1773;
-                vec4 _1774;
-                _1774 = vec4(0.0);
-                _1773 = vec4(0.0);
-                _1772 = vec4(0.0);
-                vec4 _1528;
-                vec4 _1531;
-                vec4 _1534;
-                for (uint _1771 = 0u; _1771 < 4u; _1774 = _1534, _1773 = _1531, _1772 = _1528, _1771++)
+                uvec3 _835 = gl_GlobalInvocationID;
+                vec4 _1797;
+                vec4 _1798;
+                vec4 _1799;
+                _1799 = vec4(0.0);
+                _1798 = vec4(0.0);
+                _1797 = vec4(0.0);
+                vec4 _1546;
+                vec4 _1549;
+                vec4 _1552;
+                for (uint _1796 = 0u; _1796 < 4u; _1799 = _1552, _1798 = _1549, _1797 = _1546, _1796++)
                 {
-                    uvec2 _1484 = (gl_GlobalInvocationID.xy * uvec2(2u)) + uvec2(_1771 & 1u, _1771 >> uint(1));
-                    uvec2 _1456 = _1484;
-                    float _1555 = float(_815.x);
-                    float _1556 = 1.0 / _1555;
-                    float _1563 = fma(2.0 * float(_1456.x), _1556, -1.0);
-                    float _1570 = fma(2.0 * float(_1456.y), _1556, -1.0);
-                    float _1574 = _1563 + (2.0 / _1555);
-                    float _1578 = _1570 + (2.0 / _1555);
-                    float _1593 = ((atan(_1563 * _1570, sqrt(fma(_1563, _1563, _1570 * _1570) + 1.0)) - atan(_1563 * _1578, sqrt(fma(_1563, _1563, _1578 * _1578) + 1.0))) - atan(_1574 * _1570, sqrt(fma(_1574, _1574, _1570 * _1570) + 1.0))) + atan(_1574 * _1578, sqrt(fma(_1574, _1574, _1578 * _1578) + 1.0));
-                    if (_824.z == 0u)
+                    uvec2 _1502 = (gl_GlobalInvocationID.xy * uvec2(2u)) + uvec2(_1796 & 1u, _1796 >> uint(1));
+                    uvec2 _1474 = _1502;
+                    float _1573 = float(_826.x);
+                    float _1574 = 1.0 / _1573;
+                    float _1581 = fma(2.0 * float(_1474.x), _1574, -1.0);
+                    float _1588 = fma(2.0 * float(_1474.y), _1574, -1.0);
+                    float _1592 = _1581 + (2.0 / _1573);
+                    float _1596 = _1588 + (2.0 / _1573);
+                    float _1611 = ((atan(_1581 * _1588, sqrt(fma(_1581, _1581, _1588 * _1588) + 1.0)) - atan(_1581 * _1596, sqrt(fma(_1581, _1581, _1596 * _1596) + 1.0))) - atan(_1592 * _1588, sqrt(fma(_1592, _1592, _1588 * _1588) + 1.0))) + atan(_1592 * _1596, sqrt(fma(_1592, _1592, _1596 * _1596) + 1.0));
+                    if (_835.z == 0u)
                     {
-                        imageStore(TexelSolidAngle, ivec2(_1484), vec4(_1593));
+                        imageStore(TexelSolidAngle, ivec2(_1502), vec4(_1611));
                     }
-                    vec3 _1516 = texelFetch(Source, ivec4(ivec2(_1484), int(_824.z), 0).xyz, 0).xyz;
-                    precise vec2 _1665 = vec2(_1484) + vec2(0.5);
-                    precise vec2 _1669 = _1665 / vec2(float(_815.x));
-                    vec2 _1656 = (_1669 - vec2(0.5)) * vec2(2.0, -2.0);
-                    vec3 _1775;
-                    if (_824.z == 0u)
+                    vec3 _1534 = texelFetch(Source, ivec4(ivec2(_1502), int(_835.z), 0).xyz, 0).xyz;
+                    precise vec2 _1683 = vec2(_1502) + vec2(0.5);
+                    precise vec2 _1687 = _1683 / vec2(float(_826.x));
+                    vec2 _1723 = (_1687 - vec2(0.5)) * vec2(2.0, -2.0);
+                    vec3 _1800;
+                    if (_835.z == 0u)
                     {
-                        _1775 = vec3(1.0, _1656.y, -_1656.x);
+                        _1800 = vec3(1.0, _1723.y, -_1723.x);
                     }
                     else
                     {
-                        vec3 _1776;
-                        if (_824.z == 1u)
+                        vec3 _1801;
+                        if (_835.z == 1u)
                         {
-                            _1776 = vec3(-1.0, _1656.y, _1656.x);
+                            _1801 = vec3(-1.0, _1723.y, _1723.x);
                         }
                         else
                         {
-                            vec3 _1777;
-                            if (_824.z == 2u)
+                            vec3 _1802;
+                            if (_835.z == 2u)
                             {
-                                _1777 = vec3(_1656.x, 1.0, -_1656.y);
+                                _1802 = vec3(_1723.x, 1.0, -_1723.y);
                             }
                             else
                             {
-                                vec3 _1778;
-                                if (_824.z == 3u)
+                                vec3 _1803;
+                                if (_835.z == 3u)
                                 {
-                                    _1778 = vec3(_1656.x, -1.0, _1656.y);
+                                    _1803 = vec3(_1723.x, -1.0, _1723.y);
                                 }
                                 else
                                 {
-                                    vec3 _1779;
-                                    if (_824.z == 4u)
+                                    vec3 _1804;
+                                    if (_835.z == 4u)
                                     {
-                                        _1779 = vec3(_1656.x, _1656.y, 1.0);
+                                        _1804 = vec3(_1723.x, _1723.y, 1.0);
                                     }
                                     else
                                     {
-                                        _1779 = vec3(-_1656.x, _1656.y, -1.0);
+                                        _1804 = vec3(-_1723.x, _1723.y, -1.0);
                                     }
-                                    _1778 = _1779;
+                                    _1803 = _1804;
                                 }
-                                _1777 = _1778;
+                                _1802 = _1803;
                             }
-                            _1776 = _1777;
+                            _1801 = _1802;
                         }
-                        _1775 = _1776;
+                        _1800 = _1801;
                     }
-                    vec3 _1770 = normalize(_1775);
-                    precise float _1676 = max(dot(_1516, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1593;
-                    precise vec3 _1679 = _1516 * _1593;
-                    precise vec3 _1682 = _1770 * _1676;
-                    precise vec3 _1685 = _1770 * _1593;
-                    _1528 = _1772 + vec4(_1679, _1593);
-                    _1531 = _1773 + vec4(_1682, _1676);
-                    _1534 = _1774 + vec4(_1685, _1593);
+                    vec3 _1729 = normalize(_1800);
+                    precise float _1694 = max(dot(_1534, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0) * _1611;
+                    precise vec3 _1697 = _1534 * _1611;
+                    precise vec3 _1700 = _1729 * _1694;
+                    precise vec3 _1703 = _1729 * _1611;
+                    _1546 = _1797 + vec4(_1697, _1611);
+                    _1549 = _1798 + vec4(_1700, _1694);
+                    _1552 = _1799 + vec4(_1703, _1611);
                 }
-                _1811 = _1774;
-                _1810 = _1773;
-                _1809 = _1772;
+                _1836 = _1799;
+                _1835 = _1798;
+                _1834 = _1797;
             }
-            imageStore(Energy, ivec3(gl_GlobalInvocationID), _1809);
-            imageStore(Centroid, ivec3(gl_GlobalInvocationID), _1810);
-            imageStore(Geometry, ivec3(gl_GlobalInvocationID), _1811);
+            imageStore(Energy, ivec3(gl_GlobalInvocationID), _1834);
+            imageStore(Centroid, ivec3(gl_GlobalInvocationID), _1835);
+            imageStore(Geometry, ivec3(gl_GlobalInvocationID), _1836);
             break;
         }
-        ivec2 _898 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
-        int _902 = int(_433.Level) - 1;
-        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(EnergyIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(EnergyIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(EnergyIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
-        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(CentroidIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(CentroidIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(CentroidIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
-        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_898, int(param.z), _902).xyz, _902) + texelFetch(GeometryIn, ivec4(_898 + ivec2(1, 0), int(param.z), _902).xyz, _902)) + texelFetch(GeometryIn, ivec4(_898 + ivec2(0, 1), int(param.z), _902).xyz, _902)) + texelFetch(GeometryIn, ivec4(_898 + ivec2(1), int(param.z), _902).xyz, _902));
+        ivec2 _909 = ivec2(gl_GlobalInvocationID.xy) * ivec2(2);
+        int _913 = int(_444.Level) - 1;
+        imageStore(Energy, ivec3(gl_GlobalInvocationID), ((texelFetch(EnergyIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(EnergyIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(EnergyIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(EnergyIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
+        imageStore(Centroid, ivec3(gl_GlobalInvocationID), ((texelFetch(CentroidIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(CentroidIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(CentroidIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(CentroidIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
+        imageStore(Geometry, ivec3(gl_GlobalInvocationID), ((texelFetch(GeometryIn, ivec4(_909, int(param.z), _913).xyz, _913) + texelFetch(GeometryIn, ivec4(_909 + ivec2(1, 0), int(param.z), _913).xyz, _913)) + texelFetch(GeometryIn, ivec4(_909 + ivec2(0, 1), int(param.z), _913).xyz, _913)) + texelFetch(GeometryIn, ivec4(_909 + ivec2(1), int(param.z), _913).xyz, _913));
         break;
     } while(false);
 }

@@ -65,198 +65,198 @@ struct ClusterParameter
     uint Level;
 };
 
-kernel void main0(constant ClusterParameter& _433 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant ClusterParameter& _444 [[buffer(0)]], texture2d_array<float> Source [[texture(0)]], texture2d_array<float> EnergyIn [[texture(1)]], texture2d_array<float> CentroidIn [[texture(2)]], texture2d_array<float> GeometryIn [[texture(3)]], texture2d_array<float, access::write> Energy [[texture(4)]], texture2d_array<float, access::write> Centroid [[texture(5)]], texture2d_array<float, access::write> Geometry [[texture(6)]], texture2d<float, access::write> TexelSolidAngle [[texture(7)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _810 = uint3(0u);
-        uint3 _811 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
-        _810.x = _811.x;
-        _810.y = _811.y;
-        _810.z = _811.z;
-        if (any(gl_GlobalInvocationID >= _810))
+        uint3 _821 = uint3(0u);
+        uint3 _822 = uint3(Energy.get_width(), Energy.get_height(), Energy.get_array_size());
+        _821.x = _822.x;
+        _821.y = _822.y;
+        _821.z = _822.z;
+        if (any(gl_GlobalInvocationID >= _821))
         {
             break;
         }
-        if (_433.Level == 0u)
+        if (_444.Level == 0u)
         {
-            uint3 _815 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
-            float4 _1809;
-            float4 _1810;
-            float4 _1811;
-            if (_810.x == _815.x)
+            uint3 _826 = uint3(Source.get_width(), Source.get_height(), Source.get_array_size());
+            float4 _1834;
+            float4 _1835;
+            float4 _1836;
+            if (_821.x == _826.x)
             {
-                uint3 _819 = gl_GlobalInvocationID;
-                int3 _1198 = int4(int3(gl_GlobalInvocationID), 0).xyz;
-                uint2 _1180 = gl_GlobalInvocationID.xy;
-                float _1237 = float(_815.x);
-                float _1238 = 1.0 / _1237;
-                float _1245 = fma(2.0 * float(_1180.x), _1238, -1.0);
-                float _1252 = fma(2.0 * float(_1180.y), _1238, -1.0);
-                float _1256 = _1245 + (2.0 / _1237);
-                float _1260 = _1252 + (2.0 / _1237);
-                float _1275 = ((precise::atan2(_1245 * _1252, sqrt(fma(_1245, _1245, _1252 * _1252) + 1.0)) - precise::atan2(_1245 * _1260, sqrt(fma(_1245, _1245, _1260 * _1260) + 1.0))) - precise::atan2(_1256 * _1252, sqrt(fma(_1256, _1256, _1252 * _1252) + 1.0))) + precise::atan2(_1256 * _1260, sqrt(fma(_1256, _1256, _1260 * _1260) + 1.0));
-                float3 _1211 = Source.read(uint2(_1198.xy), uint(_1198.z), 0).xyz;
-                float2 _1338 = ((spvFAdd(float2(gl_GlobalInvocationID.xy), float2(0.5)) / float2(float(_815.x))) - float2(0.5)) * float2(2.0, -2.0);
-                float3 _1804;
-                if (_819.z == 0u)
+                uint3 _830 = gl_GlobalInvocationID;
+                int3 _1209 = int4(int3(gl_GlobalInvocationID), 0).xyz;
+                uint2 _1191 = gl_GlobalInvocationID.xy;
+                float _1248 = float(_826.x);
+                float _1249 = 1.0 / _1248;
+                float _1256 = fma(2.0 * float(_1191.x), _1249, -1.0);
+                float _1263 = fma(2.0 * float(_1191.y), _1249, -1.0);
+                float _1267 = _1256 + (2.0 / _1248);
+                float _1271 = _1263 + (2.0 / _1248);
+                float _1286 = ((precise::atan2(_1256 * _1263, sqrt(fma(_1256, _1256, _1263 * _1263) + 1.0)) - precise::atan2(_1256 * _1271, sqrt(fma(_1256, _1256, _1271 * _1271) + 1.0))) - precise::atan2(_1267 * _1263, sqrt(fma(_1267, _1267, _1263 * _1263) + 1.0))) + precise::atan2(_1267 * _1271, sqrt(fma(_1267, _1267, _1271 * _1271) + 1.0));
+                float3 _1222 = Source.read(uint2(_1209.xy), uint(_1209.z), 0).xyz;
+                float2 _1398 = ((spvFAdd(float2(gl_GlobalInvocationID.xy), float2(0.5)) / float2(float(_826.x))) - float2(0.5)) * float2(2.0, -2.0);
+                float3 _1829;
+                if (_830.z == 0u)
                 {
-                    _1804 = float3(1.0, _1338.y, -_1338.x);
+                    _1829 = float3(1.0, _1398.y, -_1398.x);
                 }
                 else
                 {
-                    float3 _1805;
-                    if (_819.z == 1u)
+                    float3 _1830;
+                    if (_830.z == 1u)
                     {
-                        _1805 = float3(-1.0, _1338.y, _1338.x);
+                        _1830 = float3(-1.0, _1398.y, _1398.x);
                     }
                     else
                     {
-                        float3 _1806;
-                        if (_819.z == 2u)
+                        float3 _1831;
+                        if (_830.z == 2u)
                         {
-                            _1806 = float3(_1338.x, 1.0, -_1338.y);
+                            _1831 = float3(_1398.x, 1.0, -_1398.y);
                         }
                         else
                         {
-                            float3 _1807;
-                            if (_819.z == 3u)
+                            float3 _1832;
+                            if (_830.z == 3u)
                             {
-                                _1807 = float3(_1338.x, -1.0, _1338.y);
+                                _1832 = float3(_1398.x, -1.0, _1398.y);
                             }
                             else
                             {
-                                float3 _1808;
-                                if (_819.z == 4u)
+                                float3 _1833;
+                                if (_830.z == 4u)
                                 {
-                                    _1808 = float3(_1338.x, _1338.y, 1.0);
+                                    _1833 = float3(_1398.x, _1398.y, 1.0);
                                 }
                                 else
                                 {
-                                    _1808 = float3(-_1338.x, _1338.y, -1.0);
+                                    _1833 = float3(-_1398.x, _1398.y, -1.0);
                                 }
-                                _1807 = _1808;
+                                _1832 = _1833;
                             }
-                            _1806 = _1807;
+                            _1831 = _1832;
                         }
-                        _1805 = _1806;
+                        _1830 = _1831;
                     }
-                    _1804 = _1805;
+                    _1829 = _1830;
                 }
-                float3 _1452 = fast::normalize(_1804);
-                float _1358 = spvFMul(fast::max(dot(_1211, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1275);
-                _1811 = float4(_1452 * _1275, _1275);
-                _1810 = float4(_1452 * _1358, _1358);
-                _1809 = float4(_1211 * _1275, _1275);
+                float3 _1404 = fast::normalize(_1829);
+                float _1369 = spvFMul(fast::max(dot(_1222, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1286);
+                _1836 = float4(_1404 * _1286, _1286);
+                _1835 = float4(_1404 * _1369, _1369);
+                _1834 = float4(_1222 * _1286, _1286);
             }
             else
             {
-                uint3 _824 = gl_GlobalInvocationID;
-                float4 _1772;
-                float4 _1773;
-                float4 _1774;
-                _1774 = float4(0.0);
-                _1773 = float4(0.0);
-                _1772 = float4(0.0);
-                float4 _1528;
-                float4 _1531;
-                float4 _1534;
-                for (uint _1771 = 0u; _1771 < 4u; _1774 = _1534, _1773 = _1531, _1772 = _1528, _1771++)
+                uint3 _835 = gl_GlobalInvocationID;
+                float4 _1797;
+                float4 _1798;
+                float4 _1799;
+                _1799 = float4(0.0);
+                _1798 = float4(0.0);
+                _1797 = float4(0.0);
+                float4 _1546;
+                float4 _1549;
+                float4 _1552;
+                for (uint _1796 = 0u; _1796 < 4u; _1799 = _1552, _1798 = _1549, _1797 = _1546, _1796++)
                 {
-                    uint2 _1484 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1771 & 1u, _1771 >> uint(1));
-                    uint2 _1456 = _1484;
-                    float _1555 = float(_815.x);
-                    float _1556 = 1.0 / _1555;
-                    float _1563 = fma(2.0 * float(_1456.x), _1556, -1.0);
-                    float _1570 = fma(2.0 * float(_1456.y), _1556, -1.0);
-                    float _1574 = _1563 + (2.0 / _1555);
-                    float _1578 = _1570 + (2.0 / _1555);
-                    float _1593 = ((precise::atan2(_1563 * _1570, sqrt(fma(_1563, _1563, _1570 * _1570) + 1.0)) - precise::atan2(_1563 * _1578, sqrt(fma(_1563, _1563, _1578 * _1578) + 1.0))) - precise::atan2(_1574 * _1570, sqrt(fma(_1574, _1574, _1570 * _1570) + 1.0))) + precise::atan2(_1574 * _1578, sqrt(fma(_1574, _1574, _1578 * _1578) + 1.0));
-                    if (_824.z == 0u)
+                    uint2 _1502 = (gl_GlobalInvocationID.xy * uint2(2u)) + uint2(_1796 & 1u, _1796 >> uint(1));
+                    uint2 _1474 = _1502;
+                    float _1573 = float(_826.x);
+                    float _1574 = 1.0 / _1573;
+                    float _1581 = fma(2.0 * float(_1474.x), _1574, -1.0);
+                    float _1588 = fma(2.0 * float(_1474.y), _1574, -1.0);
+                    float _1592 = _1581 + (2.0 / _1573);
+                    float _1596 = _1588 + (2.0 / _1573);
+                    float _1611 = ((precise::atan2(_1581 * _1588, sqrt(fma(_1581, _1581, _1588 * _1588) + 1.0)) - precise::atan2(_1581 * _1596, sqrt(fma(_1581, _1581, _1596 * _1596) + 1.0))) - precise::atan2(_1592 * _1588, sqrt(fma(_1592, _1592, _1588 * _1588) + 1.0))) + precise::atan2(_1592 * _1596, sqrt(fma(_1592, _1592, _1596 * _1596) + 1.0));
+                    if (_835.z == 0u)
                     {
-                        TexelSolidAngle.write(float4(_1593), uint2(_1484));
+                        TexelSolidAngle.write(float4(_1611), uint2(_1502));
                     }
-                    int3 _1505 = int4(int2(_1484), int(_824.z), 0).xyz;
-                    float3 _1516 = Source.read(uint2(_1505.xy), uint(_1505.z), 0).xyz;
-                    float2 _1656 = ((spvFAdd(float2(_1484), float2(0.5)) / float2(float(_815.x))) - float2(0.5)) * float2(2.0, -2.0);
-                    float3 _1775;
-                    if (_824.z == 0u)
+                    int3 _1523 = int4(int2(_1502), int(_835.z), 0).xyz;
+                    float3 _1534 = Source.read(uint2(_1523.xy), uint(_1523.z), 0).xyz;
+                    float2 _1723 = ((spvFAdd(float2(_1502), float2(0.5)) / float2(float(_826.x))) - float2(0.5)) * float2(2.0, -2.0);
+                    float3 _1800;
+                    if (_835.z == 0u)
                     {
-                        _1775 = float3(1.0, _1656.y, -_1656.x);
+                        _1800 = float3(1.0, _1723.y, -_1723.x);
                     }
                     else
                     {
-                        float3 _1776;
-                        if (_824.z == 1u)
+                        float3 _1801;
+                        if (_835.z == 1u)
                         {
-                            _1776 = float3(-1.0, _1656.y, _1656.x);
+                            _1801 = float3(-1.0, _1723.y, _1723.x);
                         }
                         else
                         {
-                            float3 _1777;
-                            if (_824.z == 2u)
+                            float3 _1802;
+                            if (_835.z == 2u)
                             {
-                                _1777 = float3(_1656.x, 1.0, -_1656.y);
+                                _1802 = float3(_1723.x, 1.0, -_1723.y);
                             }
                             else
                             {
-                                float3 _1778;
-                                if (_824.z == 3u)
+                                float3 _1803;
+                                if (_835.z == 3u)
                                 {
-                                    _1778 = float3(_1656.x, -1.0, _1656.y);
+                                    _1803 = float3(_1723.x, -1.0, _1723.y);
                                 }
                                 else
                                 {
-                                    float3 _1779;
-                                    if (_824.z == 4u)
+                                    float3 _1804;
+                                    if (_835.z == 4u)
                                     {
-                                        _1779 = float3(_1656.x, _1656.y, 1.0);
+                                        _1804 = float3(_1723.x, _1723.y, 1.0);
                                     }
                                     else
                                     {
-                                        _1779 = float3(-_1656.x, _1656.y, -1.0);
+                                        _1804 = float3(-_1723.x, _1723.y, -1.0);
                                     }
-                                    _1778 = _1779;
+                                    _1803 = _1804;
                                 }
-                                _1777 = _1778;
+                                _1802 = _1803;
                             }
-                            _1776 = _1777;
+                            _1801 = _1802;
                         }
-                        _1775 = _1776;
+                        _1800 = _1801;
                     }
-                    float3 _1770 = fast::normalize(_1775);
-                    float _1676 = spvFMul(fast::max(dot(_1516, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1593);
-                    _1528 = _1772 + float4(_1516 * _1593, _1593);
-                    _1531 = _1773 + float4(_1770 * _1676, _1676);
-                    _1534 = _1774 + float4(_1770 * _1593, _1593);
+                    float3 _1729 = fast::normalize(_1800);
+                    float _1694 = spvFMul(fast::max(dot(_1534, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875)), 0.0), _1611);
+                    _1546 = _1797 + float4(_1534 * _1611, _1611);
+                    _1549 = _1798 + float4(_1729 * _1694, _1694);
+                    _1552 = _1799 + float4(_1729 * _1611, _1611);
                 }
-                _1811 = _1774;
-                _1810 = _1773;
-                _1809 = _1772;
+                _1836 = _1799;
+                _1835 = _1798;
+                _1834 = _1797;
             }
-            Energy.write(_1809, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Centroid.write(_1810, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-            Geometry.write(_1811, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Energy.write(_1834, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Centroid.write(_1835, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+            Geometry.write(_1836, uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
             break;
         }
-        int2 _898 = int2(gl_GlobalInvocationID.xy) * int2(2);
-        int _902 = int(_433.Level) - 1;
-        int3 _912 = int4(_898, int(param.z), _902).xyz;
-        int3 _933 = int4(_898 + int2(1, 0), int(param.z), _902).xyz;
-        int3 _956 = int4(_898 + int2(0, 1), int(param.z), _902).xyz;
-        int3 _979 = int4(_898 + int2(1), int(param.z), _902).xyz;
-        int3 _1001 = int4(_898, int(param.z), _902).xyz;
-        int3 _1022 = int4(_898 + int2(1, 0), int(param.z), _902).xyz;
-        int3 _1045 = int4(_898 + int2(0, 1), int(param.z), _902).xyz;
-        int3 _1068 = int4(_898 + int2(1), int(param.z), _902).xyz;
-        int3 _1090 = int4(_898, int(param.z), _902).xyz;
-        int3 _1111 = int4(_898 + int2(1, 0), int(param.z), _902).xyz;
-        int3 _1134 = int4(_898 + int2(0, 1), int(param.z), _902).xyz;
-        int3 _1157 = int4(_898 + int2(1), int(param.z), _902).xyz;
-        Energy.write(((EnergyIn.read(uint2(_912.xy), uint(_912.z), _902) + EnergyIn.read(uint2(_933.xy), uint(_933.z), _902)) + EnergyIn.read(uint2(_956.xy), uint(_956.z), _902)) + EnergyIn.read(uint2(_979.xy), uint(_979.z), _902), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Centroid.write(((CentroidIn.read(uint2(_1001.xy), uint(_1001.z), _902) + CentroidIn.read(uint2(_1022.xy), uint(_1022.z), _902)) + CentroidIn.read(uint2(_1045.xy), uint(_1045.z), _902)) + CentroidIn.read(uint2(_1068.xy), uint(_1068.z), _902), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
-        Geometry.write(((GeometryIn.read(uint2(_1090.xy), uint(_1090.z), _902) + GeometryIn.read(uint2(_1111.xy), uint(_1111.z), _902)) + GeometryIn.read(uint2(_1134.xy), uint(_1134.z), _902)) + GeometryIn.read(uint2(_1157.xy), uint(_1157.z), _902), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        int2 _909 = int2(gl_GlobalInvocationID.xy) * int2(2);
+        int _913 = int(_444.Level) - 1;
+        int3 _923 = int4(_909, int(param.z), _913).xyz;
+        int3 _944 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _967 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _990 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        int3 _1012 = int4(_909, int(param.z), _913).xyz;
+        int3 _1033 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _1056 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _1079 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        int3 _1101 = int4(_909, int(param.z), _913).xyz;
+        int3 _1122 = int4(_909 + int2(1, 0), int(param.z), _913).xyz;
+        int3 _1145 = int4(_909 + int2(0, 1), int(param.z), _913).xyz;
+        int3 _1168 = int4(_909 + int2(1), int(param.z), _913).xyz;
+        Energy.write(((EnergyIn.read(uint2(_923.xy), uint(_923.z), _913) + EnergyIn.read(uint2(_944.xy), uint(_944.z), _913)) + EnergyIn.read(uint2(_967.xy), uint(_967.z), _913)) + EnergyIn.read(uint2(_990.xy), uint(_990.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Centroid.write(((CentroidIn.read(uint2(_1012.xy), uint(_1012.z), _913) + CentroidIn.read(uint2(_1033.xy), uint(_1033.z), _913)) + CentroidIn.read(uint2(_1056.xy), uint(_1056.z), _913)) + CentroidIn.read(uint2(_1079.xy), uint(_1079.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Geometry.write(((GeometryIn.read(uint2(_1101.xy), uint(_1101.z), _913) + GeometryIn.read(uint2(_1122.xy), uint(_1122.z), _913)) + GeometryIn.read(uint2(_1145.xy), uint(_1145.z), _913)) + GeometryIn.read(uint2(_1168.xy), uint(_1168.z), _913), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

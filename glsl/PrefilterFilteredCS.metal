@@ -8,110 +8,110 @@ struct PrefilterSpecularParameter
     float Roughness;
 };
 
-kernel void main0(constant PrefilterSpecularParameter& _316 [[buffer(0)]], texturecube<float> EnvMap [[texture(0)]], texture2d_array<float, access::write> Prefiltered [[texture(1)]], sampler EnvMapSampler [[sampler(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant PrefilterSpecularParameter& _327 [[buffer(0)]], texturecube<float> EnvMap [[texture(0)]], texture2d_array<float, access::write> Prefiltered [[texture(1)]], sampler EnvMapSampler [[sampler(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _536 = uint3(0u);
-        uint3 _537 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
-        _536.x = _537.x;
-        _536.y = _537.y;
-        _536.z = _537.z;
-        if (any(gl_GlobalInvocationID >= _536))
+        uint3 _547 = uint3(0u);
+        uint3 _548 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
+        _547.x = _548.x;
+        _547.y = _548.y;
+        _547.z = _548.z;
+        if (any(gl_GlobalInvocationID >= _547))
         {
             break;
         }
-        uint2 _538 = uint2(EnvMap.get_width(), EnvMap.get_height());
-        float _578 = 4.0 / (float(_538.x) * float(_538.x));
-        float2 _544 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_536.xy)) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _946;
+        uint2 _549 = uint2(EnvMap.get_width(), EnvMap.get_height());
+        float _589 = 4.0 / (float(_549.x) * float(_549.x));
+        float2 _614 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_547.xy)) - float2(0.5)) * float2(2.0, -2.0);
+        float3 _964;
         if (param.z == 0u)
         {
-            _946 = float3(1.0, _544.y, -_544.x);
+            _964 = float3(1.0, _614.y, -_614.x);
         }
         else
         {
-            float3 _947;
+            float3 _965;
             if (param.z == 1u)
             {
-                _947 = float3(-1.0, _544.y, _544.x);
+                _965 = float3(-1.0, _614.y, _614.x);
             }
             else
             {
-                float3 _948;
+                float3 _966;
                 if (param.z == 2u)
                 {
-                    _948 = float3(_544.x, 1.0, -_544.y);
+                    _966 = float3(_614.x, 1.0, -_614.y);
                 }
                 else
                 {
-                    float3 _949;
+                    float3 _967;
                     if (param.z == 3u)
                     {
-                        _949 = float3(_544.x, -1.0, _544.y);
+                        _967 = float3(_614.x, -1.0, _614.y);
                     }
                     else
                     {
-                        float3 _950;
+                        float3 _968;
                         if (param.z == 4u)
                         {
-                            _950 = float3(_544.x, _544.y, 1.0);
+                            _968 = float3(_614.x, _614.y, 1.0);
                         }
                         else
                         {
-                            _950 = float3(-_544.x, _544.y, -1.0);
+                            _968 = float3(-_614.x, _614.y, -1.0);
                         }
-                        _949 = _950;
+                        _967 = _968;
                     }
-                    _948 = _949;
+                    _966 = _967;
                 }
-                _947 = _948;
+                _965 = _966;
             }
-            _946 = _947;
+            _964 = _965;
         }
-        float3 _668 = fast::normalize(_946);
-        float3 _952;
-        float _953;
-        _953 = 0.0;
-        _952 = float3(0.0);
-        float3 _955;
-        float _956;
-        for (uint _951 = 0u; _951 < 1024u; _953 = _956, _952 = _955, _951++)
+        float3 _620 = fast::normalize(_964);
+        float3 _970;
+        float _971;
+        _971 = 0.0;
+        _970 = float3(0.0);
+        float3 _973;
+        float _974;
+        for (uint _969 = 0u; _969 < 1024u; _971 = _974, _970 = _973, _969++)
         {
-            uint _780 = (_951 << uint(16)) | (_951 >> uint(16));
-            uint _787 = ((_780 & 1431655765u) << uint(1)) | ((_780 & 2863311530u) >> uint(1));
-            uint _794 = ((_787 & 858993459u) << uint(2)) | ((_787 & 3435973836u) >> uint(2));
-            uint _801 = ((_794 & 252645135u) << uint(4)) | ((_794 & 4042322160u) >> uint(4));
-            float2 _677 = float2(float(_951) * 0.0009765625, float(((_801 & 16711935u) << uint(8)) | ((_801 & 4278255360u) >> uint(8))) * 2.3283064365386962890625e-10);
-            float3 _678 = _668;
-            float _824 = _316.Roughness * _316.Roughness;
-            float _827 = 6.283185482025146484375 * _677.x;
-            float _840 = sqrt((1.0 - _677.y) / fma(fma(_824, _824, -1.0), _677.y, 1.0));
-            float _845 = sqrt(fma(-_840, _840, 1.0));
-            float3 _865 = fast::normalize(cross(select(float3(0.0, 0.0, 1.0), float3(0.0, 1.0, 0.0), bool3(abs(_678.y) < 0.999000012874603271484375)), _668));
-            float3 _889 = fast::normalize(float3x3(_865, fast::normalize(cross(_668, _865)), _668) * float3(cos(_827) * _845, sin(_827) * _845, _840));
-            float3 _710 = fast::normalize((_889 * (2.0 * dot(_668, _889))) - _668);
-            float _714 = fast::clamp(dot(_668, _710), 0.0, 1.0);
-            if (_714 > 0.0)
+            uint _798 = (_969 << uint(16)) | (_969 >> uint(16));
+            uint _805 = ((_798 & 1431655765u) << uint(1)) | ((_798 & 2863311530u) >> uint(1));
+            uint _812 = ((_805 & 858993459u) << uint(2)) | ((_805 & 3435973836u) >> uint(2));
+            uint _819 = ((_812 & 252645135u) << uint(4)) | ((_812 & 4042322160u) >> uint(4));
+            float2 _695 = float2(float(_969) * 0.0009765625, float(((_819 & 16711935u) << uint(8)) | ((_819 & 4278255360u) >> uint(8))) * 2.3283064365386962890625e-10);
+            float3 _696 = _620;
+            float _842 = _327.Roughness * _327.Roughness;
+            float _845 = 6.283185482025146484375 * _695.x;
+            float _858 = sqrt((1.0 - _695.y) / fma(fma(_842, _842, -1.0), _695.y, 1.0));
+            float _863 = sqrt(fma(-_858, _858, 1.0));
+            float3 _883 = fast::normalize(cross(select(float3(0.0, 0.0, 1.0), float3(0.0, 1.0, 0.0), bool3(abs(_696.y) < 0.999000012874603271484375)), _620));
+            float3 _907 = fast::normalize(float3x3(_883, fast::normalize(cross(_620, _883)), _620) * float3(cos(_845) * _863, sin(_845) * _863, _858));
+            float3 _728 = fast::normalize((_907 * (2.0 * dot(_620, _907))) - _620);
+            float _732 = fast::clamp(dot(_620, _728), 0.0, 1.0);
+            if (_732 > 0.0)
             {
-                float3 _682 = abs(_710);
-                float _727 = fast::max(_682.x, fast::max(_682.y, _682.z));
-                float _731 = fast::clamp(dot(_668, _889), 0.0, 1.0);
-                float _926 = _316.Roughness * _316.Roughness;
-                float _938 = fma(_731 * _731, fma(_926, _926, -1.0), 1.0);
-                float _945 = (_926 * _926) / ((3.1415927410125732421875 * _938) * _938);
-                float _908 = 0.5 * log2(4.0 / ((1024.0 * _945) * (((_578 * _727) * _727) * _727)));
-                _956 = _953 + _714;
-                _955 = _952 + (EnvMap.sample(EnvMapSampler, _710, level(((_945 > 0.0) && (_908 > 0.0)) ? _908 : 0.0)).xyz * _714);
+                float3 _700 = abs(_728);
+                float _745 = fast::max(_700.x, fast::max(_700.y, _700.z));
+                float _749 = fast::clamp(dot(_620, _907), 0.0, 1.0);
+                float _944 = _327.Roughness * _327.Roughness;
+                float _956 = fma(_749 * _749, fma(_944, _944, -1.0), 1.0);
+                float _963 = (_944 * _944) / ((3.1415927410125732421875 * _956) * _956);
+                float _926 = 0.5 * log2(4.0 / ((1024.0 * _963) * (((_589 * _745) * _745) * _745)));
+                _974 = _971 + _732;
+                _973 = _970 + (EnvMap.sample(EnvMapSampler, _728, level(((_963 > 0.0) && (_926 > 0.0)) ? _926 : 0.0)).xyz * _732);
             }
             else
             {
-                _956 = _953;
-                _955 = _952;
+                _974 = _971;
+                _973 = _970;
             }
         }
-        Prefiltered.write(float4(_952 / float3(_953), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Prefiltered.write(float4(_970 / float3(_971), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

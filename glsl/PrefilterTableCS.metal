@@ -13,86 +13,86 @@ struct SampleTable
     float4 _data[1];
 };
 
-kernel void main0(constant PrefilterTableParameter& _141 [[buffer(0)]], const device SampleTable& SampleTable_1 [[buffer(1)]], texturecube<float> EnvMap [[texture(0)]], texture2d_array<float, access::write> Prefiltered [[texture(1)]], sampler EnvMapSampler [[sampler(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
+kernel void main0(constant PrefilterTableParameter& _152 [[buffer(0)]], const device SampleTable& SampleTable_1 [[buffer(1)]], texturecube<float> EnvMap [[texture(0)]], texture2d_array<float, access::write> Prefiltered [[texture(1)]], sampler EnvMapSampler [[sampler(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]])
 {
     uint3 param = gl_GlobalInvocationID;
     do
     {
-        uint3 _296 = uint3(0u);
-        uint3 _297 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
-        _296.x = _297.x;
-        _296.y = _297.y;
-        _296.z = _297.z;
-        if (any(gl_GlobalInvocationID >= _296))
+        uint3 _307 = uint3(0u);
+        uint3 _308 = uint3(Prefiltered.get_width(), Prefiltered.get_height(), Prefiltered.get_array_size());
+        _307.x = _308.x;
+        _307.y = _308.y;
+        _307.z = _308.z;
+        if (any(gl_GlobalInvocationID >= _307))
         {
             break;
         }
-        float2 _300 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_296.xy)) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _506;
+        float2 _356 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(_307.xy)) - float2(0.5)) * float2(2.0, -2.0);
+        float3 _524;
         if (param.z == 0u)
         {
-            _506 = float3(1.0, _300.y, -_300.x);
+            _524 = float3(1.0, _356.y, -_356.x);
         }
         else
         {
-            float3 _507;
+            float3 _525;
             if (param.z == 1u)
             {
-                _507 = float3(-1.0, _300.y, _300.x);
+                _525 = float3(-1.0, _356.y, _356.x);
             }
             else
             {
-                float3 _508;
+                float3 _526;
                 if (param.z == 2u)
                 {
-                    _508 = float3(_300.x, 1.0, -_300.y);
+                    _526 = float3(_356.x, 1.0, -_356.y);
                 }
                 else
                 {
-                    float3 _509;
+                    float3 _527;
                     if (param.z == 3u)
                     {
-                        _509 = float3(_300.x, -1.0, _300.y);
+                        _527 = float3(_356.x, -1.0, _356.y);
                     }
                     else
                     {
-                        float3 _510;
+                        float3 _528;
                         if (param.z == 4u)
                         {
-                            _510 = float3(_300.x, _300.y, 1.0);
+                            _528 = float3(_356.x, _356.y, 1.0);
                         }
                         else
                         {
-                            _510 = float3(-_300.x, _300.y, -1.0);
+                            _528 = float3(-_356.x, _356.y, -1.0);
                         }
-                        _509 = _510;
+                        _527 = _528;
                     }
-                    _508 = _509;
+                    _526 = _527;
                 }
-                _507 = _508;
+                _525 = _526;
             }
-            _506 = _507;
+            _524 = _525;
         }
-        float3 _410 = fast::normalize(_506);
-        float3 _302 = _410;
-        float3 _432 = fast::normalize(cross(select(float3(0.0, 0.0, 1.0), float3(0.0, 1.0, 0.0), bool3(abs(_302.y) < 0.999000012874603271484375)), _410));
-        float3 _436 = fast::normalize(cross(_410, _432));
-        float3 _512;
-        float _513;
-        _513 = 0.0;
-        _512 = float3(0.0);
-        float3 _493;
-        float _497;
-        for (uint _511 = 0u; _511 < _141.SampleCount; _513 = _497, _512 = _493, _511++)
+        float3 _362 = fast::normalize(_524);
+        float3 _313 = _362;
+        float3 _450 = fast::normalize(cross(select(float3(0.0, 0.0, 1.0), float3(0.0, 1.0, 0.0), bool3(abs(_313.y) < 0.999000012874603271484375)), _362));
+        float3 _454 = fast::normalize(cross(_362, _450));
+        float3 _530;
+        float _531;
+        _531 = 0.0;
+        _530 = float3(0.0);
+        float3 _511;
+        float _515;
+        for (uint _529 = 0u; _529 < _152.SampleCount; _531 = _515, _530 = _511, _529++)
         {
-            float4 _416 = SampleTable_1._data[_511];
-            float3 _460 = ((_432 * _416.x) + (_436 * _416.y)) + (_410 * _416.z);
-            float3 _418 = abs(_460);
-            float _470 = fast::max(_418.x, fast::max(_418.y, _418.z));
-            _493 = _512 + (EnvMap.sample(EnvMapSampler, _460, level(fast::max(fma(-0.5, log2((_470 * _470) * _470), _416.w), 0.0))).xyz * _416.z);
-            _497 = _513 + _416.z;
+            float4 _434 = SampleTable_1._data[_529];
+            float3 _478 = ((_450 * _434.x) + (_454 * _434.y)) + (_362 * _434.z);
+            float3 _436 = abs(_478);
+            float _488 = fast::max(_436.x, fast::max(_436.y, _436.z));
+            _511 = _530 + (EnvMap.sample(EnvMapSampler, _478, level(fast::max(fma(-0.5, log2((_488 * _488) * _488), _434.w), 0.0))).xyz * _434.z);
+            _515 = _531 + _434.z;
         }
-        Prefiltered.write(float4(_512 / float3(_513), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
+        Prefiltered.write(float4(_530 / float3(_531), 0.0), uint2(gl_GlobalInvocationID.xy), uint(gl_GlobalInvocationID.z));
         break;
     } while(false);
 }

@@ -54,111 +54,111 @@ struct Partials
     float4 _data[1];
 };
 
-constant int _1065 = {};
+constant int _1083 = {};
 
-kernel void main0(constant ShProjectParameter& _279 [[buffer(0)]], device Partials& Partials_1 [[buffer(1)]], texture2d_array<float> Source [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]], uint3 gl_WorkGroupID [[threadgroup_position_in_grid]], uint gl_LocalInvocationIndex [[thread_index_in_threadgroup]])
+kernel void main0(constant ShProjectParameter& _290 [[buffer(0)]], device Partials& Partials_1 [[buffer(1)]], texture2d_array<float> Source [[texture(0)]], uint3 gl_GlobalInvocationID [[thread_position_in_grid]], uint3 gl_WorkGroupID [[threadgroup_position_in_grid]], uint gl_LocalInvocationIndex [[thread_index_in_threadgroup]])
 {
     threadgroup float4 Shared[64][9];
     uint3 param = gl_GlobalInvocationID;
     uint3 param_1 = gl_WorkGroupID;
-    uint3 _515 = uint3(Source.get_width(_279.SourceMip), Source.get_height(_279.SourceMip), Source.get_array_size());
-    uint _541 = _515.x;
-    uint _543 = _515.y;
-    float3 _517 = float3(0.0, 0.0, 1.0);
-    spvUnsafeArray<float, 9> _1021 = spvUnsafeArray<float, 9>({ 0.2820948064327239990234375, 0.48860251903533935546875 * _517.y, 0.48860251903533935546875 * _517.z, 0.48860251903533935546875 * _517.x, (1.09254848957061767578125 * _517.x) * _517.y, (1.09254848957061767578125 * _517.y) * _517.z, 0.3153915703296661376953125 * fma(3.0 * _517.z, _517.z, -1.0), (1.09254848957061767578125 * _517.x) * _517.z, 0.546274244785308837890625 * fma(_517.x, _517.x, -(_517.y * _517.y)) });
-    spvUnsafeArray<float, 9> _516;
-    _516 = _1021;
-    float3 _1053;
-    float _1055;
-    if ((param.x < _541) && (param.y < _543))
+    uint3 _526 = uint3(Source.get_width(_290.SourceMip), Source.get_height(_290.SourceMip), Source.get_array_size());
+    uint _552 = _526.x;
+    uint _554 = _526.y;
+    float3 _528 = float3(0.0, 0.0, 1.0);
+    spvUnsafeArray<float, 9> _1039 = spvUnsafeArray<float, 9>({ 0.2820948064327239990234375, 0.48860251903533935546875 * _528.y, 0.48860251903533935546875 * _528.z, 0.48860251903533935546875 * _528.x, (1.09254848957061767578125 * _528.x) * _528.y, (1.09254848957061767578125 * _528.y) * _528.z, 0.3153915703296661376953125 * fma(3.0 * _528.z, _528.z, -1.0), (1.09254848957061767578125 * _528.x) * _528.z, 0.546274244785308837890625 * fma(_528.x, _528.x, -(_528.y * _528.y)) });
+    spvUnsafeArray<float, 9> _527;
+    _527 = _1039;
+    float3 _1071;
+    float _1073;
+    if ((param.x < _552) && (param.y < _554))
     {
-        float2 _523 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_541))) - float2(0.5)) * float2(2.0, -2.0);
-        float3 _1041;
+        float2 _776 = (((float2(gl_GlobalInvocationID.xy) + float2(0.5)) / float2(float(_552))) - float2(0.5)) * float2(2.0, -2.0);
+        float3 _1059;
         if (param.z == 0u)
         {
-            _1041 = float3(1.0, _523.y, -_523.x);
+            _1059 = float3(1.0, _776.y, -_776.x);
         }
         else
         {
-            float3 _1042;
+            float3 _1060;
             if (param.z == 1u)
             {
-                _1042 = float3(-1.0, _523.y, _523.x);
+                _1060 = float3(-1.0, _776.y, _776.x);
             }
             else
             {
-                float3 _1043;
+                float3 _1061;
                 if (param.z == 2u)
                 {
-                    _1043 = float3(_523.x, 1.0, -_523.y);
+                    _1061 = float3(_776.x, 1.0, -_776.y);
                 }
                 else
                 {
-                    float3 _1044;
+                    float3 _1062;
                     if (param.z == 3u)
                     {
-                        _1044 = float3(_523.x, -1.0, _523.y);
+                        _1062 = float3(_776.x, -1.0, _776.y);
                     }
                     else
                     {
-                        float3 _1045;
+                        float3 _1063;
                         if (param.z == 4u)
                         {
-                            _1045 = float3(_523.x, _523.y, 1.0);
+                            _1063 = float3(_776.x, _776.y, 1.0);
                         }
                         else
                         {
-                            _1045 = float3(-_523.x, _523.y, -1.0);
+                            _1063 = float3(-_776.x, _776.y, -1.0);
                         }
-                        _1044 = _1045;
+                        _1062 = _1063;
                     }
-                    _1043 = _1044;
+                    _1061 = _1062;
                 }
-                _1042 = _1043;
+                _1060 = _1061;
             }
-            _1041 = _1042;
+            _1059 = _1060;
         }
-        float3 _524 = fast::normalize(_1041);
-        spvUnsafeArray<float, 9> _1040 = spvUnsafeArray<float, 9>({ 0.2820948064327239990234375, 0.48860251903533935546875 * _524.y, 0.48860251903533935546875 * _524.z, 0.48860251903533935546875 * _524.x, (1.09254848957061767578125 * _524.x) * _524.y, (1.09254848957061767578125 * _524.y) * _524.z, 0.3153915703296661376953125 * fma(3.0 * _524.z, _524.z, -1.0), (1.09254848957061767578125 * _524.x) * _524.z, 0.546274244785308837890625 * fma(_524.x, _524.x, -(_524.y * _524.y)) });
-        _516 = _1040;
-        uint2 _526 = gl_GlobalInvocationID.xy;
-        float _904 = float(_541);
-        float _905 = 1.0 / _904;
-        float _912 = fma(2.0 * float(_526.x), _905, -1.0);
-        float _919 = fma(2.0 * float(_526.y), _905, -1.0);
-        float _923 = _912 + (2.0 / _904);
-        float _927 = _919 + (2.0 / _904);
-        int3 _592 = int4(int2(gl_GlobalInvocationID.xy), int(param.z), _1065).xyz;
-        _1055 = ((precise::atan2(_912 * _919, sqrt(fma(_912, _912, _919 * _919) + 1.0)) - precise::atan2(_912 * _927, sqrt(fma(_912, _912, _927 * _927) + 1.0))) - precise::atan2(_923 * _919, sqrt(fma(_923, _923, _919 * _919) + 1.0))) + precise::atan2(_923 * _927, sqrt(fma(_923, _923, _927 * _927) + 1.0));
-        _1053 = Source.read(uint2(_592.xy), uint(_592.z), int(_279.SourceMip)).xyz;
+        float3 _535 = fast::normalize(_1059);
+        spvUnsafeArray<float, 9> _1058 = spvUnsafeArray<float, 9>({ 0.2820948064327239990234375, 0.48860251903533935546875 * _535.y, 0.48860251903533935546875 * _535.z, 0.48860251903533935546875 * _535.x, (1.09254848957061767578125 * _535.x) * _535.y, (1.09254848957061767578125 * _535.y) * _535.z, 0.3153915703296661376953125 * fma(3.0 * _535.z, _535.z, -1.0), (1.09254848957061767578125 * _535.x) * _535.z, 0.546274244785308837890625 * fma(_535.x, _535.x, -(_535.y * _535.y)) });
+        _527 = _1058;
+        uint2 _537 = gl_GlobalInvocationID.xy;
+        float _922 = float(_552);
+        float _923 = 1.0 / _922;
+        float _930 = fma(2.0 * float(_537.x), _923, -1.0);
+        float _937 = fma(2.0 * float(_537.y), _923, -1.0);
+        float _941 = _930 + (2.0 / _922);
+        float _945 = _937 + (2.0 / _922);
+        int3 _603 = int4(int2(gl_GlobalInvocationID.xy), int(param.z), _1083).xyz;
+        _1073 = ((precise::atan2(_930 * _937, sqrt(fma(_930, _930, _937 * _937) + 1.0)) - precise::atan2(_930 * _945, sqrt(fma(_930, _930, _945 * _945) + 1.0))) - precise::atan2(_941 * _937, sqrt(fma(_941, _941, _937 * _937) + 1.0))) + precise::atan2(_941 * _945, sqrt(fma(_941, _941, _945 * _945) + 1.0));
+        _1071 = Source.read(uint2(_603.xy), uint(_603.z), int(_290.SourceMip)).xyz;
     }
     else
     {
-        _1055 = 0.0;
-        _1053 = float3(0.0);
+        _1073 = 0.0;
+        _1071 = float3(0.0);
     }
-    for (uint _1046 = 0u; _1046 < 9u; _1046++)
+    for (uint _1064 = 0u; _1064 < 9u; _1064++)
     {
-        Shared[gl_LocalInvocationIndex][_1046] = float4((_1053 * _516[_1046]) * _1055, _1055);
+        Shared[gl_LocalInvocationIndex][_1064] = float4((_1071 * _527[_1064]) * _1073, _1073);
     }
     threadgroup_barrier(mem_flags::mem_threadgroup);
-    for (uint _1047 = 32u; _1047 > 0u; _1047 /= 2u)
+    for (uint _1065 = 32u; _1065 > 0u; _1065 /= 2u)
     {
-        if (gl_LocalInvocationIndex < _1047)
+        if (gl_LocalInvocationIndex < _1065)
         {
-            for (uint _1049 = 0u; _1049 < 9u; _1049++)
+            for (uint _1067 = 0u; _1067 < 9u; _1067++)
             {
-                Shared[gl_LocalInvocationIndex][_1049] += Shared[gl_LocalInvocationIndex + _1047][_1049];
+                Shared[gl_LocalInvocationIndex][_1067] += Shared[gl_LocalInvocationIndex + _1065][_1067];
             }
         }
         threadgroup_barrier(mem_flags::mem_threadgroup);
     }
     if (gl_LocalInvocationIndex == 0u)
     {
-        uint _688 = (((param_1.z * ((_543 + 7u) / 8u)) + param_1.y) * ((_541 + 7u) / 8u)) + param_1.x;
-        for (uint _1048 = 0u; _1048 < 9u; _1048++)
+        uint _699 = (((param_1.z * ((_554 + 7u) / 8u)) + param_1.y) * ((_552 + 7u) / 8u)) + param_1.x;
+        for (uint _1066 = 0u; _1066 < 9u; _1066++)
         {
-            Partials_1._data[(_688 * 9u) + _1048] = Shared[0][_1048];
+            Partials_1._data[(_699 * 9u) + _1066] = Shared[0][_1066];
         }
     }
 }

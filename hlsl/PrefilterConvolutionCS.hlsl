@@ -113,16 +113,18 @@ float ExpectedLobeWeight( float ndotl, float variance, float roughness )
     float expected;
     if ( ndotl > 3.f * spread )
     {
+        // Each denominator inverted once: CPU drivers run every division of both weightings and
+        // both sides of the horizon for every term.
         float a2 = roughness * roughness * roughness * roughness;
         float A = 0.5f + 0.5f * a2, B = 0.5f * a2 - 0.5f;
-        float s = A + B * ndotl;
+        float inverseS = 1.f / ( A + B * ndotl );
         if ( Weighting == 0u )
-            expected = ndotl + 0.5f * variance * ( -B ) * ( 4.f * A - 2.f * B * ndotl ) / ( s * s );
+            expected = ndotl + 0.5f * variance * ( -B ) * ( 4.f * A - 2.f * B * ndotl ) * inverseS * inverseS;
         else
         {
-            float q = ( 1.f - k ) * ndotl + k;
-            float w = ndotl / q, w1 = k / ( q * q ), w2 = -2.f * ( 1.f - k ) * k / ( q * q * q );
-            expected = w + 0.5f * variance * ( w * 6.f * B * B / ( s * s ) - 4.f * B * w1 / s + w2 );
+            float inverseQ = 1.f / ( ( 1.f - k ) * ndotl + k );
+            float w = ndotl * inverseQ, w1 = k * inverseQ * inverseQ, w2 = -2.f * ( 1.f - k ) * w1 * inverseQ;
+            expected = w + 0.5f * variance * ( w * 6.f * B * B * inverseS * inverseS - 4.f * B * w1 * inverseS + w2 );
         }
     }
     else
@@ -200,17 +202,26 @@ float MeanLuminance( uint topLevel, uint baseSize )
 // resolved as finely as its share of the result needs (measured over the built-in sky and
 // Blender's HDRIs: the cube root holds the error of small bright lights to that of the rest
 // for about 15 % more terms; the square root costs twice that for no gain).
-bool Opens( float3 normal, uint face, uint2 xy, uint size, uint level, float meanLuminance, float4 weighted, float4 geometry )
+bool Opens( float3 normal, uint face, uint2 xy, uint size, float inverseSize, uint level, float meanLuminance,
+            float halfOverRefine, float4 weighted, float4 geometry )
 {
-    float3 centre = CubeFaceDirection( face, ( float2( xy ) + 0.5f ) / float( size ) );
-    float cosine = dot( normal, centre );
-    float reach = Refine * 2.f / float( size );
+    float3 centre = CubeFacePoint( face, ( float2( xy ) + 0.5f ) * inverseSize );
+    float cosine = dot( normal, centre ) * ( 1.f / sqrt( dot( centre, centre ) ) );
     float brightness = max( weighted.w / max( geometry.w * meanLuminance, 1e-30f ), 1.f );
-    // chord < reach x cbrt(brightness), cubed: CPU drivers make a pow of a log and an exp.
-    float widths = ( 2.f - 2.f * cosine ) / ( reach * reach );
+    // chord < reach x cbrt(brightness), reach = Refine x 2 / size, cubed: CPU drivers make a pow of
+    // a log and an exp.
+    float widthsOut = float( size ) * halfOverRefine;
+    float widths = ( 2.f - 2.f * cosine ) * widthsOut * widthsOut;
     bool nearN = widths * widths * widths < brightness * brightness;
-    bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN / float( size );
+    bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN * inverseSize;
     return nearN || acrossHorizon;
+}
+
+// 1 / 2^n exactly, from its exponent bits, where a division would be a vector division a term on
+// CPU drivers.
+float InversePowerOfTwo( uint n )
+{
+    return asfloat( ( 127u - n ) << 23 );
 }
 
 // llvmpipe counts every iteration of all of an invocation's loops against one budget of 65535
@@ -246,9 +257,11 @@ void main( uint3 DTid : SV_DispatchThreadId )
     float3 radiance = 0.f;
     float weight = 0.f;
     uint topSize = max( baseSize >> TopLevel, 1u );
-    float meanLuminance = MeanLuminance( firstbithigh( baseSize ), baseSize ); // the 1x1 level of the full chain
+    uint baseLog2 = firstbithigh( baseSize );
+    float meanLuminance = MeanLuminance( baseLog2, baseSize ); // the 1x1 level of the full chain
     uint termCost = 3u + 2u * ( TopLevel - FineLevel );
     uint openLimit = LOOP_BUDGET / termCost - min( 6u * topSize * topSize + 3u * TopLevel + 1u, LOOP_BUDGET / termCost );
+    float halfOverRefine = 0.5f / Refine;
     uint terms = 0;
     uint face = 0, level = TopLevel;
     uint2 xy = 0;
@@ -258,7 +271,8 @@ void main( uint3 DTid : SV_DispatchThreadId )
         float4 energy, weighted, geometry;
         LoadBlock( face, xy, level, baseSize, energy, weighted, geometry );
         if ( level > FineLevel && terms < openLimit
-             && Opens( normal, face, xy, max( baseSize >> level, 1u ), level, meanLuminance, weighted, geometry ) )
+             && Opens( normal, face, xy, max( baseSize >> level, 1u ), InversePowerOfTwo( baseLog2 - level ), level, meanLuminance,
+                       halfOverRefine, weighted, geometry ) )
         {
             xy *= 2;
             level -= 1;
@@ -266,8 +280,8 @@ void main( uint3 DTid : SV_DispatchThreadId )
         }
         // The first moments of the block's directions, by solid angle and by light: their
         // length falls short of 1 by their spread.
-        float3 extent = geometry.xyz / geometry.w;
-        float3 light = weighted.w > 0.f ? weighted.xyz / weighted.w : extent;
+        float3 extent = geometry.xyz * ( 1.f / geometry.w );
+        float3 light = weighted.w > 0.f ? weighted.xyz * ( 1.f / weighted.w ) : extent;
         radiance += energy.rgb * BlockLobeWeight( normal, light, Roughness );
         weight += energy.a * BlockLobeWeight( normal, extent, Roughness );
         terms += 1;

@@ -7,7 +7,8 @@ static const float CUBE_PI = 3.14159265358979323846f;
 // The direction through a point of a cube face: uv in [0, 1]² across the face (v downwards),
 // faces +X, -X, +Y, -Y, +Z, -Z. The same table as PrefilterSpecularCS (Direct3D's, which is
 // also Vulkan's face selection), so every cube the kit writes is read back the same way.
-float3 CubeFaceDirection( uint face, float2 uv )
+// CubeFacePoint is the point itself, on the face of the cube [-1, 1]³.
+float3 CubeFacePoint( uint face, float2 uv )
 {
     uv = ( uv - 0.5f ) * float2( 2.f, -2.f );
     float3 direction;
@@ -17,7 +18,12 @@ float3 CubeFaceDirection( uint face, float2 uv )
     else if ( face == 3 ) direction = float3( uv.x, -1.f, uv.y );
     else if ( face == 4 ) direction = float3( uv.x, uv.y, 1.f );
     else                  direction = float3( -uv.x, uv.y, -1.f );
-    return normalize( direction );
+    return direction;
+}
+
+float3 CubeFaceDirection( uint face, float2 uv )
+{
+    return normalize( CubeFacePoint( face, uv ) );
 }
 
 // Solid angle of texel (x, y) of a size x size face: the exact area of its projection on the

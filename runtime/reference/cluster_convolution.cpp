@@ -48,11 +48,11 @@ T ExpectedLobeWeight(T ndotl, T variance, T roughness, uint32_t weighting) {
     if (ndotl > T(3) * spread) {
         const T a2 = roughness * roughness * roughness * roughness;
         const T A = T(0.5) + T(0.5) * a2, B = T(0.5) * a2 - T(0.5);
-        const T s = A + B * ndotl;
-        if (weighting == 0) return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) / (s * s));
-        const T q = (T(1) - k) * ndotl + k;
-        const T w = ndotl / q, w1 = k / (q * q), w2 = T(-2) * (T(1) - k) * k / (q * q * q);
-        return D * (w + T(0.5) * variance * (w * T(6) * B * B / (s * s) - T(4) * B * w1 / s + w2));
+        const T inverseS = T(1) / (A + B * ndotl);
+        if (weighting == 0) return D * (ndotl + T(0.5) * variance * (-B) * (T(4) * A - T(2) * B * ndotl) * inverseS * inverseS);
+        const T inverseQ = T(1) / ((T(1) - k) * ndotl + k);
+        const T w = ndotl * inverseQ, w1 = k * inverseQ * inverseQ, w2 = T(-2) * (T(1) - k) * w1 * inverseQ;
+        return D * (w + T(0.5) * variance * (w * T(6) * B * B * inverseS * inverseS - T(4) * B * w1 * inverseS + w2));
     }
     const T clipped = std::max(ClippedMean(ndotl, spread), T(0));
     return D * (weighting == 0 ? clipped : clipped / ((T(1) - k) * clipped + k));
@@ -149,15 +149,17 @@ T meanLuminance(const ClusterPyramid<T>& pyramid) {
 template <typename T>
 bool opens(const ClusterPyramid<T>& pyramid, vec3<T> normal, const Block& block, uint32_t size,
            const ConvolutionTree& tree, T meanLight) {
-    const T cosine = glm::dot(normal, blockCentre<T>(block.face, block.x, block.y, size));
+    const T inverseSize = T(1) / T(size); // exact: sizes are powers of two
+    const vec3<T> centre = CubeFacePoint<T>(block.face, (vec2<T>(T(block.x), T(block.y)) + T(0.5)) * inverseSize);
+    const T cosine = glm::dot(normal, centre) * (T(1) / std::sqrt(glm::dot(centre, centre)));
     const size_t i = pyramid.index(block.level, block.face, block.x, block.y);
     const T brightness =
         pyramid.centroid[block.level][i].w / std::max(pyramid.geometry[block.level][i].w * meanLight, T(1e-30));
-    const T reach = T(tree.refine) * T(2) / T(size);
-    const T widths = (T(2) - T(2) * cosine) / (reach * reach);
+    const T widthsOut = T(size) * (T(0.5) / T(tree.refine));
+    const T widths = (T(2) - T(2) * cosine) * widthsOut * widthsOut;
     const T light = std::max(brightness, T(1));
     const bool nearN = widths * widths * widths < light * light;
-    const bool acrossHorizon = block.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) / T(size);
+    const bool acrossHorizon = block.level > tree.horizonLevel && std::abs(cosine) < T(kHorizonOpen) * inverseSize;
     return nearN || acrossHorizon;
 }
 
@@ -181,8 +183,8 @@ vec3<T> convolveTexel(const ClusterPyramid<T>& pyramid, vec3<T> normal, T roughn
         const size_t i = pyramid.index(block.level, block.face, block.x, block.y);
         const vec4<T> energy = pyramid.energy[block.level][i], weighted = pyramid.centroid[block.level][i];
         const vec4<T> geometry = pyramid.geometry[block.level][i];
-        const vec3<T> extent = vec3<T>(geometry) / geometry.w;
-        const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) / weighted.w : extent;
+        const vec3<T> extent = vec3<T>(geometry) * (T(1) / geometry.w);
+        const vec3<T> light = weighted.w > T(0) ? vec3<T>(weighted) * (T(1) / weighted.w) : extent;
         radiance += vec3<T>(energy) * BlockLobeWeight(normal, light, roughness, tree.weighting);
         weight += energy.w * BlockLobeWeight(normal, extent, roughness, tree.weighting);
         ++terms;

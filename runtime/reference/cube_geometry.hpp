@@ -11,16 +11,21 @@
 namespace iblkit::reference {
 
 template <typename T>
-vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
+vec3<T> CubeFacePoint(uint32_t face, vec2<T> uv) {
     uv = (uv - T(0.5)) * vec2<T>(T(2), T(-2));
     switch (face) {
-    case 0: return glm::normalize(vec3<T>(T(1), uv.y, -uv.x));
-    case 1: return glm::normalize(vec3<T>(T(-1), uv.y, uv.x));
-    case 2: return glm::normalize(vec3<T>(uv.x, T(1), -uv.y));
-    case 3: return glm::normalize(vec3<T>(uv.x, T(-1), uv.y));
-    case 4: return glm::normalize(vec3<T>(uv.x, uv.y, T(1)));
-    default: return glm::normalize(vec3<T>(-uv.x, uv.y, T(-1)));
+    case 0: return vec3<T>(T(1), uv.y, -uv.x);
+    case 1: return vec3<T>(T(-1), uv.y, uv.x);
+    case 2: return vec3<T>(uv.x, T(1), -uv.y);
+    case 3: return vec3<T>(uv.x, T(-1), uv.y);
+    case 4: return vec3<T>(uv.x, uv.y, T(1));
+    default: return vec3<T>(-uv.x, uv.y, T(-1));
     }
+}
+
+template <typename T>
+vec3<T> CubeFaceDirection(uint32_t face, vec2<T> uv) {
+    return glm::normalize(CubeFacePoint(face, uv));
 }
 
 // The inverse, as Vulkan selects a face (RenderReferenceCS's CubeFaceOf): the face of d's largest

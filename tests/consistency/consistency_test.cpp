@@ -222,8 +222,9 @@ TEST_F(BrokenVariant, SwappedCubeFaceFailsEveryKernelOfCubeFxh) {
 // The light's mean direction divided by the block's solid angle instead of the light's weight.
 TEST_F(BrokenVariant, LightMeanOverTheWrongWeightFailsTheConvolution) {
     expectEveryPathFails(broken("PrefilterConvolutionCS.hlsl",
-                                 "float3 light = weighted.w > 0.f ? weighted.xyz / weighted.w : extent;",
-                                 "float3 light = weighted.w > 0.f ? weighted.xyz / geometry.w : extent;"), {"PrefilterConvolutionCS"});
+                                 "float3 light = weighted.w > 0.f ? weighted.xyz * ( 1.f / weighted.w ) : extent;",
+                                 "float3 light = weighted.w > 0.f ? weighted.xyz * ( 1.f / geometry.w ) : extent;"),
+                         {"PrefilterConvolutionCS"});
 }
 
 // HLSL's log is the natural one: a port that writes it for log2 reads every sample 0.69 times as

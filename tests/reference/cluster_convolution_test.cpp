@@ -30,11 +30,14 @@ TEST(ClusterConvolution, AConstantEnvironmentIsReturnedExactly) {
     const auto pyramid = clusterPyramid<double>(constant, size);
     for (double roughness : {0.1, 0.5, 1.0}) {
         const auto texels = convolvePrefilter(pyramid, roughness, 8, {4, 0, 1.5, 2});
-        for (size_t i = 0; i < texels.size(); i += 4) {
-            ASSERT_NEAR(texels[i], 0.5, 1e-12) << roughness; // the same blocks weigh numerator and denominator
-            ASSERT_NEAR(texels[i + 1], 2.0, 1e-12) << roughness;
-            ASSERT_NEAR(texels[i + 2], 8.0, 1e-12) << roughness;
-        }
+        double worst = 0;
+        for (size_t i = 0; i < texels.size(); i += 4)
+            worst = std::max({worst, std::abs(texels[i] / 0.5 - 1), std::abs(texels[i + 1] / 2.0 - 1), std::abs(texels[i + 2] / 8.0 - 1)});
+        // The same blocks weigh numerator and denominator, so only rounding separates the result
+        // from the constant: the light's mean direction and the blocks' extent are each a sum
+        // times a reciprocal, whose last bits a narrow lobe's steep slope amplifies (measured
+        // 2.3e-13 relative at roughness 0.1, 1.3e-15 at 0.5).
+        EXPECT_LT(worst, 1e-12) << roughness;
     }
 }
 
