@@ -192,7 +192,15 @@ float MeanLuminance( uint topLevel, uint baseSize )
     return light / solidAngle;
 }
 
-// Whether the block (face, xy) of `level` > 0, size x size per face, with its Centroid `weighted`
+// 1 / 2^n exactly, from its exponent bits, where a division would be a vector division a term on
+// CPU drivers.
+float InversePowerOfTwo( uint n )
+{
+    return asfloat( ( 127u - n ) << 23 );
+}
+
+// Whether the block (face, xy) of `level` > 0 of a source 2^baseLog2 texels wide (size x size
+// blocks per face, size = 2^(baseLog2 - level)), with its Centroid `weighted`
 // and Geometry `geometry`, opens for N = normal: when N
 // is within Refine of its widths (2 / size each) of its centre, as a chord (|N - centre|^2 =
 // 2 - 2 cos), or, down to HorizonLevel, when it lies across N's horizon, where N.L > 0 clips
@@ -202,26 +210,21 @@ float MeanLuminance( uint topLevel, uint baseSize )
 // resolved as finely as its share of the result needs (measured over the built-in sky and
 // Blender's HDRIs: the cube root holds the error of small bright lights to that of the rest
 // for about 15 % more terms; the square root costs twice that for no gain).
-bool Opens( float3 normal, uint face, uint2 xy, uint size, float inverseSize, uint level, float meanLuminance,
-            float halfOverRefine, float4 weighted, float4 geometry )
+bool Opens( float3 normal, uint face, uint2 xy, uint level, uint baseLog2, float meanLuminance, float halfOverRefine,
+            float4 weighted, float4 geometry )
 {
+    uint sizeLog2 = baseLog2 - level; // the level's blocks per face: 2^sizeLog2
+    float size = float( 1u << sizeLog2 ), inverseSize = InversePowerOfTwo( sizeLog2 );
     float3 centre = CubeFacePoint( face, ( float2( xy ) + 0.5f ) * inverseSize );
     float cosine = dot( normal, centre ) * ( 1.f / sqrt( dot( centre, centre ) ) );
     float brightness = max( weighted.w / max( geometry.w * meanLuminance, 1e-30f ), 1.f );
     // chord < reach x cbrt(brightness), reach = Refine x 2 / size, cubed: CPU drivers make a pow of
     // a log and an exp.
-    float widthsOut = float( size ) * halfOverRefine;
+    float widthsOut = size * halfOverRefine;
     float widths = ( 2.f - 2.f * cosine ) * widthsOut * widthsOut;
     bool nearN = widths * widths * widths < brightness * brightness;
     bool acrossHorizon = level > HorizonLevel && abs( cosine ) < HORIZON_OPEN * inverseSize;
     return nearN || acrossHorizon;
-}
-
-// 1 / 2^n exactly, from its exponent bits, where a division would be a vector division a term on
-// CPU drivers.
-float InversePowerOfTwo( uint n )
-{
-    return asfloat( ( 127u - n ) << 23 );
 }
 
 // llvmpipe counts every iteration of all of an invocation's loops against one budget of 65535
@@ -271,8 +274,7 @@ void main( uint3 DTid : SV_DispatchThreadId )
         float4 energy, weighted, geometry;
         LoadBlock( face, xy, level, baseSize, energy, weighted, geometry );
         if ( level > FineLevel && terms < openLimit
-             && Opens( normal, face, xy, max( baseSize >> level, 1u ), InversePowerOfTwo( baseLog2 - level ), level, meanLuminance,
-                       halfOverRefine, weighted, geometry ) )
+             && Opens( normal, face, xy, level, baseLog2, meanLuminance, halfOverRefine, weighted, geometry ) )
         {
             xy *= 2;
             level -= 1;

@@ -89,9 +89,10 @@ void ConvolutionPrefilter::buildPyramid(vulkan::Image& source) {
     energy_.emplace(context_, vulkan::ImageDesc{"Energy", &rgba32, size, size, 6, mips, true, true});
     centroid_.emplace(context_, vulkan::ImageDesc{"Centroid", &rgba32, size, size, 6, mips, true, true});
     geometry_.emplace(context_, vulkan::ImageDesc{"Geometry", &rgba32, size, size, 6, mips, true, true});
-    const uint32_t sourceSize = source.desc().width;
-    texelSolidAngle_.emplace(context_, vulkan::ImageDesc{"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), sourceSize,
-                                                         sourceSize, 1, 1, false, true});
+    // Only a walk that makes single texels reads their solid angles; ClusterCube binds a texel of it regardless.
+    const uint32_t tableSize = holdsSourceTexels_ ? 1 : source.desc().width;
+    texelSolidAngle_.emplace(context_, vulkan::ImageDesc{"TexelSolidAngle", &vulkan::texelFormatNamed("R32_SFLOAT"), tableSize,
+                                                         tableSize, 1, 1, false, true});
     runClusterPyramid(cluster_, source, pyramid());
     pyramidSource_ = &source;
 }

@@ -78,7 +78,7 @@ void runPrefilterRing(Kernel& kernel, vulkan::Image& source, const vulkan::Sampl
 // pyramidSize(source) wide (mip n holds blocks of 2^(n+1)), and a 1x1 source, which has no block
 // of more than one texel, gets 1x1 pyramids that nothing reads. With them, the solid angle of
 // each of the source's texels (R32F, one face's: the same on all six), which the walk reads only
-// where the pyramids do not hold the texels.
+// where the pyramids do not hold the texels (a 1x1 placeholder where they do).
 struct EnergyPyramid {
     vulkan::Image& energy;
     vulkan::Image& centroid;

@@ -14,9 +14,10 @@ namespace iblkit::shading {
 namespace {
 
 using reference::CubeFaceDirection;
-using reference::CubeTexelSolidAngle;
 
 double luminanceOf(const float* rgba) { return 0.2126 * rgba[0] + 0.7152 * rgba[1] + 0.0722 * rgba[2]; }
+
+glm::vec3 rgbOf(const std::vector<float>& rgba, size_t texel) { return {rgba[4 * texel], rgba[4 * texel + 1], rgba[4 * texel + 2]}; }
 
 // The texel a direction falls in.
 size_t texelOf(glm::dvec3 d, uint32_t size) {
@@ -148,14 +149,14 @@ Extraction extractLights(std::vector<float> faces, uint32_t size, const Extracti
     for (const auto& region : regions) {
         std::vector<glm::vec3> before;
         before.reserve(region.texels.size());
-        for (const size_t texel : region.texels) before.emplace_back(residual[4 * texel], residual[4 * texel + 1], residual[4 * texel + 2]);
+        for (const size_t texel : region.texels) before.push_back(rgbOf(residual, texel));
         fillFromSurroundings(residual, region, size);
         EnvironmentLight light;
         glm::dvec3 power(0), centre(0);
         for (size_t i = 0; i < region.texels.size(); ++i) {
             const size_t texel = region.texels[i];
             const auto x = uint32_t(texel % size), y = uint32_t(texel / size % size), face = uint32_t(texel / (size_t(size) * size));
-            const glm::vec3 after(residual[4 * texel], residual[4 * texel + 1], residual[4 * texel + 2]);
+            const glm::vec3 after = rgbOf(residual, texel);
             const glm::dvec3 removed = glm::dvec3(before[i]) - glm::dvec3(after);
             power += removed * solidAngle[texel];
             const glm::dvec3 d = CubeFaceDirection<double>(face, glm::dvec2((x + 0.5) / size, (y + 0.5) / size));
