@@ -36,8 +36,8 @@ TEST(ClusterConvolution, AConstantEnvironmentIsReturnedExactly) {
         // The same blocks weigh numerator and denominator, so only rounding separates the result
         // from the constant: the light's mean direction and the blocks' extent are each a sum
         // times a reciprocal, whose last bits a narrow lobe's steep slope amplifies (measured
-        // 2.3e-13 relative at roughness 0.1, 1.3e-15 at 0.5).
-        EXPECT_LT(worst, 1e-12) << roughness;
+        // 2.3e-13 relative at roughness 0.1, 1.3e-15 at 0.5): the bound at twice the worst.
+        EXPECT_LT(worst, 5e-13) << roughness;
     }
 }
 
