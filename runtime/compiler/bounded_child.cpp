@@ -52,6 +52,8 @@ void restoreDefaultCrashHandlers() {
         message = kError + std::string(error.what());
     } catch (const std::bad_alloc&) {
         _exit(3);
+    } catch (const std::exception& error) { // not the compiler's own words, but never an abort read as memory
+        message = kError + std::string("error: internal error: ") + error.what();
     }
     writeAll(fd, message);
     _exit(0);

@@ -41,6 +41,12 @@ struct CompileOptions {
     // DXC's -enable-16bit-types: half, min16* and float16_t/int16_t/uint16_t are 16 bits wide.
     // Without it they are 32 bits, as in DXC (min16* with a warning).
     bool enable16BitTypes = false;
+    // DXC's and fxc's -Zpr / -Zpc: how a matrix without row_major or column_major is packed
+    // (column-major when unset, HLSL's default).
+    bool rowMajorByDefault = false;
+    // Files an engine's build puts before the source as it compiles it (a prelude of helpers), in
+    // order: each is #included first, and the source's own lines keep their numbers.
+    std::vector<std::filesystem::path> forceIncludes;
 };
 
 } // namespace iblkit::compiler

@@ -63,7 +63,7 @@ CompiledShader compileShader(const CompileOptions& options) {
     if (options.optimization != OptimizationLevel::None) validateSpirv(shader.namedSpirv, shader.sourceName);
     shader.spirv = options.stripDebugInfo ? stripDebugInfo(shader.namedSpirv, shader.sourceName) : shader.namedSpirv;
     if (options.stripDebugInfo) validateSpirv(shader.spirv, shader.sourceName);
-    shader.bindingShifts = options.bindingShifts;
+    shader.bindingShifts = frontend.bindingShifts;
     shader.includedFiles = std::move(frontend.includedFiles);
     shader.warnings = std::move(frontend.warnings);
     return shader;
@@ -96,6 +96,11 @@ std::string reflectionJson(const CompiledShader& shader, const std::map<CrossTar
     nlohmann::json targetBindings = nlohmann::json::object();
     for (const auto& [target, compiled] : targets) targetBindings[std::string(crossTargetName(target))] = targetJson(compiled);
     json["targets"] = targetBindings;
+    // What a GLSL or ESSL form needs of the driver that reads it: its version and extensions.
+    nlohmann::json requirements = nlohmann::json::object();
+    for (const auto& [target, compiled] : targets)
+        if (compiled.version != 0) requirements[std::string(crossTargetName(target))] = {{"version", compiled.version}, {"extensions", compiled.extensions}};
+    if (!requirements.empty()) json["form_requirements"] = requirements;
     if (!refused.empty()) {
         nlohmann::json reasons = nlohmann::json::object();
         for (const auto& [target, reason] : refused) reasons[std::string(crossTargetName(target))] = reason;

@@ -4,6 +4,7 @@
 #include "hlsl_form_registers.hpp"
 #include "hlsl_matrix_loads.hpp"
 #include "image_formats.hpp"
+#include "readable_glsl.hpp"
 #include "spirv_module.hpp"
 
 #include <spirv_cross/spirv_glsl.hpp>
@@ -148,7 +149,10 @@ CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& refl
         out.bindings.push_back(
             {withSampler ? texture + "+" + sampler : texture, "texture_unit", next["texture_unit"]++, declared, "", ""});
     }
-    out.source = compiler.compile();
+    auto readable = readableGlsl(compiler, reflection.stage, es, false, es ? "essl" : "glsl", sourceName);
+    out.source = std::move(readable.source);
+    out.version = readable.version;
+    out.extensions = std::move(readable.extensions);
     return out;
 }
 
@@ -195,7 +199,10 @@ CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& 
         out.bindings.push_back({resource.name, "set" + std::to_string(resource.location.set), resource.location.binding, "",
                                 standsIn ? adapted->second.declared : "", standsIn ? adapted->second.original : ""});
     }
-    out.source = compiler.compile();
+    auto readable = readableGlsl(compiler, reflection.stage, es, true, es ? "vulkan-essl" : "vulkan-glsl", sourceName);
+    out.source = std::move(readable.source);
+    out.version = readable.version;
+    out.extensions = std::move(readable.extensions);
     return out;
 }
 

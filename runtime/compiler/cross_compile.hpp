@@ -30,10 +30,14 @@ struct TargetBinding {
 struct CrossCompiled {
     std::string source;
     std::vector<TargetBinding> bindings;
+    // GLSL and ESSL forms: the language version and the extensions beyond SPIRV-Cross's own that
+    // the form needs to be read (ESSL 3.20 for a cube map array; 0 for MSL and HLSL).
+    uint32_t version = 0;
+    std::vector<std::string> extensions;
 };
 
-// SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1, GLSL 450 and ESSL 310 with
-// Vulkan semantics, MSL (2.1; 2.2 with 64-bit integers) or HLSL (the lowest shader model from
+// SPIR-V -> GLSL 450 for OpenGL 4.5, ESSL 310 for OpenGL ES 3.1 (3.20, and extensions, where the
+// shader needs them: readable_glsl.hpp), GLSL 450 and ESSL with Vulkan semantics, MSL (2.1; 2.2 with 64-bit integers) or HLSL (the lowest shader model from
 // 5.0 to 6.2 that has what the module uses) with SPIRV-Cross. Resources are numbered per target
 // namespace in register order (docs/bindings.md). Throws CompileError naming the form, the
 // construct it cannot express and, where another form can, the option that writes that form.

@@ -34,9 +34,12 @@ EShMessages messagesFor(const CompileOptions& options) {
     return static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules | EShMsgHlslOffsets | sixteenBit);
 }
 
-std::string preambleOf(const CompileOptions& options) {
-    std::string preamble;
-    for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
+// Lowered text was preprocessed already: its macros are expanded, and their defines must not
+// apply twice; the default matrix packing applies either way.
+std::string preambleOf(const CompileOptions& options, bool preprocessed) {
+    std::string preamble = options.rowMajorByDefault ? "#pragma pack_matrix(row_major)\n" : "";
+    if (!preprocessed)
+        for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
     return preamble;
 }
 
@@ -55,11 +58,9 @@ std::string preambleOf(const CompileOptions& options) {
 
 // One TShader configured the same way for the preprocessing pass and the real parse.
 struct ConfiguredShader {
-    // Lowered text was preprocessed already: its macros are expanded, and their defines must
-    // not apply twice.
     ConfiguredShader(EShLanguage language, const CompileOptions& options, const std::string& sourceName,
                      const std::string& text, bool preprocessed = false)
-        : shader(language), preamble(preprocessed ? "" : preambleOf(options)), name(sourceName), source(text.c_str()),
+        : shader(language), preamble(preambleOf(options, preprocessed)), name(sourceName), source(text.c_str()),
           length(static_cast<int>(text.size())) {
         nameText = name.c_str();
         shader.setStringsWithLengthsAndNames(&source, &length, &nameText, 1);
@@ -121,7 +122,7 @@ void requireMacroNames(const CompileOptions& options, const std::string& sourceN
 
 lowering::LoweredSource lower(const CompileOptions& options, const std::string& sourceName, const std::string& preprocessed) {
     try {
-        return lowering::lowerHlsl(preprocessed, sourceName, options.hlslVersion, options.enable16BitTypes);
+        return lowering::lowerHlsl(preprocessed, sourceName, options.hlslVersion, options.enable16BitTypes, options.entryPoint);
     } catch (const lowering::LoweringError& error) {
         throw CompileError(error.what());
     }
@@ -166,7 +167,12 @@ std::string readSource(const std::filesystem::path& path) {
 FrontendResult compileHlsl(const CompileOptions& options) {
     initializeGlslangOnce();
     const std::string sourceName = options.source.string();
-    const std::string text = options.sourceText ? *options.sourceText : readSource(options.source);
+    std::string text = asGlslangReadsIt(options.sourceText ? *options.sourceText : readSource(options.source));
+    if (!options.forceIncludes.empty()) {
+        std::string prelude;
+        for (const auto& file : options.forceIncludes) prelude += "#include \"" + file.generic_string() + "\"\n";
+        text = prelude + "#line 1\n" + text;
+    }
     requireMacroNames(options, sourceName);
     if (options.boundPreprocessing) {
         // The whole front end first in a child with limits: glslang loops on a macro that
@@ -206,13 +212,14 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     if (!mapped) failWith(program.getInfoLog(), includes, sourceName, "resource binding failed");
 
     FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {},
-                          attributeImageFormats(lowered.vulkan, sourceName), {}};
+                          attributeImageFormats(lowered.vulkan, sourceName), {}, {}};
     glslang::SpvOptions spvOptions;
     spvOptions.disableOptimizer = true;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
     result.warnings = lowered.warnings;
     result.kitEdits = lowered.edits;
+    result.bindingShifts = resolver.shifts();
     for (auto& warning : parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings)
         result.warnings.push_back(std::move(warning));
     const std::string spvMessages = logger.getAllMessages();

@@ -19,6 +19,7 @@ struct FrontendResult {
     std::vector<std::string> warnings;
     std::map<std::string, std::string> imageFormats; // from [[vk::image_format]], by resource name
     std::vector<std::string> kitEdits;               // what the lowering changed (lowering.hpp)
+    BindingShifts bindingShifts;                     // the options', or the defaults grown to fit
 };
 
 // HLSL -> SPIR-V (Vulkan 1.1, SPIR-V 1.3) with glslang's HLSL frontend: the preprocessor

@@ -70,6 +70,7 @@ void HlslRegisterResolver::endNotifications(EShLanguage) {
     std::vector<DeclaredResource> inDeclarationOrder;
     for (const auto& [id, resource] : declared_) inDeclarationOrder.push_back(resource);
     try {
+        shifts_ = grownToFit(inDeclarationOrder, shifts_);
         registers_ = assignRegisters(inDeclarationOrder, shifts_, sourceName_);
     } catch (const CompileError& error) {
         error_ = error.what();

@@ -27,13 +27,14 @@ public:
     int resolveSet(EShLanguage stage, glslang::TVarEntryInfo& entry) override;
 
     const std::vector<ResourceRegister>& registers() const { return registers_; }
+    const BindingShifts& shifts() const { return shifts_; }
     // Set when the registers could not be assigned; glslang must not see an exception.
     const std::optional<std::string>& error() const { return error_; }
 
 private:
     const ResourceRegister* find(const glslang::TVarEntryInfo& entry) const;
 
-    BindingShifts shifts_;
+    BindingShifts shifts_; // grown to fit when they are the defaults (grownToFit)
     std::map<std::string, ExplicitBinding> vulkanBindings_; // by HLSL name
     std::string sourceName_;
     std::map<long long, DeclaredResource> declared_; // by symbol id: declaration order

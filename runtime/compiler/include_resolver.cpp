@@ -1,21 +1,59 @@
 #include "include_resolver.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
 namespace iblkit::compiler {
 namespace {
 
+bool sameLetters(const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
+               return std::tolower(x) == std::tolower(y);
+           });
+}
+
+// The file as Windows finds it: a name that differs only in case from the one on disk (the
+// compilers of Direct3D code bases run on a file system that ignores case).
+std::filesystem::path onDisk(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::exists(path, error)) return path;
+    std::filesystem::path found;
+    for (const auto& part : path.lexically_normal()) {
+        const auto candidate = found / part;
+        if (found.empty() || std::filesystem::exists(candidate, error) || part == "..") {
+            found = candidate;
+            continue;
+        }
+        bool matched = false;
+        for (const auto& entry : std::filesystem::directory_iterator(found, error))
+            if (sameLetters(entry.path().filename().string(), part.string())) {
+                found = entry.path();
+                matched = true;
+                break;
+            }
+        if (!matched) return path;
+    }
+    return found;
+}
+
 bool readFile(const std::filesystem::path& path, std::string& text) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) return false;
-    std::ifstream stream(path, std::ios::binary);
+    const auto file = onDisk(path);
+    if (!std::filesystem::is_regular_file(file, error)) return false;
+    std::ifstream stream(file, std::ios::binary);
     if (!stream) return false;
     std::ostringstream buffer;
     buffer << stream.rdbuf();
-    text = buffer.str();
+    text = asGlslangReadsIt(buffer.str());
     return true;
+}
+
+// "util\\HlslCompat.h" as Windows reads it.
+std::string forwardSlashes(std::string name) {
+    std::replace(name.begin(), name.end(), '\\', '/');
+    return name;
 }
 
 int lineOfInclude(const std::string& includerText, const std::string& headerName) {
@@ -27,6 +65,13 @@ int lineOfInclude(const std::string& includerText, const std::string& headerName
 }
 
 } // namespace
+
+std::string asGlslangReadsIt(std::string text) {
+    constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+    if (text.rfind(kByteOrderMark, 0) == 0) text.erase(0, kByteOrderMark.size());
+    if (!text.empty() && text.back() != '\n') text += '\n';
+    return text;
+}
 
 IncludeResolver::IncludeResolver(std::vector<std::filesystem::path> includeDirs,
                                  const std::map<std::string, std::string>* virtualFiles)
@@ -50,14 +95,16 @@ const IncludeSite* IncludeResolver::includeSite(const std::string& name) const {
 IncludeResolver::IncludeResult* IncludeResolver::includeLocal(const char* headerName, const char* includerName,
                                                               size_t depth) {
     const auto includerDir = std::filesystem::path(includerName).parent_path();
-    if (auto* result = load(includerDir / headerName, headerName, includerName)) return result;
+    if (auto* result = load(includerDir / forwardSlashes(headerName), headerName, includerName)) return result;
     return includeSystem(headerName, includerName, depth);
 }
 
 IncludeResolver::IncludeResult* IncludeResolver::includeSystem(const char* headerName, const char* includerName,
                                                                size_t) {
     for (const auto& dir : includeDirs_)
-        if (auto* result = load(dir / headerName, headerName, includerName)) return result;
+        if (auto* result = load(dir / forwardSlashes(headerName), headerName, includerName)) return result;
+    // A header an engine's build makes as it compiles, served by the name it is included by.
+    if (virtualFiles_ && virtualFiles_->count(headerName)) return load(headerName, headerName, includerName);
     return nullptr;
 }
 

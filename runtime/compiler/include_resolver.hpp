@@ -11,6 +11,10 @@
 
 namespace iblkit::compiler {
 
+// Source text as DXC and fxc take it, for glslang: a UTF-8 byte-order mark (Visual Studio's
+// default) dropped, and a last line given its newline (glslang refuses an #include without one).
+std::string asGlslangReadsIt(std::string text);
+
 // Where a file was included from, for the include chain of a diagnostic.
 struct IncludeSite {
     std::string includer;

@@ -7,11 +7,13 @@ namespace iblkit::compiler {
 namespace {
 
 // The source edits are runtime/lowering's passes; the SPIR-V edits are the spirv_*.cpp files here.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kKitEdits{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kKitEdits{{
+    {"type-spellings", "vector<T, N> and matrix<T, R, C> of any scalar become TN and TRxC, and unsigned int becomes uint"},
+    {"unreachable-declarations", "functions the entry point never reaches, and declarations it never reaches that hold a feature glslang lacks (ray tracing in a shared header), are dropped, as DXC drops them"},
     {"select-and-or", "select, and and or become component-wise ?:, && and ||"},
     {"enums", "enums become a typedef of their underlying type and one constant per enumerator"},
     {"namespaces", "namespaces become name prefixes (N__name), with C++ lookup; using aliases become typedefs"},
-    {"16-bit-type-names", "float16_t, int16_t and uint16_t become glslang's half, min16int and min16uint"},
+    {"explicit-width-types", "Shader Model 6.2 explicit-width types under glslang's names: float16_t, int16_t and uint16_t become half, min16int and min16uint; float32_t, int32_t, uint32_t and float64_t become float, int, uint and double"},
     {"vk-binding", "[[vk::binding(b, s)]] sets the set and binding, instead of the register rule"},
     {"vk-image-format", "[[vk::image_format]] sets the storage image's format, which glslang ignores"},
     {"vk-push-constant", "[[vk::push_constant]] S name; becomes a push-constant ConstantBuffer<S>"},

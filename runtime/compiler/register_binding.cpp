@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <map>
+#include <set>
 
 namespace iblkit::compiler {
 
@@ -79,7 +80,12 @@ void requireDistinctBindings(const std::vector<ResourceRegister>& assigned, cons
     std::map<std::pair<uint32_t, uint32_t>, const ResourceRegister*> taken;
     for (const auto& resource : assigned) {
         const auto [it, inserted] = taken.emplace(std::make_pair(resource.set, resource.binding), &resource);
-        if (!inserted)
+        // A texture and a sampler that [[vk::binding]] puts on one binding are a combined image
+        // sampler's two halves, as DXC writes them and Vulkan reads them.
+        const bool combined = !inserted && resource.vulkanBinding && it->second->vulkanBinding &&
+                              std::set{resource.registerClass, it->second->registerClass} ==
+                                  std::set{RegisterClass::ShaderResource, RegisterClass::Sampler};
+        if (!inserted && !combined)
             throw CompileError(sourceName + ": error: '" + it->second->name + "' (" + describeBinding(*it->second) +
                                ") and '" + resource.name + "' (" + describeBinding(resource) + ") are both on set " +
                                std::to_string(resource.set) + ", binding " + std::to_string(resource.binding));
@@ -87,6 +93,39 @@ void requireDistinctBindings(const std::vector<ResourceRegister>& assigned, cons
 }
 
 } // namespace
+
+namespace {
+
+constexpr uint32_t kDefaultRange = 32;
+
+// The registers each class needs: past its highest explicit register, and one each for the rest.
+std::array<uint64_t, 4> registersNeeded(const std::vector<DeclaredResource>& declared) {
+    std::array<uint64_t, 4> explicitEnd{}, implicitCount{};
+    for (const auto& resource : declared) {
+        if (resource.vulkanBinding) continue;
+        const auto index = size_t(resource.registerClass);
+        if (resource.explicitRegister) explicitEnd[index] = std::max<uint64_t>(explicitEnd[index], *resource.explicitRegister + uint64_t(resource.count));
+        else implicitCount[index] += resource.count;
+    }
+    std::array<uint64_t, 4> needed{};
+    for (size_t i = 0; i < 4; ++i) needed[i] = explicitEnd[i] + implicitCount[i];
+    return needed;
+}
+
+} // namespace
+
+BindingShifts grownToFit(const std::vector<DeclaredResource>& declared, const BindingShifts& shifts) {
+    if (shifts.shift != BindingShifts{}.shift) return shifts; // the user's own: never moved
+    const auto needed = registersNeeded(declared);
+    BindingShifts grown;
+    uint64_t next = 0;
+    for (const RegisterClass registerClass : kRegisterClasses) {
+        grown.set(registerClass, uint32_t(std::min<uint64_t>(next, kLargestBinding)));
+        const uint64_t range = std::max<uint64_t>(kDefaultRange, (needed[size_t(registerClass)] + kDefaultRange - 1) / kDefaultRange * kDefaultRange);
+        next += range;
+    }
+    return grown;
+}
 
 std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
                                               const BindingShifts& shifts, const std::string& sourceName) {

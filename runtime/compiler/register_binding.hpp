@@ -73,6 +73,10 @@ struct ResourceRegister {
 // [[vk::binding]] takes its own set and binding and no register.
 // Throws CompileError on a register used twice, one outside its class's range, or a set and
 // binding that two resources would share.
+// The default shifts (0, 32, 64, 96) grown in steps of 32 so that every class holds the registers
+// its resources need (a t9 array of 40 textures moves s and u up); shifts a user gave are kept.
+BindingShifts grownToFit(const std::vector<DeclaredResource>& declared, const BindingShifts& shifts);
+
 std::vector<ResourceRegister> assignRegisters(const std::vector<DeclaredResource>& declared,
                                               const BindingShifts& shifts, const std::string& sourceName);
 

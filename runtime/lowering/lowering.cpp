@@ -5,6 +5,8 @@
 #include "namespaces.hpp"
 #include "refusals.hpp"
 #include "sixteen_bit.hpp"
+#include "type_spellings.hpp"
+#include "unreachable_declarations.hpp"
 #include "unsupported_features.hpp"
 
 #include <algorithm>
@@ -29,19 +31,22 @@ std::vector<Token> runPass(const std::vector<Token>& tokens, const char* edit, s
 } // namespace
 
 LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sourceName, HlslVersion version,
-                        bool enable16BitTypes) {
+                        bool enable16BitTypes, const std::string& entryPoint) {
     LoweredSource lowered;
     auto& edits = lowered.edits;
-    auto tokens = runPass(tokenize(preprocessed, sourceName), "16-bit-type-names", edits, [&](const auto& in) {
+    auto tokens = runPass(tokenize(preprocessed, sourceName), "type-spellings", edits, lowerTypeSpellings);
+    tokens = runPass(tokens, "explicit-width-types", edits, [&](const auto& in) {
         return lowerSixteenBitTypes(in, enable16BitTypes, lowered.warnings);
     });
+    if (version == HlslVersion::Hlsl2021) refuseUnlowerable(tokens);
+    // Enums and namespaces are older than HLSL 2021 (DXC takes them under -HV 2018); select, and
+    // and or are 2021's, and in older code the names are a shader's own to use.
+    tokens = runPass(tokens, "enums", edits, lowerEnums);
+    tokens = runPass(tokens, "namespaces", edits, lowerNamespaces);
+    tokens = runPass(tokens, "unreachable-declarations", edits,
+                     [&](const auto& in) { return dropUnreachableUnsupported(in, entryPoint); });
     refuseUnsupportedFeatures(tokens);
-    if (version == HlslVersion::Hlsl2021) {
-        refuseUnlowerable(tokens);
-        tokens = runPass(tokens, "enums", edits, lowerEnums);
-        tokens = runPass(tokens, "namespaces", edits, lowerNamespaces);
-        tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
-    }
+    if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));
     if (!lowered.vulkan.bindings.empty()) edits.emplace_back("vk-binding");
     if (!lowered.vulkan.imageFormats.empty()) edits.emplace_back("vk-image-format");

@@ -24,7 +24,9 @@ struct LoweredSource {
 // every version: the [[vk::...]] attributes (vulkan_attributes.hpp) and the 16-bit types
 // (sixteen_bit.hpp). Throws LoweringError.
 // enable16BitTypes: DXC's float16_t, int16_t and uint16_t under glslang's names (sixteen_bit.hpp).
+// entryPoint: what the unreachable declarations are judged from (unreachable_declarations.hpp);
+// "" keeps every declaration.
 LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sourceName, HlslVersion version,
-                        bool enable16BitTypes = false);
+                        bool enable16BitTypes = false, const std::string& entryPoint = "");
 
 } // namespace iblkit::lowering

@@ -12,10 +12,15 @@ namespace {
 struct Spelling {
     std::string_view dxc;
     std::string_view glslang;
+    bool sixteenBit = false; // DXC takes it only with -enable-16bit-types
 };
 
-constexpr std::array kSpellings{Spelling{"float16_t", "half"}, Spelling{"int16_t", "min16int"},
-                                Spelling{"uint16_t", "min16uint"}};
+// Shader Model 6.2's explicit-width types. The 32- and 64-bit ones are the plain types under
+// other names; glslang knows none of them but uint64_t.
+constexpr std::array kSpellings{Spelling{"float16_t", "half", true}, Spelling{"int16_t", "min16int", true},
+                                Spelling{"uint16_t", "min16uint", true}, Spelling{"float32_t", "float"},
+                                Spelling{"int32_t", "int"}, Spelling{"uint32_t", "uint"},
+                                Spelling{"float64_t", "double"}};
 
 // "float16_t3x3" -> {half, "3x3"}: a DXC 16-bit type with its vector or matrix suffix.
 const Spelling* explicitType(const std::string& name, std::string& suffix) {
@@ -46,7 +51,7 @@ std::vector<Token> lowerSixteenBitTypes(const std::vector<Token>& tokens, bool e
         const bool member = followsMemberAccess(tokens, i) || followsQualifier(tokens, i);
         std::string suffix;
         const Spelling* spelling = token.isIdentifier() && !member ? explicitType(token.text, suffix) : nullptr;
-        if (spelling && !enabled)
+        if (spelling && spelling->sixteenBit && !enabled)
             refuse(token, "'" + token.text + "' is a 16-bit type: compile with -enable-16bit-types");
         if (spelling) {
             writer.replace(token, std::string(spelling->glslang) + suffix);

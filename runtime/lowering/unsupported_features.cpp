@@ -86,6 +86,8 @@ void refuseLiteralCastsToUint64(const std::vector<Token>& tokens) {
 
 } // namespace
 
+bool glslangLacks(const std::string& name) { return !lackOf(name).message.empty(); }
+
 void refuseUnsupportedFeatures(const std::vector<Token>& tokens) {
     refuseLiteralCastsToUint64(tokens);
     std::set<std::string, std::less<>> defined;

@@ -2,6 +2,7 @@
 
 #include "hlsl_tokens.hpp"
 
+#include <string>
 #include <vector>
 
 namespace iblkit::lowering {
@@ -15,5 +16,8 @@ namespace iblkit::lowering {
 // or "unsupported construction". An intrinsic the shader defines as a function of its own (a
 // polyfill for older compilers) is the shader's own; a type name never is.
 void refuseUnsupportedFeatures(const std::vector<Token>& tokens);
+
+// Whether `name` is one of those features (a type, an intrinsic or a keyword glslang lacks).
+bool glslangLacks(const std::string& name);
 
 } // namespace iblkit::lowering

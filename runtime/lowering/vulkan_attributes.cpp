@@ -95,10 +95,28 @@ private:
                                             "'[[vk::push_constant]] ConstantBuffer<S> name;'");
         const bool plainStruct = type.isIdentifier() && !type.is("ConstantBuffer") && !type.is("cbuffer") &&
                                  tokens_[at + 1].isIdentifier() && tokens_[at + 2].is(";");
-        if (!plainStruct) return at - 1;
+        if (!plainStruct) return keepWithoutRegister(at);
         writer_.add("ConstantBuffer<" + type.text + ">", type.place, type.leading);
         attributes_.pushConstantStructs = true;
         return at;
+    }
+
+    // A push-constant ConstantBuffer<S> or cbuffer may carry the register its Direct3D build
+    // binds it to; DXC ignores it for Vulkan, and glslang would decorate the block with a set and
+    // binding that push constants cannot have. Keeps the declaration up to its ";" or "{" without
+    // its ": register(...)"; returns the last index kept.
+    size_t keepWithoutRegister(size_t at) {
+        size_t i = at;
+        for (; i < tokens_.size() && !tokens_[i].is(";") && !tokens_[i].is("{"); ++i) {
+            if (tokens_[i].is(":") && i + 2 < tokens_.size() && tokens_[i + 1].is("register") && tokens_[i + 2].is("(")) {
+                const size_t close = matchingClose(tokens_, i + 2);
+                writer_.drop(tokens_.subspan(i, close + 1 - i));
+                i = close;
+                continue;
+            }
+            writer_.keep(tokens_[i]);
+        }
+        return i - 1;
     }
 
     // One "vk::name(arguments)" of a list: whether glslang is to see it.

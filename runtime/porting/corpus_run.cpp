@@ -35,7 +35,9 @@ void readBack(const compiler::CompiledShader& shader, const compiler::CompileOpt
     }
 }
 
-std::map<CrossTarget, FormOutcome> formsOf(const compiler::CompiledShader& shader, const compiler::CompileOptions& options) {
+} // namespace
+
+std::map<CrossTarget, FormOutcome> formOutcomes(const compiler::CompiledShader& shader, const compiler::CompileOptions& options) {
     const auto forms = compiler::crossCompileForms(shader, {std::begin(compiler::kCrossTargets), std::end(compiler::kCrossTargets)});
     std::map<CrossTarget, FormOutcome> outcomes;
     for (const auto& [target, reason] : forms.refused) outcomes[target] = {false, reason};
@@ -49,6 +51,8 @@ std::map<CrossTarget, FormOutcome> formsOf(const compiler::CompiledShader& shade
     }
     return outcomes;
 }
+
+namespace {
 
 void carryOutRun(const std::filesystem::path& runFile, const run::RunOptions& options, ShaderOutcome& outcome) {
     std::ostringstream log;
@@ -101,7 +105,7 @@ ShaderOutcome runCorpusShader(const CorpusShader& corpusShader, const run::RunOp
         const auto shader = compiler::compileShader(corpusShader.options);
         outcome.warnings = shader.warnings;
         outcome.kitEdits = shader.kitEdits;
-        outcome.forms = formsOf(shader, corpusShader.options);
+        outcome.forms = formOutcomes(shader, corpusShader.options);
     } catch (const compiler::CompileError& error) {
         outcome.compileError = error.what();
         return outcome;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "corpus_manifest.hpp"
+#include "compiler.hpp"
 #include "cross_compile.hpp"
 #include "run_executor.hpp"
 
@@ -18,6 +19,10 @@ struct FormOutcome {
     bool produced = false;
     std::string message; // the refusal, or the reader's error; "" for a form produced and read back
 };
+
+// Every form of a compiled shader, each produced and read back or refused.
+std::map<compiler::CrossTarget, FormOutcome> formOutcomes(const compiler::CompiledShader& shader,
+                                                          const compiler::CompileOptions& options);
 
 enum class RunOutcome { NoRunFile, Passed, Failed };
 

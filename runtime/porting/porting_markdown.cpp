@@ -31,13 +31,15 @@ file states.
 - **refused**: one error naming the construct and its place (file:line:col where the construct has
   one), quoted in the notes.
 
-Forms: `glsl` (GLSL 450 for OpenGL), `essl` (ESSL 310), `msl` (MSL 2.1; 2.2 with 64-bit integers
+Forms: `glsl` (GLSL 450 for OpenGL), `essl` (ESSL 3.10, or 3.20 and the extensions glslang names
+where the shader needs them), `msl` (MSL 2.1; 2.2 with 64-bit integers
 or wave operations in a pixel shader),
 `hlsl` (the round trip, Shader Model 5.0 to 6.2 as the shader needs), `vulkan-glsl` and
 `vulkan-essl` (GLSL and ESSL with Vulkan semantics). ✓ produced and read back (glslang for GLSL
 and ESSL, the kit's compiler for HLSL; MSL is produced and checked by SPIRV-Cross only: Debian has
-no Metal compiler); ◐ produced, but the compiler that reads it cannot (its first message is in
-the notes); ✗ refused, with the reason in the notes; · not made, the shader being refused. Run: ✓
+no Metal compiler); ◐ produced, but the kit's compiler cannot read the HLSL round trip back (its
+first message is in the notes; a GLSL or ESSL form glslang cannot read is never written, but
+refused); ✗ refused, with the reason in the notes; · not made, the shader being refused. Run: ✓
 the run file passed; · the shader has no run file. Links assume the page sits in `docs/`.
 )";
 

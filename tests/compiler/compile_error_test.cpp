@@ -38,7 +38,9 @@ TEST_F(CompileErrors, SyntaxErrorNamesFileLineAndColumn) {
 TEST_F(CompileErrors, ErrorInAnIncludeShowsTheIncludeChain) {
     folder.write("include/Common/Bad.fxh", "float broken()\n{\n    return nothere;\n}\n");
     folder.write("include/Outer.fxh", "#include \"Common/Bad.fxh\"\n");
-    const auto source = folder.write("main.hlsl", std::string("// top\n#include \"Outer.fxh\"\n") + kValidBody);
+    // The entry point calls the broken function: one it never reaches is dropped, as DXC drops it.
+    const auto source = folder.write("main.hlsl", "// top\n#include \"Outer.fxh\"\n[numthreads(1, 1, 1)]\n"
+                                                  "void main(uint3 id : SV_DispatchThreadID) { float b = broken(); }\n");
     const auto message = errorOf(source);
     const auto outer = (folder.path() / "include/Outer.fxh").string();
     const auto bad = (folder.path() / "include/Common/Bad.fxh").string();

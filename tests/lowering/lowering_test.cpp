@@ -128,9 +128,13 @@ TEST(Lowering, ErrorsNameTheFileAndLineOfTheLineDirective) {
               "inc/colour.hlsli:7:20: error: select takes 3 arguments, not 1");
 }
 
-TEST(Lowering, Hlsl2018LowersNothingButTheAttributes) {
-    const std::string text = "bool2 and(bool2 a, bool2 b);\nenum X { A };";
+TEST(Lowering, Hlsl2018KeepsSelectAndOrAsNamesButLowersEnums) {
+    // and, or and select are HLSL 2021's; enums and namespaces are older, and DXC takes them
+    // under -HV 2018.
+    const std::string text = "bool2 and(bool2 a, bool2 b);";
     EXPECT_EQ(lowerHlsl(text, "a.hlsl", HlslVersion::Hlsl2018).text, text);
+    const auto result = lowerHlsl("enum X { A };\nint f() { return A; }", "a.hlsl", HlslVersion::Hlsl2018);
+    EXPECT_EQ(result.edits, std::vector<std::string>{"enums"});
 }
 
 TEST(SixteenBitTypes, DxcsExplicitTypesTakeGlslangsNames) {

@@ -70,7 +70,7 @@ TEST(LoweringEdits, EachPassThatChangedTheShaderIsNamed) {
     EXPECT_EQ(edits("enum E { A, B }; E f() { return B; }"), std::vector<std::string>{"enums"});
     EXPECT_EQ(edits("namespace N { float g() { return 1; } } float f() { return N::g(); }"),
               std::vector<std::string>{"namespaces"});
-    EXPECT_EQ(edits("float16_t f(float16_t x) { return x; }", true), std::vector<std::string>{"16-bit-type-names"});
+    EXPECT_EQ(edits("float16_t f(float16_t x) { return x; }", true), std::vector<std::string>{"explicit-width-types"});
     EXPECT_EQ(edits("[[vk::binding(2, 1)]] RWStructuredBuffer<uint> B;"), std::vector<std::string>{"vk-binding"});
     EXPECT_EQ(edits("[[vk::image_format(\"rgba8\")]] RWTexture2D<float4> T;"), std::vector<std::string>{"vk-image-format"});
     EXPECT_EQ(edits("struct S { float a; }; [[vk::push_constant]] S P;"), std::vector<std::string>{"vk-push-constant"});

@@ -2,10 +2,13 @@
 
 #include "atomic_output.hpp"
 #include "bake_progress.hpp"
+#include "codebase_report.hpp"
 #include "corpus_run.hpp"
 #include "porting_markdown.hpp"
 #include "run_command.hpp"
 #include "vulkan_context.hpp"
+
+#include <iblkit/error.hpp>
 
 #include <fmt/core.h>
 
@@ -16,21 +19,106 @@ namespace iblkit::cli {
 
 constexpr const char* kDefaultCorpus = "hlsl/porting";
 
+struct PortingArguments {
+    std::string corpus = kDefaultCorpus;
+    std::string out;
+    std::string device;
+    bool quiet = false;
+    // A code base of the user's: manifests (with --source or --sources), or a folder and a list.
+    std::vector<std::string> manifests;
+    std::string source;  // the one manifest's code base on disk
+    std::string sources; // a folder holding each manifest's code base by its name
+    std::string entries; // a list of FILE ENTRY PROFILE [flags] lines, with --source
+    std::string json;
+    unsigned seconds = 60;
+};
+
+std::vector<porting::CodeBase> codeBasesOf(const PortingArguments& arguments) {
+    namespace fs = std::filesystem;
+    if (!arguments.entries.empty()) {
+        if (arguments.source.empty()) throw Error(ErrorKind::BadInput, "error: --entries needs --source, the folder its files are in");
+        return {porting::readEntryList(arguments.entries, arguments.source)};
+    }
+    if (arguments.source.empty() == arguments.sources.empty())
+        throw Error(ErrorKind::BadInput, "error: --manifest needs --source DIR (its code base) or --sources DIR (a folder "
+                                         "holding each code base by its name)");
+    if (!arguments.source.empty() && arguments.manifests.size() > 1)
+        throw Error(ErrorKind::BadInput, "error: --source names one code base's folder: with several manifests, use --sources");
+    std::vector<porting::CodeBase> codeBases;
+    for (const auto& manifest : arguments.manifests) {
+        // The name is read first, to find its folder under --sources.
+        const auto probe = porting::readCodeBaseManifest(manifest, arguments.source.empty() ? fs::path(arguments.sources) : fs::path(arguments.source));
+        codeBases.push_back(arguments.source.empty() ? porting::readCodeBaseManifest(manifest, fs::path(arguments.sources) / probe.name)
+                                                     : probe);
+    }
+    for (const auto& codeBase : codeBases)
+        if (!fs::is_directory(codeBase.root))
+            throw Error(ErrorKind::BadInput, "error: " + codeBase.root.string() + ": no such folder: the code base " +
+                                                 codeBase.name + " is not on disk there (" + codeBase.repository + " at " +
+                                                 codeBase.commit + ")");
+    return codeBases;
+}
+
+std::string progressLine(const porting::ConfigurationOutcome& outcome) {
+    if (outcome.everyForm()) return "every form";
+    if (outcome.reachedSpirv()) return "SPIR-V; " + porting::failureCause(outcome);
+    return "refused: " + porting::failureCause(outcome);
+}
+
+void portCodeBases(const PortingArguments& arguments) {
+    if (!arguments.out.empty()) files::requireWritableFile(arguments.out, "--out");
+    if (!arguments.json.empty()) files::requireWritableFile(arguments.json, "--json");
+    const auto codeBases = codeBasesOf(arguments);
+    porting::ConfigurationLimits limits;
+    limits.cpuSeconds = arguments.seconds;
+    limits.wallSeconds = 2 * arguments.seconds;
+    std::vector<porting::CodeBaseResults> results;
+    for (const auto& codeBase : codeBases)
+        results.push_back(porting::portCodeBase(codeBase, limits, [&](const auto& outcome, size_t done, size_t total) {
+            if (!arguments.quiet)
+                fmt::print(stderr, "[{}/{}] {} {}: {}\n", done, total, codeBase.name, outcome.label, progressLine(outcome));
+        }));
+    const auto totals = porting::portingTotals(results);
+    fmt::print("{} configurations ({} ray tracing or mesh): {} of {} reach SPIR-V, {} every form\n", totals.configurations,
+               totals.refusedStages, totals.reachedSpirv, totals.counted(), totals.everyForm);
+    for (const auto& cause : porting::causesOf(results)) fmt::print("  {:4} {}\n", cause.count, cause.cause);
+    std::string command = "iblkit porting";
+    for (const auto& manifest : arguments.manifests) command += " --manifest " + manifest;
+    if (!arguments.entries.empty()) command += " --entries " + arguments.entries;
+    if (!arguments.sources.empty()) command += " --sources CODE_BASES";
+    if (!arguments.source.empty()) command += " --source " + arguments.source;
+    if (!arguments.out.empty()) {
+        files::writeFileAtomically(arguments.out, porting::codeBaseMarkdown(results, command + " --out " + arguments.out));
+        fmt::print("wrote {}\n", arguments.out);
+    }
+    if (!arguments.json.empty()) {
+        files::writeFileAtomically(arguments.json, porting::codeBaseJson(results));
+        fmt::print("wrote {}\n", arguments.json);
+    }
+}
+
 void addPortingCommand(CLI::App& app) {
-    struct Arguments {
-        std::string corpus = kDefaultCorpus;
-        std::string out;
-        std::string device;
-        bool quiet = false;
-    };
-    auto arguments = std::make_shared<Arguments>();
+    auto arguments = std::make_shared<PortingArguments>();
     auto* command = app.add_subcommand("porting", "Compile the porting corpus into every form, run it, judge each feature "
                                                   "against the corpus manifest and write the feature table");
     command->add_option("--corpus", arguments->corpus, "Corpus folder holding corpus.json (default hlsl/porting)");
     command->add_option("--out", arguments->out, "Write the feature table (markdown) here, e.g. docs/porting.md");
     command->add_option("--device", arguments->device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet, "No progress on stderr");
+    command->add_option("--manifest", arguments->manifests, "A code base's manifest (docs/porting-real-code.md): port its "
+                                                            "configurations instead of the feature corpus")
+        ->check(CLI::ExistingFile);
+    command->add_option("--source", arguments->source, "The folder of the code base (one --manifest, or --entries)");
+    command->add_option("--sources", arguments->sources, "A folder holding each --manifest's code base in a folder of its name");
+    command->add_option("--entries", arguments->entries, "A list of FILE ENTRY PROFILE [-D NAME=VALUE] [-I DIR] [flags] "
+                                                         "lines, files relative to --source")
+        ->check(CLI::ExistingFile);
+    command->add_option("--json", arguments->json, "With a code base: write the results as JSON here");
+    command->add_option("--seconds", arguments->seconds, "With a code base: CPU seconds one configuration may take "
+                                                         "(default 60; twice that in wall time)")
+        ->check(CLI::Range(1u, 3600u));
     command->callback([arguments] {
+        if (!arguments->manifests.empty() || !arguments->entries.empty()) return portCodeBases(*arguments);
         if (!arguments->out.empty()) files::requireWritableFile(arguments->out, "--out"); // before the corpus runs
         const auto manifest = porting::readCorpusManifest(arguments->corpus);
         if (!arguments->out.empty()) files::requireNotAnInputIn(arguments->out, arguments->corpus);
