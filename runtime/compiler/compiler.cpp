@@ -2,6 +2,7 @@
 
 #include "compile_error.hpp"
 #include "hlsl_frontend.hpp"
+#include "spirv_non_uniform.hpp"
 #include "spirv_image_access.hpp"
 #include "spirv_image_format.hpp"
 #include "spirv_module.hpp"
@@ -10,6 +11,7 @@
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 namespace iblkit::compiler {
@@ -56,6 +58,9 @@ CompiledShader compileShader(const CompileOptions& options) {
     if (widenStorageImageWrites(module)) shader.kitEdits.emplace_back("texel-widening");
     if (makeWavePrefixScansExclusive(module)) shader.kitEdits.emplace_back("exclusive-wave-scans");
     if (decorateStorageImageAccess(module)) shader.kitEdits.emplace_back("image-access-qualifiers");
+    const auto& edits = frontend.kitEdits;
+    if (std::find(edits.begin(), edits.end(), "non-uniform-resource-index") != edits.end())
+        decorateNonUniformResourceIndexing(module);
     const auto legal = module.words();
     validateSpirv(legal, shader.sourceName);
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);

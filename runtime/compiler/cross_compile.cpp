@@ -175,11 +175,13 @@ bool usesSixteenBitTypes(const spirv_cross::Compiler& compiler) {
 }
 
 // The lowest shader model that has what the module uses: 16-bit types need 6.2, wave
-// operations and 64-bit integers 6.0, register spaces 5.1.
+// operations and 64-bit integers 6.0, register spaces and bindless resources 5.1.
 uint32_t lowestShaderModel(const spirv_cross::Compiler& compiler, bool usesSpaces) {
     if (usesSixteenBitTypes(compiler)) return 62;
     if (usesWaveOperations(compiler) || declares(compiler, spv::CapabilityInt64)) return 60;
-    return usesSpaces ? 51 : 50;
+    // NonUniformResourceIndex and unbounded arrays of resources are 5.1's.
+    const bool bindless = declares(compiler, spv::CapabilityShaderNonUniform) || declares(compiler, spv::CapabilityRuntimeDescriptorArray);
+    return usesSpaces || bindless ? 51 : 50;
 }
 
 CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,

@@ -195,6 +195,19 @@ void SpirvModule::requireCapability(uint32_t capability) {
     instructions_.insert(instructions_.begin(), SpirvInstruction{spv::OpCapability, {capability}});
 }
 
+void SpirvModule::requireExtension(const std::string& name) {
+    // A literal string: its bytes, NUL-terminated, packed little-endian into words.
+    std::vector<uint32_t> words((name.size() + 4) / 4, 0);
+    for (size_t i = 0; i < name.size(); ++i) words[i / 4] |= uint32_t(uint8_t(name[i])) << (8 * (i % 4));
+    size_t at = 0;
+    for (; at < instructions_.size(); ++at) {
+        const auto& instruction = instructions_[at];
+        if (instruction.opcode == spv::OpExtension && instruction.operands == words) return;
+        if (instruction.opcode != spv::OpCapability && instruction.opcode != spv::OpExtension) break;
+    }
+    instructions_.insert(instructions_.begin() + ptrdiff_t(at), SpirvInstruction{spv::OpExtension, words});
+}
+
 void SpirvModule::replaceStorageImageFormat(uint32_t from, uint32_t to) {
     constexpr size_t kSampled = 6, kFormat = 7;
     for (auto& instruction : instructions_)

@@ -3,8 +3,10 @@
 #include "enums.hpp"
 #include "intrinsics.hpp"
 #include "namespaces.hpp"
+#include "non_uniform_index.hpp"
 #include "refusals.hpp"
 #include "sixteen_bit.hpp"
+#include "struct_scope.hpp"
 #include "type_spellings.hpp"
 #include "unreachable_declarations.hpp"
 #include "unsupported_features.hpp"
@@ -38,6 +40,7 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "explicit-width-types", edits, [&](const auto& in) {
         return lowerSixteenBitTypes(in, enable16BitTypes, lowered.warnings);
     });
+    tokens = runPass(tokens, "struct-scope-declarations", edits, hoistStructScopeDeclarations);
     if (version == HlslVersion::Hlsl2021) refuseUnlowerable(tokens);
     // Enums and namespaces are older than HLSL 2021 (DXC takes them under -HV 2018); select, and
     // and or are 2021's, and in older code the names are a shader's own to use.
@@ -45,6 +48,7 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "namespaces", edits, lowerNamespaces);
     tokens = runPass(tokens, "unreachable-declarations", edits,
                      [&](const auto& in) { return dropUnreachableUnsupported(in, entryPoint); });
+    tokens = runPass(tokens, "non-uniform-resource-index", edits, lowerNonUniformResourceIndex);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));

@@ -4,7 +4,8 @@
 
 namespace iblkit::vulkan {
 
-ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, bool hasFloat16Int8Extension) {
+ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, bool hasFloat16Int8Extension,
+                                       bool hasDescriptorIndexingExtension) {
     // The float16/int8 structure is asked about only where the device has its extension.
     const auto chain = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures>();
     const auto& core = chain.get<vk::PhysicalDeviceFeatures2>().features;
@@ -22,6 +23,14 @@ ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, b
         features.float16 = arithmetic.shaderFloat16;
         features.int8 = arithmetic.shaderInt8;
     }
+    if (hasDescriptorIndexingExtension) {
+        const auto withIndexing = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceDescriptorIndexingFeatures>();
+        const auto& indexing = withIndexing.get<vk::PhysicalDeviceDescriptorIndexingFeatures>();
+        features.sampledImageNonUniform = indexing.shaderSampledImageArrayNonUniformIndexing;
+        features.storageImageNonUniform = indexing.shaderStorageImageArrayNonUniformIndexing;
+        features.storageBufferNonUniform = indexing.shaderStorageBufferArrayNonUniformIndexing;
+        features.uniformBufferNonUniform = indexing.shaderUniformBufferArrayNonUniformIndexing;
+    }
     return features;
 }
 
@@ -38,6 +47,12 @@ ShaderFeatureChain::ShaderFeatureChain(const ShaderFeatures& features) {
     arithmetic.shaderFloat16 = features.float16;
     arithmetic.shaderInt8 = features.int8;
     if (!features.float16 && !features.int8) chain_.unlink<vk::PhysicalDeviceShaderFloat16Int8Features>();
+    auto& indexing = chain_.get<vk::PhysicalDeviceDescriptorIndexingFeatures>();
+    indexing.shaderSampledImageArrayNonUniformIndexing = features.sampledImageNonUniform;
+    indexing.shaderStorageImageArrayNonUniformIndexing = features.storageImageNonUniform;
+    indexing.shaderStorageBufferArrayNonUniformIndexing = features.storageBufferNonUniform;
+    indexing.shaderUniformBufferArrayNonUniformIndexing = features.uniformBufferNonUniform;
+    if (!features.descriptorIndexing()) chain_.unlink<vk::PhysicalDeviceDescriptorIndexingFeatures>();
 }
 
 std::string missingShaderFeature(const std::vector<uint32_t>& spirv, const ShaderFeatures& enabled) {
@@ -60,6 +75,18 @@ std::string missingShaderFeature(const std::vector<uint32_t>& spirv, const Shade
                 break;
             case spv::CapabilityStoragePushConstant16:
                 if (!enabled.pushConstant16) return "StoragePushConstant16 (storagePushConstant16)";
+                break;
+            case spv::CapabilitySampledImageArrayNonUniformIndexing:
+                if (!enabled.sampledImageNonUniform) return "SampledImageArrayNonUniformIndexing (shaderSampledImageArrayNonUniformIndexing)";
+                break;
+            case spv::CapabilityStorageImageArrayNonUniformIndexing:
+                if (!enabled.storageImageNonUniform) return "StorageImageArrayNonUniformIndexing (shaderStorageImageArrayNonUniformIndexing)";
+                break;
+            case spv::CapabilityStorageBufferArrayNonUniformIndexing:
+                if (!enabled.storageBufferNonUniform) return "StorageBufferArrayNonUniformIndexing (shaderStorageBufferArrayNonUniformIndexing)";
+                break;
+            case spv::CapabilityUniformBufferArrayNonUniformIndexing:
+                if (!enabled.uniformBufferNonUniform) return "UniformBufferArrayNonUniformIndexing (shaderUniformBufferArrayNonUniformIndexing)";
                 break;
             default: break;
             }

@@ -14,11 +14,19 @@ namespace iblkit::vulkan {
 struct ShaderFeatures {
     bool float64 = false, int64 = false, int16 = false, float16 = false, int8 = false;
     bool storageBuffer16 = false, uniformBuffer16 = false, pushConstant16 = false;
+    // VK_EXT_descriptor_indexing: arrays of resources indexed non-uniformly (NonUniformResourceIndex).
+    bool sampledImageNonUniform = false, storageImageNonUniform = false, storageBufferNonUniform = false,
+         uniformBufferNonUniform = false;
+    bool descriptorIndexing() const {
+        return sampledImageNonUniform || storageImageNonUniform || storageBufferNonUniform || uniformBufferNonUniform;
+    }
 };
 
 // What `device` has, asked with vkGetPhysicalDeviceFeatures2; 16-bit and 8-bit arithmetic
-// need VK_KHR_shader_float16_int8 on a Vulkan 1.1 instance (hasFloat16Int8Extension).
-ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, bool hasFloat16Int8Extension);
+// need VK_KHR_shader_float16_int8 on a Vulkan 1.1 instance (hasFloat16Int8Extension), non-uniform
+// indexing VK_EXT_descriptor_indexing (hasDescriptorIndexingExtension).
+ShaderFeatures supportedShaderFeatures(const vk::raii::PhysicalDevice& device, bool hasFloat16Int8Extension,
+                                       bool hasDescriptorIndexingExtension = false);
 
 // The feature structures that enable `features` at device creation: chain() is the pNext of
 // vk::DeviceCreateInfo.
@@ -29,7 +37,7 @@ public:
 
 private:
     vk::StructureChain<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures,
-                       vk::PhysicalDeviceShaderFloat16Int8Features>
+                       vk::PhysicalDeviceShaderFloat16Int8Features, vk::PhysicalDeviceDescriptorIndexingFeatures>
         chain_;
 };
 

@@ -189,9 +189,12 @@ VulkanContext::VulkanContext(const ContextOptions& options)
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
     const bool float16Int8 = hasDeviceExtension(physicalDevice_, VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
-    shaderFeatures_ = supportedShaderFeatures(physicalDevice_, float16Int8);
+    const bool descriptorIndexing = hasDeviceExtension(physicalDevice_, VK_EXT_DESCRIPTOR_INDEXING_EXTENSION_NAME);
+    shaderFeatures_ = supportedShaderFeatures(physicalDevice_, float16Int8, descriptorIndexing);
     std::vector<const char*> extensions;
     if (shaderFeatures_.float16 || shaderFeatures_.int8) extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
+    // Its dependency, VK_KHR_maintenance3, is core in Vulkan 1.1.
+    if (shaderFeatures_.descriptorIndexing()) extensions.push_back(VK_EXT_DESCRIPTOR_INDEXING_EXTENSION_NAME);
     const ShaderFeatureChain features(shaderFeatures_);
     vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, extensions);
     deviceInfo.pNext = features.chain();

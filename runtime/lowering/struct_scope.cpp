@@ -1,0 +1,132 @@
+#include "struct_scope.hpp"
+
+#include "token_edit.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace iblkit::lowering {
+namespace {
+
+struct Hoisted {
+    size_t begin = 0, end = 0; // tokens [begin, end) of the member declaration, ";" included
+    std::vector<std::string> names;
+    std::string value; // a static member's initializer, as text: what its uses in the struct become
+};
+
+std::string textOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
+    std::string text;
+    for (size_t i = begin; i < end; ++i) text += (i == begin ? "" : " ") + tokens[i].text;
+    return text;
+}
+
+// "static const int N = 16 * 4;": the tokens of "16 * 4", or an empty range.
+std::pair<size_t, size_t> initializerOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+        if (tokens[i].is("=")) return {i + 1, end - 1};
+    return {end, end};
+}
+
+// The end of the member declaration that starts at `at` (after its ";" at the body's depth).
+size_t memberEnd(const std::vector<Token>& tokens, size_t at, size_t bodyClose) {
+    int depth = 0;
+    for (size_t i = at; i < bodyClose; ++i) {
+        if (tokens[i].is("(") || tokens[i].is("[") || tokens[i].is("{")) ++depth;
+        if (tokens[i].is(")") || tokens[i].is("]") || tokens[i].is("}")) --depth;
+        if (depth == 0 && tokens[i].is(";")) return i + 1;
+    }
+    return bodyClose;
+}
+
+// A static member with its value, or an enum: what the declaration at `at` names, or nothing.
+std::vector<std::string> hoistableNames(const std::vector<Token>& tokens, size_t at, size_t end) {
+    std::vector<std::string> names;
+    if (tokens[at].is("enum")) {
+        size_t i = at + 1;
+        if (tokens[i].is("class") || tokens[i].is("struct")) ++i;
+        if (tokens[i].isIdentifier()) names.push_back(tokens[i].text);
+        for (; i < end && !tokens[i].is("{"); ++i) {}
+        if (i >= end) return names;
+        const size_t close = matchingClose(tokens, i);
+        const bool scoped = tokens[at + 1].is("class") || tokens[at + 1].is("struct");
+        if (!scoped)
+            for (const auto& [first, last] : splitAtCommas(tokens, i + 1, close))
+                if (first < last && tokens[first].isIdentifier()) names.push_back(tokens[first].text);
+        return names;
+    }
+    bool isStatic = false;
+    size_t equals = end;
+    for (size_t i = at; i < end; ++i) {
+        if (tokens[i].is("static")) isStatic = true;
+        if (tokens[i].is("(") || tokens[i].is("{")) return {}; // a member function
+        if (tokens[i].is("=") && equals == end) equals = i;
+    }
+    if (!isStatic || equals == end) return {};
+    size_t name = equals - 1;
+    while (name > at && tokens[name].is("]")) name = name - 1; // an array's size: "X[4] = {...}"
+    while (name > at && !tokens[name].isIdentifier()) --name;
+    if (tokens[name].isIdentifier()) names.push_back(tokens[name].text);
+    return names;
+}
+
+} // namespace
+
+std::vector<Token> hoistStructScopeDeclarations(const std::vector<Token>& tokens) {
+    TokenWriter writer;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+        const bool structBody = (tokens[i].is("struct") || tokens[i].is("class")) && i + 2 < tokens.size() &&
+                                tokens[i + 1].isIdentifier() && tokens[i + 2].is("{") && !(i > 0 && tokens[i - 1].is("enum"));
+        if (!structBody) {
+            writer.keep(tokens[i]);
+            continue;
+        }
+        const std::string& structName = tokens[i + 1].text;
+        const size_t open = i + 2, close = matchingClose(tokens, open);
+        std::vector<Hoisted> hoisted;
+        for (size_t member = open + 1; member < close;) {
+            const size_t end = memberEnd(tokens, member, close);
+            auto names = hoistableNames(tokens, member, end);
+            if (!names.empty()) {
+                const auto [first, last] = initializerOf(tokens, member, end);
+                const bool scalar = !tokens[member].is("enum") && first < last && !tokens[first].is("{");
+                hoisted.push_back({member, end, std::move(names), scalar ? "(" + textOf(tokens, first, last) + ")" : ""});
+            }
+            member = end;
+        }
+        if (hoisted.empty()) {
+            writer.keep(tokens[i]);
+            continue;
+        }
+        // Inside the struct, a hoisted name is the namespace's; a static member with a value is its
+        // value, which glslang takes where it needs a constant (an array's size).
+        std::map<std::string, std::string> names;
+        for (const auto& h : hoisted)
+            for (const auto& name : h.names) names[name] = h.value.empty() ? structName + "::" + name : h.value;
+        const auto keepQualified = [&](size_t k) {
+            const Token& token = tokens[k];
+            const auto found = token.isIdentifier() ? names.find(token.text) : names.end();
+            if (found != names.end() && !followsMemberAccess(tokens, k) && !followsQualifier(tokens, k))
+                writer.replace(token, found->second);
+            else writer.keep(token);
+        };
+        writer.add("namespace " + structName + " {", tokens[i].place, tokens[i].leading);
+        // In the namespace, its names need no qualifier.
+        for (const auto& h : hoisted) writer.keep(TokenSpan(tokens).subspan(h.begin, h.end - h.begin));
+        writer.add("}", tokens[i].place);
+        writer.add(tokens[i].text, tokens[i].place);
+        size_t next = 0;
+        for (size_t k = i + 1; k <= close; ++k) {
+            if (next < hoisted.size() && k == hoisted[next].begin) {
+                writer.drop(TokenSpan(tokens).subspan(k, hoisted[next].end - k));
+                k = hoisted[next++].end - 1;
+                continue;
+            }
+            keepQualified(k);
+        }
+        i = close;
+    }
+    return writer.finish();
+}
+
+} // namespace iblkit::lowering
