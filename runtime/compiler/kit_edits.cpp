@@ -7,10 +7,11 @@ namespace iblkit::compiler {
 namespace {
 
 // The source edits are runtime/lowering's passes; the SPIR-V edits are the spirv_*.cpp files here.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 16> kKitEdits{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 17> kKitEdits{{
+    {"resource-locals", "a local variable holding a resource (ByteAddressBuffer b = Buffers[i];) is replaced by its value at each use, when nothing that value reads is assigned later in its block"},
     {"struct-scope-declarations", "a struct's static members with their values and its enums move to a namespace of the struct's name (S::Name, then S__Name)"},
     {"non-uniform-resource-index", "NonUniformResourceIndex(i) becomes (i), and every access into an array of resources at a run-time index is decorated NonUniform (conservative: glslang's SPIR-V no longer tells one index from another)"},
-    {"type-spellings", "vector<T, N> and matrix<T, R, C> of any scalar become TN and TRxC, and unsigned int becomes uint"},
+    {"type-spellings", "vector<T, N> and matrix<T, R, C> of any scalar become TN and TRxC, minimum-precision matrices (min16float3x3) half3x3, swizzled literals (1.xxxx) (1.0).xxxx, and unsigned int becomes uint"},
     {"unreachable-declarations", "functions the entry point never reaches, and declarations it never reaches that hold a feature glslang lacks (ray tracing in a shared header), are dropped, as DXC drops them"},
     {"select-and-or", "select, and and or become component-wise ?:, && and ||"},
     {"enums", "enums become a typedef of their underlying type and one constant per enumerator"},

@@ -5,6 +5,7 @@
 #include "namespaces.hpp"
 #include "non_uniform_index.hpp"
 #include "refusals.hpp"
+#include "resource_locals.hpp"
 #include "sixteen_bit.hpp"
 #include "struct_scope.hpp"
 #include "type_spellings.hpp"
@@ -49,6 +50,7 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "unreachable-declarations", edits,
                      [&](const auto& in) { return dropUnreachableUnsupported(in, entryPoint); });
     tokens = runPass(tokens, "non-uniform-resource-index", edits, lowerNonUniformResourceIndex);
+    tokens = runPass(tokens, "resource-locals", edits, inlineResourceLocals);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));

@@ -2,6 +2,7 @@
 
 #include "token_edit.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
@@ -13,6 +14,7 @@ struct Hoisted {
     size_t begin = 0, end = 0; // tokens [begin, end) of the member declaration, ";" included
     std::vector<std::string> names;
     std::string value; // a static member's initializer, as text: what its uses in the struct become
+    bool function = false; // a static member function: it goes after the struct, whose type it may use
 };
 
 std::string textOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
@@ -28,15 +30,30 @@ std::pair<size_t, size_t> initializerOf(const std::vector<Token>& tokens, size_t
     return {end, end};
 }
 
-// The end of the member declaration that starts at `at` (after its ";" at the body's depth).
+// The end of the member declaration that starts at `at`: after its ";" at the body's depth, or
+// after a member function's body.
 size_t memberEnd(const std::vector<Token>& tokens, size_t at, size_t bodyClose) {
     int depth = 0;
+    bool call = false;
     for (size_t i = at; i < bodyClose; ++i) {
+        if (tokens[i].is("(")) call = true;
         if (tokens[i].is("(") || tokens[i].is("[") || tokens[i].is("{")) ++depth;
         if (tokens[i].is(")") || tokens[i].is("]") || tokens[i].is("}")) --depth;
         if (depth == 0 && tokens[i].is(";")) return i + 1;
+        if (depth == 0 && call && tokens[i].is("}")) return tokens[i + 1].is(";") ? i + 2 : i + 1;
     }
     return bodyClose;
+}
+
+// A static member function's name, or "".
+std::string staticFunctionName(const std::vector<Token>& tokens, size_t at, size_t end) {
+    bool isStatic = false;
+    for (size_t i = at; i + 1 < end; ++i) {
+        if (tokens[i].is("static")) isStatic = true;
+        if (tokens[i].is("=") || tokens[i].is(";")) return "";
+        if (tokens[i + 1].is("(")) return isStatic && tokens[i].isIdentifier() && tokens[end - 1].is("}") ? tokens[i].text : "";
+    }
+    return "";
 }
 
 // A static member with its value, or an enum: what the declaration at `at` names, or nothing.
@@ -86,6 +103,11 @@ std::vector<Token> hoistStructScopeDeclarations(const std::vector<Token>& tokens
         std::vector<Hoisted> hoisted;
         for (size_t member = open + 1; member < close;) {
             const size_t end = memberEnd(tokens, member, close);
+            if (auto function = staticFunctionName(tokens, member, end); !function.empty()) {
+                hoisted.push_back({member, end, {function}, "", true});
+                member = end;
+                continue;
+            }
             auto names = hoistableNames(tokens, member, end);
             if (!names.empty()) {
                 const auto [first, last] = initializerOf(tokens, member, end);
@@ -110,11 +132,17 @@ std::vector<Token> hoistStructScopeDeclarations(const std::vector<Token>& tokens
                 writer.replace(token, found->second);
             else writer.keep(token);
         };
-        writer.add("namespace " + structName + " {", tokens[i].place, tokens[i].leading);
         // In the namespace, its names need no qualifier.
-        for (const auto& h : hoisted) writer.keep(TokenSpan(tokens).subspan(h.begin, h.end - h.begin));
-        writer.add("}", tokens[i].place);
-        writer.add(tokens[i].text, tokens[i].place);
+        const auto writeNamespace = [&](bool functions, const SourcePlace& place, std::string_view leading) {
+            writer.add("namespace " + structName + " {", place, leading);
+            for (const auto& h : hoisted)
+                if (h.function == functions) writer.keep(TokenSpan(tokens).subspan(h.begin, h.end - h.begin));
+            writer.add("}", place);
+        };
+        const bool anyFunction = std::any_of(hoisted.begin(), hoisted.end(), [](const Hoisted& h) { return h.function; });
+        const bool anyValue = std::any_of(hoisted.begin(), hoisted.end(), [](const Hoisted& h) { return !h.function; });
+        if (anyValue) writeNamespace(false, tokens[i].place, tokens[i].leading);
+        writer.add(tokens[i].text, tokens[i].place, anyValue ? " " : tokens[i].leading);
         size_t next = 0;
         for (size_t k = i + 1; k <= close; ++k) {
             if (next < hoisted.size() && k == hoisted[next].begin) {
@@ -125,6 +153,10 @@ std::vector<Token> hoistStructScopeDeclarations(const std::vector<Token>& tokens
             keepQualified(k);
         }
         i = close;
+        if (anyFunction) {
+            if (i + 1 < tokens.size() && tokens[i + 1].is(";")) writer.keep(tokens[++i]);
+            writeNamespace(true, tokens[close].place, " ");
+        }
     }
     return writer.finish();
 }

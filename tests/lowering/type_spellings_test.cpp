@@ -22,6 +22,18 @@ TEST(TypeSpellings, TemplatesOfOtherTypesAndMembersNamedVectorAreKept) {
     EXPECT_EQ(spelled(text), text);
 }
 
+TEST(TypeSpellings, MinimumPrecisionMatricesAreHalfMatrices) {
+    // glslang has min16float2 but no min16float3x3; half is min16float to it.
+    EXPECT_EQ(spelled("typedef min16float3x3 M; min10float2x4 a; min16float3 v;"), "typedef half3x3 M; half2x4 a; min16float3 v;");
+}
+
+TEST(TypeSpellings, SwizzledLiteralsAreParenthesizedFloats) {
+    EXPECT_EQ(spelled("float4 a = 1.xxxx; bool2 b = (i % 2.xx) == 0; float2 c = 0.5.rr; float d = 1.5e3;"),
+              "float4 a = (1.0).xxxx; bool2 b = (i % (2.0).xx) == 0; float2 c = (0.5).rr; float d = 1.5e3;");
+    // As glslang's preprocessor writes them.
+    EXPECT_EQ(spelled("float4 a = 1. xxxx; float2 b = 2. xy;"), "float4 a = (1.0).xxxx; float2 b = (2.0).xy;");
+}
+
 TEST(TypeSpellings, UnsignedIntIsUint) {
     EXPECT_EQ(spelled("static const unsigned int a = 1; unsigned b;"), "static const uint a = 1; uint b;");
 }

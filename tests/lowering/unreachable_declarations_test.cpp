@@ -52,6 +52,14 @@ TEST(UnreachableDeclarations, RayTracingTheEntryPointReachesIsRefused) {
     }
 }
 
+TEST(NonUniformResourceIndex, BecomesTheBareIndexUnlessTheShaderDefinesItsOwn) {
+    EXPECT_EQ(pruned("float4 main() : SV_Target { return T[NonUniformResourceIndex(i + 1)].Load(0); }"),
+              "float4 main() : SV_Target { return T[(i + 1)].Load(0); }");
+    const std::string own = "uint NonUniformResourceIndex(uint i) { return i; }\n"
+                            "float4 main() : SV_Target { return T[NonUniformResourceIndex(i)].Load(0); }";
+    EXPECT_EQ(pruned(own), own);
+}
+
 TEST(UnreachableDeclarations, WithoutTheEntryPointNothingIsDropped) {
     const std::string text = "float Unused(float x) { return x; }\n";
     EXPECT_EQ(pruned(text, "missing"), text);

@@ -1,0 +1,133 @@
+#include "resource_locals.hpp"
+
+#include "token_edit.hpp"
+
+#include <set>
+#include <string>
+
+namespace iblkit::lowering {
+namespace {
+
+bool isResourceType(const Token& token) {
+    static const std::set<std::string, std::less<>> kTypes{
+        "ByteAddressBuffer", "RWByteAddressBuffer", "StructuredBuffer", "RWStructuredBuffer", "Buffer", "RWBuffer",
+        "Texture1D", "Texture1DArray", "Texture2D", "Texture2DArray", "Texture2DMS", "Texture3D", "TextureCube",
+        "TextureCubeArray", "RWTexture1D", "RWTexture1DArray", "RWTexture2D", "RWTexture2DArray", "RWTexture3D",
+        "SamplerState", "SamplerComparisonState"};
+    return token.isIdentifier() && kTypes.contains(token.text);
+}
+
+bool isAssignment(const Token& token) {
+    static const std::set<std::string, std::less<>> kAssignments{"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>=", "++", "--"};
+    return token.kind == TokenKind::Punctuator && kAssignments.contains(token.text);
+}
+
+// Whether an identifier of tokens[begin, end) is assigned in tokens[from, to): an assignment or
+// increment in the expression that holds it (up to its ";", "," or ")" at its own depth).
+bool assignedLater(const std::vector<Token>& tokens, size_t begin, size_t end, size_t from, size_t to) {
+    std::set<std::string> read;
+    for (size_t i = begin; i < end; ++i)
+        if (tokens[i].isIdentifier()) read.insert(tokens[i].text);
+    for (size_t i = from; i < to; ++i) {
+        if (!tokens[i].isIdentifier() || !read.count(tokens[i].text)) continue;
+        if (i > 0 && isAssignment(tokens[i - 1])) return true;
+        int depth = 0;
+        for (size_t k = i + 1; k < to; ++k) {
+            if (tokens[k].is("(") || tokens[k].is("[")) ++depth;
+            if (tokens[k].is(")") || tokens[k].is("]")) --depth;
+            if (depth < 0 || (depth == 0 && (tokens[k].is(";") || tokens[k].is(",") || tokens[k].is("{")))) break;
+            if (depth == 0 && isAssignment(tokens[k])) return true;
+        }
+    }
+    return false;
+}
+
+// The index of the "}" that ends the block holding tokens[at].
+size_t blockEnd(const std::vector<Token>& tokens, size_t at) {
+    int depth = 0;
+    for (size_t i = at; i < tokens.size(); ++i) {
+        if (tokens[i].is("{")) ++depth;
+        if (tokens[i].is("}") && --depth < 0) return i;
+    }
+    return tokens.size() - 1;
+}
+
+struct Local {
+    size_t begin = 0, end = 0;      // the declaration, ";" included
+    size_t valueBegin = 0, valueEnd = 0;
+    std::string name;
+};
+
+// "[const] Type[<...>] name = value;" at i, inside a function's body.
+bool readLocal(const std::vector<Token>& tokens, size_t i, Local& local) {
+    size_t at = i;
+    if (tokens[at].is("const")) ++at;
+    if (!isResourceType(tokens[at])) return false;
+    ++at;
+    if (tokens[at].is("<")) {
+        int depth = 0;
+        for (; at < tokens.size(); ++at) {
+            if (tokens[at].is("<")) ++depth;
+            if (tokens[at].is(">") && --depth == 0) break;
+            if (tokens[at].is(";") || tokens[at].is("{")) return false;
+        }
+        ++at;
+    }
+    if (at + 2 >= tokens.size() || !tokens[at].isIdentifier() || !tokens[at + 1].is("=")) return false;
+    local = {i, 0, at + 2, 0, tokens[at].text};
+    int depth = 0;
+    for (size_t k = at + 2; k < tokens.size(); ++k) {
+        if (tokens[k].is("(") || tokens[k].is("[") || tokens[k].is("{")) ++depth;
+        if (tokens[k].is(")") || tokens[k].is("]") || tokens[k].is("}")) --depth;
+        if (depth < 0) return false;
+        if (depth == 0 && tokens[k].is(",")) return false; // several declarators: left to glslang
+        if (depth == 0 && tokens[k].is(";")) {
+            local.valueEnd = k;
+            local.end = k + 1;
+            return local.valueEnd > local.valueBegin;
+        }
+    }
+    return false;
+}
+
+std::string textOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
+    std::string text;
+    for (size_t i = begin; i < end; ++i) text += (i == begin ? "" : " ") + tokens[i].text;
+    return text;
+}
+
+} // namespace
+
+std::vector<Token> inlineResourceLocals(const std::vector<Token>& tokens) {
+    std::vector<Token> current = tokens;
+    // One local at a time, the text rewritten after each, so that a later local's value may name
+    // an earlier one.
+    for (bool changed = true; changed;) {
+        changed = false;
+        int depth = 0;
+        for (size_t i = 0; i < current.size() && !changed; ++i) {
+            if (current[i].is("{")) ++depth;
+            if (current[i].is("}")) --depth;
+            Local local;
+            const bool statementStart = i > 0 && (current[i - 1].is(";") || current[i - 1].is("{") || current[i - 1].is("}"));
+            if (depth == 0 || !statementStart || !readLocal(current, i, local)) continue;
+            const size_t end = blockEnd(current, local.end);
+            if (assignedLater(current, local.valueBegin, local.valueEnd, local.end, end)) continue;
+            const std::string value = "(" + textOf(current, local.valueBegin, local.valueEnd) + ")";
+            TokenWriter writer;
+            writer.keep(TokenSpan(current).subspan(0, local.begin));
+            writer.drop(TokenSpan(current).subspan(local.begin, local.end - local.begin));
+            for (size_t k = local.end; k < current.size(); ++k) {
+                const bool use = k < end && current[k].is(local.name) && current[k].isIdentifier() &&
+                                 !followsMemberAccess(current, k) && !followsQualifier(current, k);
+                if (use) writer.replace(current[k], value);
+                else writer.keep(current[k]);
+            }
+            current = writer.finish();
+            changed = true;
+        }
+    }
+    return current;
+}
+
+} // namespace iblkit::lowering

@@ -1,0 +1,30 @@
+// A local that holds a resource is its value at each use, unless what the value reads changes.
+#include "lowering.hpp"
+
+#include <gtest/gtest.h>
+
+namespace iblkit::lowering {
+namespace {
+
+std::string inlined(const std::string& text) { return lowerHlsl(text, "a.hlsl", HlslVersion::Hlsl2021).text; }
+
+TEST(ResourceLocals, EachUseNamesTheResourceTheLocalWasGiven) {
+    EXPECT_EQ(inlined("float f(uint i) { ByteAddressBuffer b = Buffers[i + 1]; return asfloat(b.Load(0)) + b.Load(4); }"),
+              "float f(uint i) { return asfloat((Buffers [ i + 1 ]).Load(0)) + (Buffers [ i + 1 ]).Load(4); }");
+    EXPECT_EQ(inlined("void f() { const StructuredBuffer<float> w = W; { x = w[0]; } }"), "void f() { { x = (W)[0]; } }");
+}
+
+TEST(ResourceLocals, AValueWhoseOperandsChangeLaterIsLeftToGlslang) {
+    for (const std::string text : {"void f(uint i) { ByteAddressBuffer b = Buffers[i]; i = 2; x = b.Load(0); }",
+                                   "void f(uint i) { ByteAddressBuffer b = Buffers[i]; i++; x = b.Load(0); }",
+                                   "void f(S s) { ByteAddressBuffer b = Buffers[s.index]; s.index = 1; x = b.Load(0); }"})
+        EXPECT_EQ(inlined(text), text);
+}
+
+TEST(ResourceLocals, GlobalResourcesAndOtherLocalsStay) {
+    const std::string text = "ByteAddressBuffer B : register(t0);\nvoid f() { float4 c = T.Load(0); uint n = B.Load(0); }";
+    EXPECT_EQ(inlined(text), text);
+}
+
+} // namespace
+} // namespace iblkit::lowering
