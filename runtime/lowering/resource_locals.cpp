@@ -1,7 +1,9 @@
 #include "resource_locals.hpp"
 
 #include "token_edit.hpp"
+#include "unsupported_features.hpp"
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -113,6 +115,10 @@ std::vector<Token> inlineResourceLocals(const std::vector<Token>& tokens) {
             if (depth == 0 || !statementStart || !readLocal(current, i, local)) continue;
             const size_t end = blockEnd(current, local.end);
             if (assignedLater(current, local.valueBegin, local.valueEnd, local.end, end)) continue;
+            // A value glslang cannot read (ResourceDescriptorHeap[i]) stays where its refusal names it.
+            const auto lacking = std::any_of(current.begin() + ptrdiff_t(local.valueBegin), current.begin() + ptrdiff_t(local.valueEnd),
+                                             [](const Token& token) { return token.isIdentifier() && glslangLacks(token.text); });
+            if (lacking) continue;
             const std::string value = "(" + textOf(current, local.valueBegin, local.valueEnd) + ")";
             TokenWriter writer;
             writer.keep(TokenSpan(current).subspan(0, local.begin));

@@ -21,6 +21,11 @@ TEST(ResourceLocals, AValueWhoseOperandsChangeLaterIsLeftToGlslang) {
         EXPECT_EQ(inlined(text), text);
 }
 
+TEST(ResourceLocals, AValueGlslangCannotReadStaysForItsRefusal) {
+    // Without this, an unused local's ResourceDescriptorHeap would vanish instead of being named.
+    EXPECT_THROW(inlined("void f() { RWBuffer<float> b = ResourceDescriptorHeap[0]; }"), std::exception);
+}
+
 TEST(ResourceLocals, GlobalResourcesAndOtherLocalsStay) {
     const std::string text = "ByteAddressBuffer B : register(t0);\nvoid f() { float4 c = T.Load(0); uint n = B.Load(0); }";
     EXPECT_EQ(inlined(text), text);
