@@ -79,8 +79,8 @@ bool readLocal(const std::vector<Token>& tokens, size_t i, Local& local) {
     local = {i, 0, at + 2, 0, tokens[at].text};
     int depth = 0;
     for (size_t k = at + 2; k < tokens.size(); ++k) {
-        if (tokens[k].is("(") || tokens[k].is("[") || tokens[k].is("{")) ++depth;
-        if (tokens[k].is(")") || tokens[k].is("]") || tokens[k].is("}")) --depth;
+        if (opensBracket(tokens[k])) ++depth;
+        if (closesBracket(tokens[k])) --depth;
         if (depth < 0) return false;
         if (depth == 0 && tokens[k].is(",")) return false; // several declarators: left to glslang
         if (depth == 0 && tokens[k].is(";")) {
@@ -90,12 +90,6 @@ bool readLocal(const std::vector<Token>& tokens, size_t i, Local& local) {
         }
     }
     return false;
-}
-
-std::string textOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
-    std::string text;
-    for (size_t i = begin; i < end; ++i) text += (i == begin ? "" : " ") + tokens[i].text;
-    return text;
 }
 
 } // namespace
@@ -119,7 +113,8 @@ std::vector<Token> inlineResourceLocals(const std::vector<Token>& tokens) {
             const auto lacking = std::any_of(current.begin() + ptrdiff_t(local.valueBegin), current.begin() + ptrdiff_t(local.valueEnd),
                                              [](const Token& token) { return token.isIdentifier() && glslangLacks(token.text); });
             if (lacking) continue;
-            const std::string value = "(" + textOf(current, local.valueBegin, local.valueEnd) + ")";
+            const auto valueTokens = TokenSpan(current).subspan(local.valueBegin, local.valueEnd - local.valueBegin);
+            const std::string value = "(" + spacedText(valueTokens) + ")";
             TokenWriter writer;
             writer.keep(TokenSpan(current).subspan(0, local.begin));
             writer.drop(TokenSpan(current).subspan(local.begin, local.end - local.begin));

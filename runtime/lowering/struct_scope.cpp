@@ -17,12 +17,6 @@ struct Hoisted {
     bool function = false; // a static member function: it goes after the struct, whose type it may use
 };
 
-std::string textOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
-    std::string text;
-    for (size_t i = begin; i < end; ++i) text += (i == begin ? "" : " ") + tokens[i].text;
-    return text;
-}
-
 // "static const int N = 16 * 4;": the tokens of "16 * 4", or an empty range.
 std::pair<size_t, size_t> initializerOf(const std::vector<Token>& tokens, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
@@ -37,8 +31,8 @@ size_t memberEnd(const std::vector<Token>& tokens, size_t at, size_t bodyClose) 
     bool call = false;
     for (size_t i = at; i < bodyClose; ++i) {
         if (tokens[i].is("(")) call = true;
-        if (tokens[i].is("(") || tokens[i].is("[") || tokens[i].is("{")) ++depth;
-        if (tokens[i].is(")") || tokens[i].is("]") || tokens[i].is("}")) --depth;
+        if (opensBracket(tokens[i])) ++depth;
+        if (closesBracket(tokens[i])) --depth;
         if (depth == 0 && tokens[i].is(";")) return i + 1;
         if (depth == 0 && call && tokens[i].is("}")) return tokens[i + 1].is(";") ? i + 2 : i + 1;
     }
@@ -112,7 +106,8 @@ std::vector<Token> hoistStructScopeDeclarations(const std::vector<Token>& tokens
             if (!names.empty()) {
                 const auto [first, last] = initializerOf(tokens, member, end);
                 const bool scalar = !tokens[member].is("enum") && first < last && !tokens[first].is("{");
-                hoisted.push_back({member, end, std::move(names), scalar ? "(" + textOf(tokens, first, last) + ")" : ""});
+                const std::string value = scalar ? "(" + spacedText(TokenSpan(tokens).subspan(first, last - first)) + ")" : "";
+                hoisted.push_back({member, end, std::move(names), value});
             }
             member = end;
         }

@@ -8,18 +8,24 @@
 namespace iblkit::lowering {
 namespace {
 
-bool opens(const Token& token) { return token.is("(") || token.is("[") || token.is("{"); }
-bool closes(const Token& token) { return token.is(")") || token.is("]") || token.is("}"); }
-
 std::string newlinesOf(std::string_view text) { return std::string(std::count(text.begin(), text.end(), '\n'), '\n'); }
 
 } // namespace
 
+bool opensBracket(const Token& token) { return token.is("(") || token.is("[") || token.is("{"); }
+bool closesBracket(const Token& token) { return token.is(")") || token.is("]") || token.is("}"); }
+
+std::string spacedText(TokenSpan tokens) {
+    std::string text;
+    for (const auto& token : tokens) text += (text.empty() ? "" : " ") + token.text;
+    return text;
+}
+
 size_t matchingClose(TokenSpan tokens, size_t open) {
     int depth = 0;
     for (size_t i = open; i < tokens.size(); ++i) {
-        if (opens(tokens[i])) ++depth;
-        if (closes(tokens[i]) && --depth == 0) return i;
+        if (opensBracket(tokens[i])) ++depth;
+        if (closesBracket(tokens[i]) && --depth == 0) return i;
     }
     refuse(tokens[open], "'" + tokens[open].text + "' is never closed");
 }
@@ -28,7 +34,7 @@ std::vector<std::pair<size_t, size_t>> splitAtCommas(TokenSpan tokens, size_t be
     std::vector<std::pair<size_t, size_t>> parts;
     size_t start = begin;
     for (size_t i = begin; i < end; ++i) {
-        if (opens(tokens[i])) i = matchingClose(tokens, i);
+        if (opensBracket(tokens[i])) i = matchingClose(tokens, i);
         else if (tokens[i].is(",")) {
             parts.emplace_back(start, i);
             start = i + 1;

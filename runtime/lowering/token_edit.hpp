@@ -10,6 +10,13 @@ namespace iblkit::lowering {
 
 using TokenSpan = std::span<const Token>;
 
+// "(", "[" or "{"; ")", "]" or "}".
+bool opensBracket(const Token& token);
+bool closesBracket(const Token& token);
+
+// The tokens' texts joined by single spaces: an expression to write again elsewhere.
+std::string spacedText(TokenSpan tokens);
+
 // The index of the bracket that closes the one at `open` ("(", "[" or "{"), or throws
 // LoweringError naming where the open one stands.
 size_t matchingClose(TokenSpan tokens, size_t open);

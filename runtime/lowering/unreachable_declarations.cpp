@@ -18,9 +18,6 @@ struct Declaration {
     bool function = false; // a definition with a body
 };
 
-bool opensBracket(const Token& token) { return token.is("(") || token.is("[") || token.is("{"); }
-bool closesBracket(const Token& token) { return token.is(")") || token.is("]") || token.is("}"); }
-
 // Where the top-level declaration that starts at `begin` ends: after its ";" at depth 0, or after
 // the "}" of its body (with the ";" or the declarators that follow a struct's).
 size_t declarationEnd(const std::vector<Token>& tokens, size_t begin) {

@@ -143,13 +143,16 @@ namespace {
 
 class CodeBaseReader {
 public:
-    CodeBaseReader(const fs::path& file, const fs::path& root) : file_(file), root_(root), fields_(file) {}
+    CodeBaseReader(const fs::path& file, const fs::path& folder, CodeBaseFolder kind)
+        : file_(file), root_(folder), kind_(kind), fields_(file) {}
 
     CodeBase read() {
         const json top = parse();
         fields_.objectOf(top, "the manifest", {"name", "repository", "commit", "description", "requires", "target",
                                                "include_dirs", "defines", "flags", "generated_files", "force_includes", "configurations"});
-        CodeBase codeBase{file_, root_, required(top, "name"), required(top, "repository"), required(top, "commit"),
+        const auto name = required(top, "name");
+        if (kind_ == CodeBaseFolder::HoldsCodeBasesByName) root_ /= name;
+        CodeBase codeBase{file_, root_, name, required(top, "repository"), required(top, "commit"),
                           top.contains("description") ? fields_.text(top["description"], "description") : "", {}, {}};
         if (top.contains("requires")) readRequirements(top["requires"], codeBase);
         defaults_ = sharedSettings(top, "");
@@ -279,6 +282,7 @@ private:
     }
 
     fs::path file_, root_;
+    CodeBaseFolder kind_;
     run::JsonFields fields_;
     Settings defaults_;
     std::map<std::string, std::string> generatedFiles_;
@@ -289,13 +293,6 @@ private:
 } // namespace
 
 namespace {
-
-std::vector<std::string> listLineWords(const std::string& line) {
-    std::istringstream stream(line.substr(0, line.find('#')));
-    std::vector<std::string> parts;
-    for (std::string part; stream >> part;) parts.push_back(part);
-    return parts;
-}
 
 // "-DNAME=V", "-D NAME", "-I DIR", "-IDIR", or a flag with the arguments that follow it.
 void applyListArguments(const std::vector<std::string>& parts, const fs::path& folder, CodeBaseConfiguration& configuration,
@@ -334,7 +331,7 @@ CodeBase readEntryList(const fs::path& listFile, const fs::path& folder) {
     std::string line;
     for (size_t number = 1; std::getline(stream, line); ++number) {
         const auto where = listFile.string() + ":" + std::to_string(number);
-        const auto parts = listLineWords(line);
+        const auto parts = words(line.substr(0, line.find('#')));
         if (parts.empty()) continue;
         if (parts.size() < 3) throw PortingError(where + ": error: a line is FILE ENTRY PROFILE [-D NAME=VALUE] [-I DIR] [flags]");
         const auto profile = parseShaderProfile(parts[2]);
@@ -359,9 +356,9 @@ CodeBase readEntryList(const fs::path& listFile, const fs::path& folder) {
     return codeBase;
 }
 
-CodeBase readCodeBaseManifest(const fs::path& manifestFile, const fs::path& root) {
+CodeBase readCodeBaseManifest(const fs::path& manifestFile, const fs::path& folder, CodeBaseFolder kind) {
     try {
-        return CodeBaseReader(manifestFile, root).read();
+        return CodeBaseReader(manifestFile, folder, kind).read();
     } catch (const run::RunError& error) { // JsonFields' words, naming the file and the key
         throw PortingError(error.what());
     }

@@ -55,9 +55,15 @@ struct CodeBase {
     std::vector<CodeBaseConfiguration> configurations;
 };
 
-// Reads a code base's manifest. Paths are relative to `root`; one that starts with "@OTHER/" to
-// OTHER's root, the folder named OTHER beside `root`. Throws PortingError naming the file and key.
-CodeBase readCodeBaseManifest(const std::filesystem::path& manifestFile, const std::filesystem::path& root);
+// Whether a folder is the code base itself (--source) or holds code bases in folders of their
+// names (--sources).
+enum class CodeBaseFolder { IsTheCodeBase, HoldsCodeBasesByName };
+
+// Reads a code base's manifest. Paths are relative to its root (`folder`, or `folder`/NAME); one
+// that starts with "@OTHER/" to OTHER's root, the folder named OTHER beside it. Throws
+// PortingError naming the file and key.
+CodeBase readCodeBaseManifest(const std::filesystem::path& manifestFile, const std::filesystem::path& folder,
+                              CodeBaseFolder kind = CodeBaseFolder::IsTheCodeBase);
 
 // A folder and a list of its shaders, one a line: "FILE ENTRY PROFILE [-D NAME[=VALUE]] [-I DIR]
 // [flags...]", '#' starting a comment, paths relative to `folder`: a code base without a manifest.

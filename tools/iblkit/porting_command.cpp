@@ -45,12 +45,11 @@ std::vector<porting::CodeBase> codeBasesOf(const PortingArguments& arguments) {
     if (!arguments.source.empty() && arguments.manifests.size() > 1)
         throw Error(ErrorKind::BadInput, "error: --source names one code base's folder: with several manifests, use --sources");
     std::vector<porting::CodeBase> codeBases;
-    for (const auto& manifest : arguments.manifests) {
-        // The name is read first, to find its folder under --sources.
-        const auto probe = porting::readCodeBaseManifest(manifest, arguments.source.empty() ? fs::path(arguments.sources) : fs::path(arguments.source));
-        codeBases.push_back(arguments.source.empty() ? porting::readCodeBaseManifest(manifest, fs::path(arguments.sources) / probe.name)
-                                                     : probe);
-    }
+    const bool byName = arguments.source.empty();
+    for (const auto& manifest : arguments.manifests)
+        codeBases.push_back(porting::readCodeBaseManifest(
+            manifest, byName ? arguments.sources : arguments.source,
+            byName ? porting::CodeBaseFolder::HoldsCodeBasesByName : porting::CodeBaseFolder::IsTheCodeBase));
     for (const auto& codeBase : codeBases)
         if (!fs::is_directory(codeBase.root))
             throw Error(ErrorKind::BadInput, "error: " + codeBase.root.string() + ": no such folder: the code base " +
