@@ -7,6 +7,8 @@
 #include "spirv_image_format.hpp"
 #include "spirv_module.hpp"
 #include "spirv_glslang_repairs.hpp"
+#include "spirv_operand_repairs.hpp"
+#include "spirv_semantic_builtins.hpp"
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
@@ -51,10 +53,14 @@ CompiledShader compileShader(const CompileOptions& options) {
     // Repairs of what glslang writes invalid come before legalization, which validates.
     SpirvModule raw(frontend.spirv);
     if (matchAtomicValueTypes(raw)) shader.kitEdits.emplace_back("atomic-value-types");
+    if (semanticsAsBuiltIns(raw)) shader.kitEdits.emplace_back("semantic-built-ins");
+    if (flattenedArrayLocations(raw)) shader.kitEdits.emplace_back("flattened-array-locations");
     if (decorateFragmentIntegerInputsFlat(raw)) shader.kitEdits.emplace_back("flat-integer-inputs");
+    if (logicalOperationsOnBooleans(raw)) shader.kitEdits.emplace_back("boolean-logic");
     // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
     SpirvModule module(legalizeHlslSpirv(raw.words(), shader.sourceName));
     applyImageFormats(module, imageFormats, shader.sourceName);
+    if (constantImageOffsets(module)) shader.kitEdits.emplace_back("constant-image-offsets");
     if (widenStorageImageWrites(module)) shader.kitEdits.emplace_back("texel-widening");
     if (makeWavePrefixScansExclusive(module)) shader.kitEdits.emplace_back("exclusive-wave-scans");
     if (decorateStorageImageAccess(module)) shader.kitEdits.emplace_back("image-access-qualifiers");

@@ -174,10 +174,11 @@ bool usesSixteenBitTypes(const spirv_cross::Compiler& compiler) {
     return declares(compiler, spv::CapabilityFloat16) || declares(compiler, spv::CapabilityInt16);
 }
 
-// The lowest shader model that has what the module uses: 16-bit types need 6.2, wave
-// operations and 64-bit integers 6.0, register spaces and bindless resources 5.1.
+// The lowest shader model that has what the module uses: 16-bit types need 6.2, SV_ViewID 6.1,
+// wave operations and 64-bit integers 6.0, register spaces and bindless resources 5.1.
 uint32_t lowestShaderModel(const spirv_cross::Compiler& compiler, bool usesSpaces) {
     if (usesSixteenBitTypes(compiler)) return 62;
+    if (declares(compiler, spv::CapabilityMultiView)) return 61;
     if (usesWaveOperations(compiler) || declares(compiler, spv::CapabilityInt64)) return 60;
     // NonUniformResourceIndex and unbounded arrays of resources are 5.1's.
     const bool bindless = declares(compiler, spv::CapabilityShaderNonUniform) || declares(compiler, spv::CapabilityRuntimeDescriptorArray);

@@ -35,11 +35,13 @@ EShMessages messagesFor(const CompileOptions& options) {
 }
 
 // Lowered text was preprocessed already: its macros are expanded, and their defines must not
-// apply twice; the default matrix packing applies either way.
+// apply twice; the default matrix packing applies either way. Each define replaces a macro
+// glslang predefines (VULKAN, for a Vulkan target), as a command line's -D does.
 std::string preambleOf(const CompileOptions& options, bool preprocessed) {
     std::string preamble = options.rowMajorByDefault ? "#pragma pack_matrix(row_major)\n" : "";
     if (!preprocessed)
-        for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
+        for (const auto& [name, value] : options.defines)
+            preamble += "#undef " + name + "\n#define " + name + " " + value + "\n";
     return preamble;
 }
 
@@ -71,6 +73,9 @@ struct ConfiguredShader {
         shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
         shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
         shader.setHlslIoMapping(true);
+        // Each varying's semantic as a UserSemantic decoration, for system values glslang does not
+        // know (spirv_semantic_builtins.hpp); legalization strips the decorations.
+        shader.setEnvTargetHlslFunctionality1();
     }
 
     glslang::TShader shader;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace iblkit::compiler {
 namespace {
@@ -64,13 +65,45 @@ int lineOfInclude(const std::string& includerText, const std::string& headerName
     return 1;
 }
 
+bool isContinuation(const std::string& text, size_t at) {
+    return text[at] == '\\' && (text.compare(at + 1, 1, "\n") == 0 || text.compare(at + 1, 2, "\r\n") == 0);
+}
+
+// Lines ended by a backslash joined before glslang reads them, as a C preprocessor's second phase
+// does: glslang's own splicing loses a macro whose name is followed by one ("#define RS\" then
+// "[RootSignature(...)]" on the next lines). Outside a string literal the join keeps the tokens
+// apart with a space, except before "(", where "#define F\" + "(x)" is a function-like macro.
+// The joined lines' newlines follow the logical line, so every later line keeps its number.
+std::string withContinuationsJoined(const std::string& text) {
+    if (text.find("\\\n") == std::string::npos && text.find("\\\r\n") == std::string::npos) return text;
+    std::string joined;
+    joined.reserve(text.size());
+    size_t pendingNewlines = 0;
+    bool inString = false;
+    for (size_t at = 0; at < text.size(); ++at) {
+        if (isContinuation(text, at)) {
+            at += text[at + 1] == '\r' ? 2 : 1;
+            ++pendingNewlines;
+            const bool beforeParenthesis = at + 1 < text.size() && text[at + 1] == '(';
+            if (!inString && !beforeParenthesis) joined += ' ';
+            continue;
+        }
+        const char c = text[at];
+        if (c == '"' && (at == 0 || text[at - 1] != '\\')) inString = !inString;
+        if (c == '\n') inString = false;
+        joined += c;
+        if (c == '\n') joined.append(std::exchange(pendingNewlines, 0), '\n');
+    }
+    return joined;
+}
+
 } // namespace
 
 std::string asGlslangReadsIt(std::string text) {
     constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
     if (text.rfind(kByteOrderMark, 0) == 0) text.erase(0, kByteOrderMark.size());
     if (!text.empty() && text.back() != '\n') text += '\n';
-    return text;
+    return withContinuationsJoined(text);
 }
 
 IncludeResolver::IncludeResolver(std::vector<std::filesystem::path> includeDirs,

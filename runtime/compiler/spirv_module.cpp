@@ -195,6 +195,15 @@ void SpirvModule::requireCapability(uint32_t capability) {
     instructions_.insert(instructions_.begin(), SpirvInstruction{spv::OpCapability, {capability}});
 }
 
+bool SpirvModule::dropCapability(uint32_t capability) {
+    const auto declared = std::find_if(instructions_.begin(), instructions_.end(), [&](const SpirvInstruction& instruction) {
+        return instruction.opcode == spv::OpCapability && instruction.operands[0] == capability;
+    });
+    if (declared == instructions_.end()) return false;
+    instructions_.erase(declared);
+    return true;
+}
+
 void SpirvModule::requireExtension(const std::string& name) {
     // A literal string: its bytes, NUL-terminated, packed little-endian into words.
     std::vector<uint32_t> words((name.size() + 4) / 4, 0);

@@ -43,6 +43,8 @@ public:
     // Gives variable the new pointer type and its loads the new image type.
     void retypeVariable(uint32_t variable, uint32_t newPointer, uint32_t oldImage, uint32_t newImage);
     void requireCapability(uint32_t capability);
+    // Removes the capability's declaration; returns whether there was one.
+    bool dropCapability(uint32_t capability);
     void requireExtension(const std::string& name);
 
     // For passes that walk the functions: the instructions in order, an insertion before one of

@@ -36,14 +36,16 @@ struct MessageCollector {
 };
 
 std::vector<uint32_t> runPasses(spvtools::Optimizer& optimizer, const std::vector<uint32_t>& spirv,
-                                const std::string& sourceName, const char* what) {
+                                const std::string& sourceName, const char* what, bool validateInput = true) {
     MessageCollector messages;
     optimizer.SetMessageConsumer(
         [&](spv_message_level_t level, const char* source, const spv_position_t& position, const char* message) {
             messages(level, source, position, message);
         });
     std::vector<uint32_t> result;
-    if (!optimizer.Run(spirv.data(), spirv.size(), &result))
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(validateInput);
+    if (!optimizer.Run(spirv.data(), spirv.size(), &result, options))
         throw CompileError(sourceName + ": error: SPIR-V " + what + " failed: " + messages.text);
     return result;
 }
@@ -58,24 +60,24 @@ void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& source
         [&](spv_message_level_t level, const char* source, const spv_position_t& position, const char* message) {
             messages(level, source, position, message);
         });
-    if (!tools.Validate(spirv))
-        throw CompileError(sourceName + ": error: the SPIR-V is not valid for " + (vulkan ? "Vulkan 1.1" : "OpenGL 4.5") +
-                           ": " + messages.text);
+    if (tools.Validate(spirv)) return;
+    // glslang keeps an HLSL integer matrix as one, which SPIR-V has no type for.
+    if (messages.text.find("Matrix types can only be parameterized with floating-point types") != std::string::npos)
+        throw CompileError(sourceName + ": error: an integer matrix (uint4x4, int3x3, ...) has no SPIR-V type for Vulkan, "
+                                        "and glslang keeps it as one: hold its rows in vectors (uint4 rows[4]) and "
+                                        "convert them row by row (asfloat(rows[i])) (" + messages.text + ")");
+    throw CompileError(sourceName + ": error: the SPIR-V is not valid for " + (vulkan ? "Vulkan 1.1" : "OpenGL 4.5") + ": " +
+                       messages.text);
 }
 
 std::vector<uint32_t> legalizeHlslSpirv(const std::vector<uint32_t>& spirv, const std::string& sourceName) {
     spvtools::Optimizer optimizer(kEnvironment);
     optimizer.RegisterLegalizationPasses();
-    try {
-        return runPasses(optimizer, spirv, sourceName, "legalization");
-    } catch (const CompileError& error) {
-        // glslang keeps an HLSL integer matrix as one, which SPIR-V has no type for.
-        const std::string message = error.what();
-        if (message.find("Matrix types can only be parameterized with floating-point types") == std::string::npos) throw;
-        throw CompileError(sourceName + ": error: an integer matrix (uint4x4, int3x3, ...) has no SPIR-V type for Vulkan, "
-                                        "and glslang keeps it as one: hold its rows in vectors (uint4 rows[4]) and "
-                                        "convert them row by row (asfloat(rows[i])) (" + message.substr(message.find("SPIR-V")) + ")");
-    }
+    optimizer.RegisterPass(spvtools::CreateStripReflectInfoPass()); // hlsl_functionality1's semantics
+    // glslang's HLSL output is legal only once legalized (a buffer passed to a function is a
+    // pointer of the wrong storage class until inlining removes the call), so, as glslang's own
+    // legalization does, the input is not validated; the legalized module is (validateSpirv).
+    return runPasses(optimizer, spirv, sourceName, "legalization", false);
 }
 
 std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level,

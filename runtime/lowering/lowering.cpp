@@ -1,8 +1,10 @@
 #include "lowering.hpp"
 
+#include "builtin_structs.hpp"
 #include "enums.hpp"
 #include "intrinsics.hpp"
 #include "namespaces.hpp"
+#include "partial_texel_writes.hpp"
 #include "non_uniform_index.hpp"
 #include "refusals.hpp"
 #include "resource_locals.hpp"
@@ -49,8 +51,10 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "namespaces", edits, lowerNamespaces);
     tokens = runPass(tokens, "unreachable-declarations", edits,
                      [&](const auto& in) { return dropUnreachableUnsupported(in, entryPoint); });
+    tokens = runPass(tokens, "builtin-structs", edits, declareBuiltinStructs);
     tokens = runPass(tokens, "non-uniform-resource-index", edits, lowerNonUniformResourceIndex);
     tokens = runPass(tokens, "resource-locals", edits, inlineResourceLocals);
+    tokens = runPass(tokens, "partial-texel-writes", edits, lowerPartialTexelWrites);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));

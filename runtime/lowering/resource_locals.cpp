@@ -24,22 +24,50 @@ bool isAssignment(const Token& token) {
     return token.kind == TokenKind::Punctuator && kAssignments.contains(token.text);
 }
 
-// Whether an identifier of tokens[begin, end) is assigned in tokens[from, to): an assignment or
-// increment in the expression that holds it (up to its ";", "," or ")" at its own depth).
+using MemberPath = std::vector<std::string>;
+
+// The name at tokens[i] with the members it selects: gs.geometry.indexBufferIndex.
+MemberPath memberPath(const std::vector<Token>& tokens, size_t i) {
+    MemberPath path{tokens[i].text};
+    while (i + 2 < tokens.size() && tokens[i + 1].is(".") && tokens[i + 2].isIdentifier()) {
+        path.push_back(tokens[i + 2].text);
+        i += 2;
+    }
+    return path;
+}
+
+// Whether writing one path can change the other: one is the other or holds it.
+bool overlap(const MemberPath& a, const MemberPath& b) {
+    const size_t common = std::min(a.size(), b.size());
+    return std::equal(a.begin(), a.begin() + ptrdiff_t(common), b.begin());
+}
+
+// Whether the target at tokens[i] is assigned: an assignment or increment in the expression
+// that holds it (up to its ";", "," or ")" at its own depth).
+bool assignedAt(const std::vector<Token>& tokens, size_t i, size_t to) {
+    if (i > 0 && (tokens[i - 1].is("++") || tokens[i - 1].is("--"))) return true;
+    int depth = 0;
+    for (size_t k = i + 1; k < to; ++k) {
+        if (tokens[k].is("(") || tokens[k].is("[")) ++depth;
+        if (tokens[k].is(")") || tokens[k].is("]")) --depth;
+        if (depth < 0 || (depth == 0 && (tokens[k].is(";") || tokens[k].is(",") || tokens[k].is("{")))) break;
+        if (depth == 0 && isAssignment(tokens[k])) return true;
+    }
+    return false;
+}
+
+// Whether what tokens[begin, end) reads is assigned in tokens[from, to): a variable, or a member
+// of it that holds or is held by a member read (gs.vertexPositions[0] = ... leaves
+// gs.geometry.indexBufferIndex as it was).
 bool assignedLater(const std::vector<Token>& tokens, size_t begin, size_t end, size_t from, size_t to) {
-    std::set<std::string> read;
+    std::vector<MemberPath> read;
     for (size_t i = begin; i < end; ++i)
-        if (tokens[i].isIdentifier()) read.insert(tokens[i].text);
+        if (tokens[i].isIdentifier() && !followsMemberAccess(tokens, i)) read.push_back(memberPath(tokens, i));
     for (size_t i = from; i < to; ++i) {
-        if (!tokens[i].isIdentifier() || !read.count(tokens[i].text)) continue;
-        if (i > 0 && isAssignment(tokens[i - 1])) return true;
-        int depth = 0;
-        for (size_t k = i + 1; k < to; ++k) {
-            if (tokens[k].is("(") || tokens[k].is("[")) ++depth;
-            if (tokens[k].is(")") || tokens[k].is("]")) --depth;
-            if (depth < 0 || (depth == 0 && (tokens[k].is(";") || tokens[k].is(",") || tokens[k].is("{")))) break;
-            if (depth == 0 && isAssignment(tokens[k])) return true;
-        }
+        if (!tokens[i].isIdentifier() || followsMemberAccess(tokens, i)) continue;
+        const MemberPath written = memberPath(tokens, i);
+        const bool readsIt = std::any_of(read.begin(), read.end(), [&](const MemberPath& path) { return overlap(path, written); });
+        if (readsIt && assignedAt(tokens, i, to)) return true;
     }
     return false;
 }
@@ -92,6 +120,15 @@ bool readLocal(const std::vector<Token>& tokens, size_t i, Local& local) {
     return false;
 }
 
+// `Buffers[i]` or `Textures[a][b]`: a name and its indices, which binds as tightly as a name does
+// and needs no parentheses where it is written (partial texel writes read it as a resource).
+bool isPostfixName(TokenSpan value) {
+    if (value.empty() || !value[0].isIdentifier()) return false;
+    size_t at = 1;
+    while (at < value.size() && value[at].is("[")) at = matchingClose(value, at) + 1;
+    return at == value.size();
+}
+
 } // namespace
 
 std::vector<Token> inlineResourceLocals(const std::vector<Token>& tokens) {
@@ -114,7 +151,7 @@ std::vector<Token> inlineResourceLocals(const std::vector<Token>& tokens) {
                                              [](const Token& token) { return token.isIdentifier() && glslangLacks(token.text); });
             if (lacking) continue;
             const auto valueTokens = TokenSpan(current).subspan(local.valueBegin, local.valueEnd - local.valueBegin);
-            const std::string value = "(" + spacedText(valueTokens) + ")";
+            const std::string value = isPostfixName(valueTokens) ? spacedText(valueTokens) : "(" + spacedText(valueTokens) + ")";
             TokenWriter writer;
             writer.keep(TokenSpan(current).subspan(0, local.begin));
             writer.drop(TokenSpan(current).subspan(local.begin, local.end - local.begin));

@@ -29,11 +29,11 @@ bool isSixtyFourBitTypeGlslangLacks(std::string_view name) {
     return false;
 }
 
-// What glslang lacks, named: its message, and whether it is an intrinsic, which a shader may
-// define itself (a polyfill for older compilers).
+// What glslang lacks, named: its message, and whether a shader may define it itself (an
+// intrinsic's polyfill for older compilers).
 struct Lack {
     std::string message; // "" for a name glslang has
-    bool intrinsic = false;
+    bool definable = false;
 };
 
 Lack lackOf(const std::string& name) {
@@ -61,9 +61,10 @@ Lack lackOf(const std::string& name) {
     return {};
 }
 
-// Whether tokens[i] names a function the shader defines: a type before it, its parameter list,
-// then its body (or a semantic).
-bool definesFunction(const std::vector<Token>& tokens, size_t i) {
+// Whether tokens[i] names a struct the shader defines, or a function: a type before it, its
+// parameter list, then its body (or a semantic).
+bool definesStructOrFunction(const std::vector<Token>& tokens, size_t i) {
+    if (i > 0 && tokens[i - 1].is("struct")) return true;
     if (i == 0 || i + 1 >= tokens.size() || !tokens[i + 1].is("(")) return false;
     const Token& before = tokens[i - 1];
     if (!before.isIdentifier() || !isTypeLike(before)) return false;
@@ -92,11 +93,12 @@ void refuseUnsupportedFeatures(const std::vector<Token>& tokens) {
     refuseLiteralCastsToUint64(tokens);
     std::set<std::string, std::less<>> defined;
     for (size_t i = 0; i < tokens.size(); ++i)
-        if (tokens[i].isIdentifier() && lackOf(tokens[i].text).intrinsic && definesFunction(tokens, i)) defined.insert(tokens[i].text);
+        if (tokens[i].isIdentifier() && lackOf(tokens[i].text).definable && definesStructOrFunction(tokens, i))
+            defined.insert(tokens[i].text);
     for (size_t i = 0; i < tokens.size(); ++i) {
         if (!tokens[i].isIdentifier() || followsMemberAccess(tokens, i)) continue;
         const auto lack = lackOf(tokens[i].text);
-        if (!lack.message.empty() && !(lack.intrinsic && defined.contains(tokens[i].text))) refuse(tokens[i], lack.message);
+        if (!lack.message.empty() && !(lack.definable && defined.contains(tokens[i].text))) refuse(tokens[i], lack.message);
     }
 }
 
