@@ -9,6 +9,7 @@
 #include "spirv_glslang_repairs.hpp"
 #include "spirv_operand_repairs.hpp"
 #include "spirv_semantic_builtins.hpp"
+#include "spirv_cbuffer_layout.hpp"
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
@@ -59,6 +60,7 @@ CompiledShader compileShader(const CompileOptions& options) {
     if (logicalOperationsOnBooleans(raw)) shader.kitEdits.emplace_back("boolean-logic");
     // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
     SpirvModule module(legalizeHlslSpirv(raw.words(), shader.sourceName));
+    refuseUnportableConstantBufferPacking(module, frontend.packedMembers, shader.sourceName);
     applyImageFormats(module, imageFormats, shader.sourceName);
     if (constantImageOffsets(module)) shader.kitEdits.emplace_back("constant-image-offsets");
     if (widenStorageImageWrites(module)) shader.kitEdits.emplace_back("texel-widening");

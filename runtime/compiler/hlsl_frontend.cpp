@@ -2,6 +2,7 @@
 
 #include "compile_error.hpp"
 #include "diagnostics.hpp"
+#include "frontend_refusals.hpp"
 #include "glslang_process.hpp"
 #include "hlsl_register_resolver.hpp"
 #include "bounded_child.hpp"
@@ -55,7 +56,7 @@ std::string preambleOf(const CompileOptions& options, bool preprocessed) {
     if (diagnostics.errors.empty()) throw CompileError(sourceName + ": error: " + fallback);
     const auto located = std::find_if(diagnostics.errors.begin(), diagnostics.errors.end(),
                                       [](const std::string& error) { return error.rfind("0:0:", 0) != 0; });
-    throw CompileError(located != diagnostics.errors.end() ? *located : diagnostics.errors.front());
+    throw CompileError(inKitWords(located != diagnostics.errors.end() ? *located : diagnostics.errors.front()));
 }
 
 // One TShader configured the same way for the preprocessing pass and the real parse.
@@ -217,13 +218,14 @@ FrontendResult compileHlsl(const CompileOptions& options) {
     if (!mapped) failWith(program.getInfoLog(), includes, sourceName, "resource binding failed");
 
     FrontendResult result{{}, stage, resolver.registers(), includes.includedFiles(), {},
-                          attributeImageFormats(lowered.vulkan, sourceName), {}, {}};
+                          attributeImageFormats(lowered.vulkan, sourceName), {}, {}, {}};
     glslang::SpvOptions spvOptions;
     spvOptions.disableOptimizer = true;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, result.spirv, &logger, &spvOptions);
     result.warnings = lowered.warnings;
     result.kitEdits = lowered.edits;
+    result.packedMembers = lowered.packedMembers;
     result.bindingShifts = resolver.shifts();
     for (auto& warning : parseGlslangLog(configured.shader.getInfoLog(), includes, sourceName).warnings)
         result.warnings.push_back(std::move(warning));

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct FrontendResult {
     std::map<std::string, std::string> imageFormats; // from [[vk::image_format]], by resource name
     std::vector<std::string> kitEdits;               // what the lowering changed (lowering.hpp)
     BindingShifts bindingShifts;                     // the options', or the defaults grown to fit
+    std::set<std::string> packedMembers;             // cbuffer members placed by packoffset
 };
 
 // HLSL -> SPIR-V (Vulkan 1.1, SPIR-V 1.3) with glslang's HLSL frontend: the preprocessor

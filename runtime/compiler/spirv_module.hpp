@@ -51,6 +51,7 @@ public:
     // them, a fresh id.
     size_t size() const { return instructions_.size(); }
     SpirvInstruction& instruction(size_t index) { return instructions_[index]; }
+    const SpirvInstruction& instruction(size_t index) const { return instructions_[index]; }
     void insertBefore(size_t index, SpirvInstruction instruction);
     // The index after the last name or decoration: where a new decoration goes.
     size_t afterLastAnnotation() const;

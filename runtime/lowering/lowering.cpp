@@ -10,6 +10,7 @@
 #include "resource_locals.hpp"
 #include "sixteen_bit.hpp"
 #include "struct_scope.hpp"
+#include "templates.hpp"
 #include "type_spellings.hpp"
 #include "unreachable_declarations.hpp"
 #include "unsupported_features.hpp"
@@ -44,7 +45,11 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
         return lowerSixteenBitTypes(in, enable16BitTypes, lowered.warnings);
     });
     tokens = runPass(tokens, "struct-scope-declarations", edits, hoistStructScopeDeclarations);
-    if (version == HlslVersion::Hlsl2021) refuseUnlowerable(tokens);
+    if (version == HlslVersion::Hlsl2021) {
+        tokens = runPass(tokens, "templates", edits, [&](const auto& in) { return lowerTemplates(in, enable16BitTypes); });
+        tokens = lowerTypeSpellings(tokens); // vector<T, N> of an instance, its T now a scalar
+        refuseUnlowerable(tokens);
+    }
     // Enums and namespaces are older than HLSL 2021 (DXC takes them under -HV 2018); select, and
     // and or are 2021's, and in older code the names are a shader's own to use.
     tokens = runPass(tokens, "enums", edits, lowerEnums);
@@ -55,8 +60,11 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "non-uniform-resource-index", edits, lowerNonUniformResourceIndex);
     tokens = runPass(tokens, "resource-locals", edits, inlineResourceLocals);
     tokens = runPass(tokens, "partial-texel-writes", edits, lowerPartialTexelWrites);
+    tokens = runPass(tokens, "storage-load-coordinates", edits, convertStorageLoadCoordinates);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
+    for (size_t i = 0; i + 2 < tokens.size(); ++i)
+        if (tokens[i].isIdentifier() && tokens[i + 1].is(":") && tokens[i + 2].is("packoffset")) lowered.packedMembers.insert(tokens[i].text);
     lowered.text = render(readVulkanAttributes(tokens, lowered.vulkan));
     if (!lowered.vulkan.bindings.empty()) edits.emplace_back("vk-binding");
     if (!lowered.vulkan.imageFormats.empty()) edits.emplace_back("vk-image-format");

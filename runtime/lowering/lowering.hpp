@@ -2,6 +2,7 @@
 
 #include "vulkan_attributes.hpp"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct LoweredSource {
     VulkanAttributes vulkan;
     std::vector<std::string> warnings; // one line each: attributes not honoured, minimum precision at 32 bits
     std::vector<std::string> edits;    // what was lowered, by id ("select-and-or", "enums", ...): kit_edits.hpp
+    std::set<std::string> packedMembers; // the names declared with ": packoffset(...)"
 };
 
 // HLSL as DXC reads it -> HLSL as glslang's frontend reads it, on the tokens of the

@@ -128,13 +128,12 @@ std::string readModifyWrite(const std::vector<Token>& tokens, const PartialWrite
            resource + " = " + value + " ; }";
 }
 
-} // namespace
-
-std::vector<Token> lowerPartialTexelWrites(const std::vector<Token>& tokens) {
-    std::map<std::string, StorageTexels> declared; // the latest declaration of each name so far
-    std::map<size_t, size_t> declarationNames;     // index of a declared name -> its type's index
-    TokenWriter writer;
-    int written = 0;
+// The StorageTexels each name is declared with, in token order: the latest declaration before a
+// use is the one it names.
+template <typename Visit>
+void forEachUseOfStorage(const std::vector<Token>& tokens, Visit visit) {
+    std::map<std::string, StorageTexels> declared;
+    std::map<size_t, size_t> declarationNames;
     for (size_t i = 0; i < tokens.size(); ++i) {
         if (const auto declaration = readDeclaration(tokens, i)) {
             declared[tokens[declaration->first].text] = declaration->second;
@@ -143,15 +142,52 @@ std::vector<Token> lowerPartialTexelWrites(const std::vector<Token>& tokens) {
         const auto found = tokens[i].isIdentifier() && !declarationNames.contains(i) && !followsMemberAccess(tokens, i)
                                ? declared.find(tokens[i].text)
                                : declared.end();
-        const auto write = found != declared.end() ? readPartialWrite(tokens, i, found->second) : std::nullopt;
+        i = visit(i, found != declared.end() ? &found->second : nullptr);
+    }
+}
+
+} // namespace
+
+std::vector<Token> convertStorageLoadCoordinates(const std::vector<Token>& tokens) {
+    TokenWriter writer;
+    forEachUseOfStorage(tokens, [&](size_t i, const StorageTexels* texels) {
+        // name [array indices]... . Load ( argument )
+        size_t at = i + 1;
+        for (size_t group = 0; texels && group < texels->arrayDimensions && at < tokens.size() && tokens[at].is("["); ++group)
+            at = matchingClose(tokens, at) + 1;
+        const bool load = texels && at + 2 < tokens.size() && tokens[at].is(".") && tokens[at + 1].is("Load") && tokens[at + 2].is("(");
+        const size_t close = load ? matchingClose(tokens, at + 2) : 0;
+        if (!load || close == at + 3 || splitAtCommas(tokens, at + 3, close).size() != 1) {
+            writer.keep(tokens[i]);
+            return i;
+        }
+        writer.keep(TokenSpan(tokens).subspan(i, at + 3 - i));
+        const std::string coordinates = texels->coordinates.substr(1); // uint2 -> int2, as Load declares it
+        writer.add("( " + coordinates + " ) (", tokens[at + 3].place, tokens[at + 3].leading);
+        Token first = tokens[at + 3];
+        first.leading = " ";
+        writer.keep(first);
+        writer.keep(TokenSpan(tokens).subspan(at + 4, close - at - 4));
+        writer.add(")", tokens[close].place, "");
+        writer.keep(tokens[close]);
+        return close;
+    });
+    return writer.finish();
+}
+
+std::vector<Token> lowerPartialTexelWrites(const std::vector<Token>& tokens) {
+    TokenWriter writer;
+    int written = 0;
+    forEachUseOfStorage(tokens, [&](size_t i, const StorageTexels* texels) {
+        const auto write = texels ? readPartialWrite(tokens, i, *texels) : std::nullopt;
         if (!write) {
             writer.keep(tokens[i]);
-            continue;
+            return i;
         }
-        writer.replace(tokens[i], readModifyWrite(tokens, *write, found->second, written++));
+        writer.replace(tokens[i], readModifyWrite(tokens, *write, *texels, written++));
         writer.drop(TokenSpan(tokens).subspan(i + 1, write->end - i));
-        i = write->end;
-    }
+        return write->end;
+    });
     return writer.finish();
 }
 

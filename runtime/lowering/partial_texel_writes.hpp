@@ -15,4 +15,10 @@ namespace iblkit::lowering {
 // side effects, since it is read twice.
 std::vector<Token> lowerPartialTexelWrites(const std::vector<Token>& tokens);
 
+// A storage resource's Load given coordinates of another length (`Image.Load(int3(xy, 0))` on a
+// RWTexture2D, written as for a Texture2D), which DXC truncates with a warning and glslang finds
+// ambiguous, converted to the resource's coordinates: Image.Load((int2)(int3(xy, 0))). Only
+// Load with one argument, on resources declared as partial texel writes find them.
+std::vector<Token> convertStorageLoadCoordinates(const std::vector<Token>& tokens);
+
 } // namespace iblkit::lowering

@@ -12,11 +12,8 @@ void refuseUnlowerable(const std::vector<Token>& tokens) {
         const Token& next = tokens[i + 1];
         const bool member = followsMemberAccess(tokens, i) || followsQualifier(tokens, i);
         if (member || !(token.isIdentifier() || token.kind == TokenKind::Punctuator)) continue;
-        if (token.is("template"))
-            refuse(token, "a template cannot be lowered to the HLSL glslang reads: write the function or struct for each type");
         if (token.is("operator") && (next.kind == TokenKind::Punctuator || next.is("[")))
             refuse(token, "operator overloading ('operator" + next.text + "') cannot be lowered: write a named function");
-        if (token.is("sizeof") && next.is("(")) refuse(token, "sizeof cannot be lowered: write the size");
         if (token.is("struct") || token.is("class")) nextBraceIsStruct = true;
         if (token.is(";")) nextBraceIsStruct = false;
         if (token.is("{")) {

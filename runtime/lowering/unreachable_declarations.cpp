@@ -15,7 +15,10 @@ struct Declaration {
     std::set<std::string> defines;
     std::set<std::string> uses;
     bool unsupported = false;
-    bool function = false; // a definition with a body
+    bool function = false; // a function's definition or prototype, or a struct with member functions
+    // Dropped where the entry point does not reach it: a function, or what holds a feature
+    // glslang lacks. Everything else is kept, and what it names with it.
+    bool droppable() const { return function || unsupported; }
 };
 
 // Where the top-level declaration that starts at `begin` ends: after its ";" at depth 0, or after
@@ -58,10 +61,14 @@ Declaration readDeclaration(const std::vector<Token>& tokens, size_t begin, size
             declaration.unsupported |= glslangLacks(token.text);
             const bool declared = (depth == 0 || (buffer && depth == 1)) && introducesName(tokens, i, end);
             if (declared || (aggregate && i == begin + 1)) declaration.defines.insert(token.text);
+            // A function's prototype (Type Name(...);) goes with the function, reached or not.
+            if (declared && depth == 0 && !buffer && !aggregate && tokens[i + 1].is("(")) declaration.function = true;
         }
         // [patchconstantfunc("PatchConstants")] names a function in a string.
         if (token.kind == TokenKind::String && token.text.size() > 2) declaration.uses.insert(token.text.substr(1, token.text.size() - 2));
         if (depth == 0 && token.is("{") && !buffer && !aggregate && i > begin && (tokens[i - 1].is(")") || tokens[i - 2].is(":"))) declaration.function = true;
+        // A member function's body: a struct with one is dropped unreached, as a function is.
+        if (depth == 1 && aggregate && token.is("{") && (tokens[i - 1].is(")") || tokens[i - 1].is("const"))) declaration.function = true;
         if (opensBracket(token)) ++depth;
     }
     return declaration;
@@ -83,8 +90,12 @@ std::vector<bool> reachedFrom(const std::vector<Declaration>& declarations, cons
         for (const auto& name : declarations[d].defines) definers[name].push_back(d);
     std::vector<bool> reached(declarations.size(), false);
     std::vector<size_t> pending;
-    for (size_t d = 0; d < declarations.size(); ++d)
-        if (declarations[d].defines.empty() || declarations[d].defines.count(entryPoint)) pending.push_back(d);
+    // Roots: the entry point, and what is kept whether reached or not (a resource the reflection
+    // lists keeps the struct it holds, and that struct's member functions what they call).
+    for (size_t d = 0; d < declarations.size(); ++d) {
+        const auto& declaration = declarations[d];
+        if (declaration.defines.empty() || declaration.defines.count(entryPoint) || !declaration.droppable()) pending.push_back(d);
+    }
     while (!pending.empty()) {
         const size_t d = pending.back();
         pending.pop_back();
@@ -109,7 +120,7 @@ std::vector<Token> dropUnreachableUnsupported(const std::vector<Token>& tokens, 
     TokenWriter writer;
     for (size_t d = 0; d < declarations.size(); ++d) {
         const auto span = TokenSpan(tokens).subspan(declarations[d].begin, declarations[d].end - declarations[d].begin);
-        if (!reached[d] && (declarations[d].unsupported || declarations[d].function)) writer.drop(span);
+        if (!reached[d] && declarations[d].droppable()) writer.drop(span);
         else writer.keep(span);
     }
     writer.keep(tokens.back());

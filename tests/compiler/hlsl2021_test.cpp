@@ -60,13 +60,14 @@ TEST_F(Hlsl2021, Hlsl2018LowersEnumsAsDxcTakesThem) {
 TEST_F(Hlsl2021, AnErrorAfterALoweredConstructPointsAtTheUsersFileAndLine) {
     folder.write("colour.hlsli", "enum class Space { Linear };\n\nfloat g() { return undefinedThing; }\n");
     EXPECT_EQ(errorOf(std::string("#include \"colour.hlsli\"\nRWStructuredBuffer<float> Out;\nfloat f(uint i) { return g(); }\n") + kEntry),
-              "In file included from shader.hlsl:1:\ncolour.hlsli:3:20: error: 'undefinedThing' : unknown variable");
+              "In file included from shader.hlsl:1:\ncolour.hlsli:3:20: error: 'undefinedThing' is not declared where it is used "
+              "(glslang: 'undefinedThing' : unknown variable)");
 }
 
 TEST_F(Hlsl2021, ALoweringErrorNamesTheConstructAndItsPlace) {
-    EXPECT_EQ(errorOf("RWStructuredBuffer<float> Out;\ntemplate <typename T> T f(T x) { return x; }\n"),
-              "shader.hlsl:2:1: error: a template cannot be lowered to the HLSL glslang reads: write the function or struct "
-              "for each type");
+    EXPECT_EQ(errorOf("RWStructuredBuffer<float> Out;\ntemplate <typename T = float> T f(T x) { return x; }\n"),
+              "shader.hlsl:2:11: error: a template parameter the kit cannot instantiate (a default argument, or a template "
+              "template parameter): write 'typename T' or a constant such as 'uint N'");
 }
 
 // Before, glslang's binding from the attribute was taken for a register and shifted: binding
@@ -176,8 +177,11 @@ TEST_F(Hlsl2021, AConversionGlslangLacksIsReportedAtItsLine) {
         compileShader(options);
         FAIL() << "compiled";
     } catch (const CompileError& error) {
-        EXPECT_EQ(std::string(error.what()), options.source.string() + ":2:1: error: ' const 2-component vector of float16_t' : "
-                                                                        "cannot construct with these arguments");
+        EXPECT_EQ(std::string(error.what()),
+                  options.source.string() + ":2:1: error: a constructor or cast whose arguments glslang's HLSL frontend does not "
+                                            "convert to its type (an integer or a 32-bit value to a 16-bit float): convert each "
+                                            "argument to the type's scalar first (glslang: ' const 2-component vector of "
+                                            "float16_t' : cannot construct with these arguments)");
     }
 }
 

@@ -108,8 +108,8 @@ TEST(Lowering, UsingAnAliasIsATypedef) {
 }
 
 TEST(Lowering, WhatCannotBeLoweredIsRefusedByName) {
-    EXPECT_EQ(errorOf("\n  template <typename T> T twice(T x) { return x * 2; }"),
-              "a.hlsl:2:3: error: a template cannot be lowered to the HLSL glslang reads: write the function or struct for each type");
+    EXPECT_EQ(errorOf("\n  template <> float twice(float x) { return x * 2; }"),
+              "a.hlsl:2:3: error: an explicit specialization (template <>) cannot be lowered: give the specialized function its own name");
     EXPECT_EQ(errorOf("struct S { uint a : 4; uint b : 28; };"),
               "a.hlsl:1:17: error: the bitfield 'a : 4' cannot be lowered: use a whole member and shift and mask it");
     EXPECT_EQ(errorOf("S operator+(S a, S b);"),

@@ -33,5 +33,14 @@ TEST(PartialTexelWrites, LeavesWholeTexelsBuffersAndIndicesWithSideEffects) {
         EXPECT_EQ(texelWritesLowered(text), text);
 }
 
+TEST(StorageLoadCoordinates, ALoadOfAnotherLengthIsConvertedToTheTexturesCoordinates) {
+    EXPECT_EQ(texelWritesLowered("RWTexture2D<float4> H;\nfloat4 f(int2 c) { return H.Load(int3(c, 0)); }"),
+              "RWTexture2D<float4> H;\nfloat4 f(int2 c) { return H.Load(( int2 ) ( int3(c, 0))); }");
+    // A sampled texture's Load, and a Load with a status, stay.
+    for (const std::string text : {"Texture2D<float4> T;\nfloat4 f(int2 c) { return T.Load(int3(c, 0)); }",
+                                   "RWTexture2D<float4> H;\nfloat4 f(int2 c, out uint s) { return H.Load(c, s); }"})
+        EXPECT_EQ(texelWritesLowered(text), text);
+}
+
 } // namespace
 } // namespace iblkit::lowering

@@ -36,6 +36,20 @@ TEST(UnreachableDeclarations, WhatTheEntryPointReachesThroughOthersStays) {
     for (const char* name : {"Inner", "Outer", "UsesScale"}) EXPECT_NE(text.find(std::string(name) + "("), std::string::npos) << name;
 }
 
+TEST(UnreachableDeclarations, AStructWithMemberFunctionsIsAFunctionToReach) {
+    // Unreached, it goes with what only its member functions call; reached, both stay.
+    const std::string helpers = "float Dir(float x) { return x; }\nstruct Light { float a; float Sample() { return Dir(a); } };\n";
+    EXPECT_EQ(pruned(helpers + "float main() : SV_Target { return 1; }"), "\n\nfloat main() : SV_Target { return 1; }");
+    const std::string reached = helpers + "float main() : SV_Target { Light l; l.a = 1; return l.Sample(); }";
+    EXPECT_EQ(pruned(reached), reached);
+    // A prototype goes with its function.
+    EXPECT_EQ(pruned("float Late();\nfloat Late() { return 2; }\nfloat main() : SV_Target { return 1; }"),
+              "\n\nfloat main() : SV_Target { return 1; }");
+    // A struct without member functions stays, reached or not, as types and resources do.
+    EXPECT_EQ(pruned("struct Plain { float a; };\nfloat main() : SV_Target { return 1; }"),
+              "struct Plain { float a; };\nfloat main() : SV_Target { return 1; }");
+}
+
 TEST(UnreachableDeclarations, APatchConstantFunctionNamedInAnAttributeIsReached) {
     const auto text = pruned("float Helper() { return 1; }\nvoid Patch() { Helper(); }\n"
                               "[patchconstantfunc(\"Patch\")] void HS() {}\n", "HS");
