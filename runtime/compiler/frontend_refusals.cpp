@@ -66,8 +66,9 @@ const std::array<Rewording, 14>& rewordings() {
          [](const std::smatch& m) { return "'" + std::string(m[1]) + "' is not declared where it is used"; }},
         {std::regex(R"('basic type in texture' : Unimplemented)"),
          [](const std::smatch&) {
-             return std::string("a texture or typed buffer of a struct: ") + kFrontend +
-                    " takes scalars and vectors only: declare it of a vector and unpack the members";
+             return std::string("a texture or typed buffer whose element type ") + kFrontend +
+                    " does not take (a struct, or a 16-bit type): declare it of a 32-bit scalar or vector and convert "
+                    "what it reads";
          }},
         {std::regex(R"(left of '\[' is not of type array, matrix, or vector)"),
          [](const std::smatch&) {

@@ -9,6 +9,7 @@
 #include "refusals.hpp"
 #include "resource_locals.hpp"
 #include "sixteen_bit.hpp"
+#include "struct_conversions.hpp"
 #include "struct_scope.hpp"
 #include "templates.hpp"
 #include "type_spellings.hpp"
@@ -61,6 +62,7 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "resource-locals", edits, inlineResourceLocals);
     tokens = runPass(tokens, "partial-texel-writes", edits, lowerPartialTexelWrites);
     tokens = runPass(tokens, "storage-load-coordinates", edits, convertStorageLoadCoordinates);
+    tokens = runPass(tokens, "struct-conversions", edits, convertReturnedStructs);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     for (size_t i = 0; i + 2 < tokens.size(); ++i)

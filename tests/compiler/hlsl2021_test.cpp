@@ -66,7 +66,7 @@ TEST_F(Hlsl2021, AnErrorAfterALoweredConstructPointsAtTheUsersFileAndLine) {
 
 TEST_F(Hlsl2021, ALoweringErrorNamesTheConstructAndItsPlace) {
     EXPECT_EQ(errorOf("RWStructuredBuffer<float> Out;\ntemplate <typename T = float> T f(T x) { return x; }\n"),
-              "shader.hlsl:2:11: error: a template parameter the kit cannot instantiate (a default argument, or a template "
+              "shader.hlsl:2:12: error: a template parameter the kit cannot instantiate (a default argument, or a template "
               "template parameter): write 'typename T' or a constant such as 'uint N'");
 }
 

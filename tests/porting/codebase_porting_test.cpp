@@ -28,7 +28,7 @@ TEST(CodeBasePorting, EveryConfigurationIsTriedAndFailuresAreGroupedByCause) {
                                              "[numthreads(RADIUS, 1, 1)] void CSMain(uint i : SV_DispatchThreadID) { Out[i] = Twice(i); }\n");
     folder.write("Engine/Shaders/Generic.hlsl", "struct V { float x; };\nV operator+(V a, V b) { V r; r.x = a.x + b.x; return r; }\n"
                                                 "float4 PSMain() : SV_Target { return 1.0; }\n");
-    folder.write("Engine/Shaders/Generic2.hlsl", "struct W { float x; };\nW operator*(W a, W b) { return a; }\n"
+    folder.write("Engine/Shaders/Generic2.hlsl", "struct W { float x; };\nW operator+(W a, W b) { return a; }\n"
                                                  "float4 PSMain() : SV_Target { return 2.0; }\n");
     folder.write("Engine/Shaders/Bomb.hlsl", macroBomb());
     const auto manifest = folder.write("engine.json", R"({"name": "Engine", "repository": "https://example.org/engine",
