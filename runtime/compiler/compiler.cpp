@@ -10,6 +10,7 @@
 #include "spirv_operand_repairs.hpp"
 #include "spirv_semantic_builtins.hpp"
 #include "spirv_cbuffer_layout.hpp"
+#include "frontend_refusals.hpp"
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
@@ -70,7 +71,11 @@ CompiledShader compileShader(const CompileOptions& options) {
     if (std::find(edits.begin(), edits.end(), "non-uniform-resource-index") != edits.end())
         decorateNonUniformResourceIndexing(module);
     const auto legal = module.words();
-    validateSpirv(legal, shader.sourceName);
+    try {
+        validateSpirv(legal, shader.sourceName);
+    } catch (const CompileError& error) {
+        throw CompileError(invalidSpirvInKitWords(error.what()));
+    }
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
     if (options.optimization != OptimizationLevel::None) validateSpirv(shader.namedSpirv, shader.sourceName);

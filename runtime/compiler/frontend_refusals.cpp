@@ -86,7 +86,38 @@ const std::array<Rewording, 14>& rewordings() {
     return kRewordings;
 }
 
+struct SpirvRewording {
+    const char* pattern;
+    const char* words;
+};
+
+constexpr SpirvRewording kSpirvRewordings[] = {
+    {"OpTypeRuntimeArray must have storage class",
+     "a buffer held in a struct or a local (a StructuredBuffer or ByteAddressBuffer member, or a struct of resources passed "
+     "to a function), which glslang copies where Vulkan cannot hold it: pass or index the global buffer itself"},
+    {"OpTypeStruct must not contain an opaque type",
+     "a struct holding textures or samplers that glslang could not take apart: pass the resources themselves"},
+    {"conflicting input location assignment|conflicting output location assignment",
+     "two varyings at one location (a system value glslang does not know, or an array member of a hull, domain or geometry "
+     "shader's varying, which glslang splits wrongly): hold the array in vectors of its own"},
+    {"Invalid storage class for pointer operand",
+     "a buffer passed to a function glslang could not inline: index the global buffer inside the function"},
+    {"Image Operand Offset can only be used with OpImage",
+     "a texture offset that is not a constant: Vulkan takes a run-time offset only in a Gather: make the offset a constant"},
+};
+
 } // namespace
+
+std::string invalidSpirvInKitWords(const std::string& error) {
+    const size_t message = error.find(": error: ");
+    if (message == std::string::npos) return error;
+    const std::string validator = error.substr(message + 9);
+    if (validator.rfind("the SPIR-V is not valid", 0) != 0) return error; // worded by the kit already
+    for (const auto& rewording : kSpirvRewordings)
+        if (std::regex_search(validator, std::regex(rewording.pattern)))
+            return error.substr(0, message) + ": error: " + rewording.words + " (" + validator + ")";
+    return error.substr(0, message) + ": error: glslang wrote SPIR-V for this shader that Vulkan does not accept (" + validator + ")";
+}
 
 std::string inKitWords(const std::string& error) {
     static const std::regex located(R"(^((?:[^\n]*\n)*?[^\n]*?: error: )(.*)$)");

@@ -11,4 +11,9 @@ namespace iblkit::compiler {
 // does not know still gets words of its own first.
 std::string inKitWords(const std::string& error);
 
+// The validator's refusal of the SPIR-V glslang wrote for a shader ("file: error: the SPIR-V is
+// not valid for Vulkan 1.1: ..."), in the kit's words first: the construct that makes glslang
+// write it, where the kit knows it, and what to write instead; the validator's message after.
+std::string invalidSpirvInKitWords(const std::string& error);
+
 } // namespace iblkit::compiler

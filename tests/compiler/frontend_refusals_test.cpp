@@ -22,5 +22,16 @@ TEST(FrontendRefusals, KeepTheIncludeChainAndWordAnUnknownMessage) {
     EXPECT_EQ(inKitWords("not a diagnostic"), "not a diagnostic");
 }
 
+TEST(FrontendRefusals, InvalidSpirvNamesTheConstructThatMadeIt) {
+    EXPECT_EQ(invalidSpirvInKitWords("a.hlsl: error: the SPIR-V is not valid for Vulkan 1.1: Invalid storage class for pointer operand 'x'"),
+              "a.hlsl: error: a buffer passed to a function glslang could not inline: index the global buffer inside the "
+              "function (the SPIR-V is not valid for Vulkan 1.1: Invalid storage class for pointer operand 'x')");
+    EXPECT_EQ(invalidSpirvInKitWords("a.hlsl: error: the SPIR-V is not valid for Vulkan 1.1: something new"),
+              "a.hlsl: error: glslang wrote SPIR-V for this shader that Vulkan does not accept (the SPIR-V is not valid for "
+              "Vulkan 1.1: something new)");
+    const std::string worded = "a.hlsl: error: an integer matrix (uint4x4, int3x3, ...) has no SPIR-V type for Vulkan";
+    EXPECT_EQ(invalidSpirvInKitWords(worded), worded);
+}
+
 } // namespace
 } // namespace iblkit::compiler
