@@ -16,25 +16,15 @@ constexpr uint32_t kRegister = 16; // bytes in one of Direct3D's constant regist
 
 uint32_t roundUp(uint32_t value, uint32_t to) { return (value + to - 1) / to * to; }
 
-std::string nameIn(const std::vector<uint32_t>& operands, size_t first) {
-    std::string text;
-    for (size_t i = first; i < operands.size(); ++i)
-        for (int byte = 0; byte < 4; ++byte) {
-            const char c = char((operands[i] >> (8 * byte)) & 0xFF);
-            if (c == '\0') return text;
-            text += c;
-        }
-    return text;
-}
 
 class Packing {
 public:
     Packing(const SpirvModule& module, const std::set<std::string>& packedMembers) : module_(module), packed_(packedMembers) {
         for (size_t i = 0; i < module.size(); ++i) {
             const auto& instruction = module.instruction(i);
-            if (instruction.opcode == spv::OpName) names_[instruction.operands[0]] = nameIn(instruction.operands, 1);
+            if (instruction.opcode == spv::OpName) names_[instruction.operands[0]] = literalString(instruction.operands, 1);
             if (instruction.opcode == spv::OpMemberName)
-                memberNames_[{instruction.operands[0], instruction.operands[1]}] = nameIn(instruction.operands, 2);
+                memberNames_[{instruction.operands[0], instruction.operands[1]}] = literalString(instruction.operands, 2);
             if (instruction.opcode == spv::OpMemberDecorate) {
                 const std::pair member{instruction.operands[0], instruction.operands[1]};
                 if (instruction.operands[2] == spv::DecorationOffset) offsets_[member] = instruction.operands[3];

@@ -60,13 +60,6 @@ bool isIntegerOrDouble(const SpirvModule& module, uint32_t type) {
     return false;
 }
 
-bool hasFragmentEntryPoint(SpirvModule& module) {
-    for (size_t i = 0; i < module.size(); ++i) {
-        const auto& instruction = module.instruction(i);
-        if (instruction.opcode == spv::OpEntryPoint && instruction.operands[0] == spv::ExecutionModelFragment) return true;
-    }
-    return false;
-}
 
 } // namespace
 
@@ -101,7 +94,7 @@ bool matchAtomicValueTypes(SpirvModule& module) {
 }
 
 bool decorateFragmentIntegerInputsFlat(SpirvModule& module) {
-    if (!hasFragmentEntryPoint(module)) return false;
+    if (entryExecutionModel(module) != spv::ExecutionModelFragment) return false;
     std::set<uint32_t> flat;
     for (size_t i = 0; i < module.size(); ++i) {
         const auto& instruction = module.instruction(i);

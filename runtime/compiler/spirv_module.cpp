@@ -27,6 +27,9 @@ bool isNameOrDecoration(uint32_t opcode) {
            opcode == spv::OpLine || opcode == spv::OpDecorateString || opcode == spv::OpMemberDecorateString;
 }
 
+
+} // namespace
+
 std::string literalString(const std::vector<uint32_t>& operands, size_t first) {
     std::string text;
     for (size_t i = first; i < operands.size(); ++i) {
@@ -40,7 +43,11 @@ std::string literalString(const std::vector<uint32_t>& operands, size_t first) {
     return text;
 }
 
-} // namespace
+uint32_t entryExecutionModel(const SpirvModule& module) {
+    for (size_t i = 0; i < module.size(); ++i)
+        if (module.instruction(i).opcode == spv::OpEntryPoint) return module.instruction(i).operands[0];
+    return spv::ExecutionModelMax;
+}
 
 SpirvModule::SpirvModule(const std::vector<uint32_t>& words) {
     if (words.size() < kHeaderWords) throw std::invalid_argument("SPIR-V module shorter than its header");

@@ -71,4 +71,10 @@ private:
     std::vector<SpirvInstruction> instructions_;
 };
 
+// A literal string operand (an OpName's, a decoration's) from operands[first] on.
+std::string literalString(const std::vector<uint32_t>& operands, size_t first);
+
+// The execution model of the module's first entry point, ExecutionModelMax without one.
+uint32_t entryExecutionModel(const SpirvModule& module);
+
 } // namespace iblkit::compiler

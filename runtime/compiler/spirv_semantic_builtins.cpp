@@ -13,16 +13,6 @@
 namespace iblkit::compiler {
 namespace {
 
-std::string literalString(const std::vector<uint32_t>& operands, size_t from, bool upperCase = false) {
-    std::string text;
-    for (size_t i = from; i < operands.size(); ++i)
-        for (int byte = 0; byte < 4; ++byte) {
-            const char c = char((operands[i] >> (8 * byte)) & 0xFF);
-            if (c == '\0') return text;
-            text += upperCase ? char(std::toupper(static_cast<unsigned char>(c))) : c;
-        }
-    return text;
-}
 
 // How many locations a varying of `type` occupies: a 64-bit vector of three or four components
 // two, a matrix one per column, an array its length times its element's.
@@ -54,6 +44,11 @@ std::optional<std::pair<std::string, uint32_t>> flattenedElement(const std::stri
     return std::make_pair(name.substr(0, open), uint32_t(std::stoul(index)));
 }
 
+std::string upperCase(std::string text) {
+    for (char& c : text) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+}
+
 struct BuiltInUse {
     spv::BuiltIn builtIn;
     spv::Capability capability;
@@ -68,13 +63,8 @@ std::optional<BuiltInUse> builtInFor(const std::string& semantic, bool fragmentI
     return std::nullopt;
 }
 
-uint32_t executionModelOf(SpirvModule& module) {
-    for (size_t i = 0; i < module.size(); ++i)
-        if (module.instruction(i).opcode == spv::OpEntryPoint) return module.instruction(i).operands[0];
-    return spv::ExecutionModelMax;
-}
 
-bool isFragment(SpirvModule& module) { return executionModelOf(module) == spv::ExecutionModelFragment; }
+bool isFragment(const SpirvModule& module) { return entryExecutionModel(module) == spv::ExecutionModelFragment; }
 
 bool isPatch(SpirvModule& module, uint32_t variable) {
     for (size_t i = 0; i < module.size(); ++i) {
@@ -94,7 +84,7 @@ uint32_t storageClassOf(const SpirvModule& module, uint32_t variable) {
 // shader's inputs and a geometry shader's inputs. glslang sizes a flattened member's array of
 // those by the member's length instead of the vertex count, which no location can mend.
 bool isPerVertexArray(SpirvModule& module, uint32_t variable) {
-    const uint32_t model = executionModelOf(module);
+    const uint32_t model = entryExecutionModel(module);
     const bool input = storageClassOf(module, variable) == spv::StorageClassInput;
     return ((model == spv::ExecutionModelTessellationControl || (model == spv::ExecutionModelTessellationEvaluation && input)) &&
             !isPatch(module, variable)) ||
@@ -109,7 +99,7 @@ bool semanticsAsBuiltIns(SpirvModule& module) {
         const auto& instruction = module.instruction(i);
         if (instruction.opcode == spv::OpDecorateString && instruction.operands.size() > 2 &&
             instruction.operands[1] == spv::DecorationUserSemantic)
-            semantics[instruction.operands[0]] = literalString(instruction.operands, 2, true);
+            semantics[instruction.operands[0]] = upperCase(literalString(instruction.operands, 2));
     }
     const bool fragment = isFragment(module);
     bool changed = false;
