@@ -59,6 +59,7 @@ CompiledShader compileShader(const CompileOptions& options) {
     if (flattenedArrayLocations(raw)) shader.kitEdits.emplace_back("flattened-array-locations");
     if (decorateFragmentIntegerInputsFlat(raw)) shader.kitEdits.emplace_back("flat-integer-inputs");
     if (logicalOperationsOnBooleans(raw)) shader.kitEdits.emplace_back("boolean-logic");
+    const auto varyings = readVaryings(raw); // legalization strips the semantics
     // The kit's own edits of glslang's SPIR-V, on one parse of the legalized module.
     SpirvModule module(legalizeHlslSpirv(raw.words(), shader.sourceName));
     refuseUnportableConstantBufferPacking(module, frontend.packedMembers, shader.sourceName);
@@ -77,6 +78,7 @@ CompiledShader compileShader(const CompileOptions& options) {
         throw CompileError(invalidSpirvInKitWords(error.what()));
     }
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
+    shader.reflection.varyings = varyings;
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
     if (options.optimization != OptimizationLevel::None) validateSpirv(shader.namedSpirv, shader.sourceName);
     shader.spirv = options.stripDebugInfo ? stripDebugInfo(shader.namedSpirv, shader.sourceName) : shader.namedSpirv;

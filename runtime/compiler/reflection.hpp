@@ -2,6 +2,7 @@
 
 #include "register_binding.hpp"
 #include "shader_stage.hpp"
+#include "spirv_varyings.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -51,6 +52,9 @@ struct ShaderReflection {
     uint32_t pushConstantSize = 0;
     std::vector<BlockMember> pushConstants;
     std::vector<SpecializationConstant> specializationConstants;
+    // The entry point's inputs and outputs with their semantics (HLSL compiled here; empty for
+    // SPIR-V compiled elsewhere, which keeps no semantics).
+    std::vector<Varying> varyings;
 
     const ReflectedResource* find(const std::string& name) const;
 };

@@ -30,6 +30,18 @@ GlFunctions loadGlFunctions() {
     IBLKIT_LOAD(SamplerParameteri); IBLKIT_LOAD(BindSampler); IBLKIT_LOAD(DeleteSamplers); IBLKIT_LOAD(CreateBuffers);
     IBLKIT_LOAD(NamedBufferData); IBLKIT_LOAD(GetNamedBufferSubData); IBLKIT_LOAD(BindBufferBase); IBLKIT_LOAD(DeleteBuffers);
     IBLKIT_LOAD(DispatchCompute); IBLKIT_LOAD(MemoryBarrier); IBLKIT_LOAD(Finish);
+    IBLKIT_LOAD(Disable); IBLKIT_LOAD(Enablei); IBLKIT_LOAD(Disablei); IBLKIT_LOAD(PixelStorei);
+    IBLKIT_LOAD(ClipControl); IBLKIT_LOAD(ViewportIndexedf); IBLKIT_LOAD(DepthRangef); IBLKIT_LOAD(DepthFunc);
+    IBLKIT_LOAD(DepthMask); IBLKIT_LOAD(CullFace); IBLKIT_LOAD(FrontFace); IBLKIT_LOAD(BlendFunci);
+    IBLKIT_LOAD(BlendEquationi); IBLKIT_LOAD(CreateVertexArrays); IBLKIT_LOAD(DeleteVertexArrays); IBLKIT_LOAD(BindVertexArray);
+    IBLKIT_LOAD(VertexArrayVertexBuffer); IBLKIT_LOAD(VertexArrayAttribFormat); IBLKIT_LOAD(VertexArrayAttribIFormat); IBLKIT_LOAD(VertexArrayAttribBinding);
+    IBLKIT_LOAD(EnableVertexArrayAttrib); IBLKIT_LOAD(VertexArrayElementBuffer); IBLKIT_LOAD(CreateFramebuffers); IBLKIT_LOAD(DeleteFramebuffers);
+    IBLKIT_LOAD(BindFramebuffer); IBLKIT_LOAD(NamedFramebufferTexture); IBLKIT_LOAD(NamedFramebufferTextureLayer); IBLKIT_LOAD(NamedFramebufferDrawBuffers);
+    IBLKIT_LOAD(CheckNamedFramebufferStatus); IBLKIT_LOAD(ClearNamedFramebufferfv); IBLKIT_LOAD(ClearNamedFramebufferuiv); IBLKIT_LOAD(ClearNamedFramebufferiv);
+    IBLKIT_LOAD(DrawArraysInstancedBaseInstance); IBLKIT_LOAD(DrawElementsInstancedBaseVertexBaseInstance); IBLKIT_LOAD(ProgramUniform1fv); IBLKIT_LOAD(ProgramUniform2fv);
+    IBLKIT_LOAD(ProgramUniform3fv); IBLKIT_LOAD(ProgramUniform4fv); IBLKIT_LOAD(ProgramUniform1iv); IBLKIT_LOAD(ProgramUniform2iv);
+    IBLKIT_LOAD(ProgramUniform3iv); IBLKIT_LOAD(ProgramUniform4iv); IBLKIT_LOAD(ProgramUniform1uiv); IBLKIT_LOAD(ProgramUniform2uiv);
+    IBLKIT_LOAD(ProgramUniform3uiv); IBLKIT_LOAD(ProgramUniform4uiv); IBLKIT_LOAD(GetUniformLocation); IBLKIT_LOAD(SamplerParameterf); IBLKIT_LOAD(TextureParameteri);
 #undef IBLKIT_LOAD
     return gl;
 }

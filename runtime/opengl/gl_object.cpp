@@ -3,6 +3,7 @@
 #include "gl_error.hpp"
 
 #include <string>
+#include <vector>
 
 namespace iblkit::opengl {
 
@@ -24,28 +25,63 @@ GlObject createSampler(const EglContext& context) {
     return GlObject(context, name, [](const GlFunctions& gl, GLuint n) { gl.DeleteSamplers(1, &n); });
 }
 
-GlObject createComputeProgram(const EglContext& context, const std::string& source, const std::string& name) {
+GlObject createVertexArray(const EglContext& context) {
+    GLuint name = 0;
+    context.gl().CreateVertexArrays(1, &name);
+    return GlObject(context, name, [](const GlFunctions& gl, GLuint n) { gl.DeleteVertexArrays(1, &n); });
+}
+
+GlObject createFramebuffer(const EglContext& context) {
+    GLuint name = 0;
+    context.gl().CreateFramebuffers(1, &name);
+    return GlObject(context, name, [](const GlFunctions& gl, GLuint n) { gl.DeleteFramebuffers(1, &n); });
+}
+
+namespace {
+
+GlObject compiledShader(const EglContext& context, GLenum stage, const std::string& source, const std::string& name) {
     const auto& gl = context.gl();
-    const GlObject shader(context, gl.CreateShader(GL_COMPUTE_SHADER), [](const GlFunctions& g, GLuint n) { g.DeleteShader(n); });
+    GlObject shader(context, gl.CreateShader(stage), [](const GlFunctions& g, GLuint n) { g.DeleteShader(n); });
     const char* text = source.c_str();
     gl.ShaderSource(shader.name(), 1, &text, nullptr);
     gl.CompileShader(shader.name());
     GLint ok = GL_FALSE;
     gl.GetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
-    std::string log(4096, '\0');
     if (!ok) {
+        std::string log(4096, '\0');
         gl.GetShaderInfoLog(shader.name(), GLsizei(log.size()), nullptr, log.data());
         throw GlError(name + ": error: OpenGL rejected the shader: " + log.c_str());
     }
+    return shader;
+}
+
+GlObject linkedProgram(const EglContext& context, const std::vector<const GlObject*>& shaders, const std::string& name) {
+    const auto& gl = context.gl();
     GlObject program(context, gl.CreateProgram(), [](const GlFunctions& g, GLuint n) { g.DeleteProgram(n); });
-    gl.AttachShader(program.name(), shader.name());
+    for (const auto* shader : shaders) gl.AttachShader(program.name(), shader->name());
     gl.LinkProgram(program.name());
+    GLint ok = GL_FALSE;
     gl.GetProgramiv(program.name(), GL_LINK_STATUS, &ok);
     if (!ok) {
+        std::string log(4096, '\0');
         gl.GetProgramInfoLog(program.name(), GLsizei(log.size()), nullptr, log.data());
         throw GlError(name + ": error: OpenGL did not link the shader: " + log.c_str());
     }
     return program;
+}
+
+} // namespace
+
+GlObject createGraphicsProgram(const EglContext& context, const std::string& vertexSource, const std::string& fragmentSource,
+                               const std::string& name) {
+    const auto vertex = compiledShader(context, GL_VERTEX_SHADER, vertexSource, name + " (vertex)");
+    const auto fragment = compiledShader(context, GL_FRAGMENT_SHADER, fragmentSource, name + " (pixel)");
+    return linkedProgram(context, {&vertex, &fragment}, name);
+}
+
+GlObject createComputeProgram(const EglContext& context, const std::string& source, const std::string& name) {
+    const auto shader = compiledShader(context, GL_COMPUTE_SHADER, source, name);
+    return linkedProgram(context, {&shader}, name);
 }
 
 } // namespace iblkit::opengl

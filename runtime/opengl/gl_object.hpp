@@ -33,6 +33,14 @@ GlObject createTexture(const EglContext& context, GLenum target);
 GlObject createBuffer(const EglContext& context);
 GlObject createSampler(const EglContext& context);
 
+GlObject createVertexArray(const EglContext& context);
+GlObject createFramebuffer(const EglContext& context);
+
+// A program of a vertex and a fragment shader from GLSL source; throws GlError with the
+// compiler's or linker's log.
+GlObject createGraphicsProgram(const EglContext& context, const std::string& vertexSource, const std::string& fragmentSource,
+                               const std::string& name);
+
 // A compute program from GLSL source; throws GlError with the compiler's or linker's log.
 GlObject createComputeProgram(const EglContext& context, const std::string& source, const std::string& name);
 

@@ -1,108 +1,91 @@
 #include "run_executor.hpp"
 
 #include "atomic_output.hpp"
-#include "block_writer.hpp"
-#include "compiler.hpp"
-#include "compute_program.hpp"
 #include "data_file.hpp"
 #include "expectation_check.hpp"
-#include "hlsl_frontend.hpp"
-#include "spirv_tools.hpp"
+#include "gl_error.hpp"
+#include "opengl_engine.hpp"
 #include "run_error.hpp"
+#include "run_plan.hpp"
+#include "vulkan_engine.hpp"
 #include "vulkan_error.hpp"
 
 #include <fmt/core.h>
 #include <fmt/ostream.h>
 
-#include <memory>
-#include <variant>
+#include <map>
 
 namespace iblkit::run {
-namespace {
 
-using Resource = std::variant<std::unique_ptr<vulkan::Buffer>, std::unique_ptr<vulkan::Image>, std::unique_ptr<vulkan::Sampler>>;
-
-struct Program {
-    std::vector<uint32_t> spirv;
-    compiler::ShaderReflection reflection;
-};
-
-Program loadShader(const RunSpec& spec) {
-    if (spec.shader.extension() == ".spv") {
-        if (!spec.includeDirs.empty() || !spec.defines.empty() || !spec.imageFormats.empty() || spec.enable16BitTypes ||
-            spec.hlslVersion != lowering::HlslVersion::Hlsl2021)
-            throw RunError(spec.runFile.string() + ": error: \"include\", \"defines\", \"image_formats\", "
-                           "\"enable_16bit_types\" and \"hlsl_version\" apply to HLSL shaders, not to " + spec.shader.string());
-        const std::string bytes = compiler::readSource(spec.shader);
-        if (bytes.size() % 4 != 0 || bytes.size() < 20)
-            throw RunError(spec.shader.string() + ": error: not a SPIR-V module (" + std::to_string(bytes.size()) + " bytes)");
-        std::vector<uint32_t> words(bytes.size() / 4);
-        std::memcpy(words.data(), bytes.data(), words.size() * 4);
-        // SPIRV-Cross (the reflection) and the driver trust their input: a damaged module crashes them.
-        compiler::validateSpirv(words, spec.shader.string());
-        return {words, compiler::reflectSpirv(words, spec.entry, spec.shader.string())};
-    }
-    auto options = compileOptionsOf(spec);
-    options.boundPreprocessing = true;
-    auto shader = compiler::compileShader(options);
-    return {shader.spirv, shader.reflection};
+size_t ImageShape::valueOffset(uint32_t mip, uint32_t layer) const {
+    size_t offset = 0;
+    for (uint32_t level = 0; level < mip; ++level) offset += size_t(mipWidth(level)) * mipHeight(level) * layers;
+    offset += size_t(mipWidth(mip)) * mipHeight(mip) * layer;
+    return offset * format->channels;
 }
 
-class Executor {
-public:
-    Executor(const RunSpec& spec, const RunOptions& options, std::ostream& out)
-        : spec_(spec), out_(out), log_(std::make_shared<vulkan::ValidationLog>()),
-          context_({options.device, options.validation, log_, options.timeout, options.onDeviceFailure}) {}
+namespace {
 
-    bool run() {
-        const auto program = loadShader(spec_);
-        checkNames(program.reflection);
-        fmt::print(out_, "shader   {} ({}), workgroup {}x{}x{}\n", spec_.shader.string(), spec_.entry,
-                   program.reflection.workgroupSize[0], program.reflection.workgroupSize[1],
-                   program.reflection.workgroupSize[2]);
-        fmt::print(out_, "device   {}{}\n", context_.deviceInfo().name, context_.validationEnabled() ? ", validation on" : "");
-        vulkan::ComputeProgram compute = [&] {
-            try {
-                return vulkan::ComputeProgram(context_, program.spirv, program.reflection, spec_.specialization);
-            } catch (const vulkan::VulkanError& error) {
-                throw RunError(spec_.shader.string() + ": error: " + error.what());
-            }
-        }();
-        // The driver's and the runtime's errors name no run file or key: each step adds them.
-        for (const auto& resource : spec_.resources)
-            withKey("resources." + resource.name, [&] { makeAndBind(resource, compute); });
-        if (program.reflection.pushConstantSize > 0)
-            withKey("push_constants", [&] {
-                compute.setPushConstants(vulkan::packBlock(program.reflection.pushConstantBlock, program.reflection.pushConstants,
-                                                           program.reflection.pushConstantSize, spec_.pushConstants));
-            });
-        vulkan::DispatchTiming timing{};
-        withKey("dispatch", [&] {
-            timing = spec_.threads ? compute.dispatchThreads(context_, *spec_.threads)
-                                   : compute.dispatchGroups(context_, *spec_.groups);
-        });
-        fmt::print(out_, "dispatch {}x{}x{} groups: {} on the device, {:.3f} ms wall\n", timing.groups[0], timing.groups[1],
-                   timing.groups[2],
-                   timing.deviceMilliseconds >= 0 ? fmt::format("{:.3f} ms", timing.deviceMilliseconds) : "no timestamps",
-                   timing.wallMilliseconds);
+// Where value i of a subresource selection lies, for the report.
+std::string locate(const ImageShape& image, uint32_t firstMip, uint32_t firstLayer, size_t index, bool oneLayer) {
+    const uint32_t channels = image.format->channels;
+    size_t texel = index / channels;
+    for (uint32_t mip = firstMip; mip < image.mips; ++mip) {
+        const size_t perLayer = size_t(image.mipWidth(mip)) * image.mipHeight(mip);
+        const size_t layers = oneLayer ? 1 : image.layers;
+        if (texel < perLayer * layers) {
+            const size_t layer = firstLayer + texel / perLayer, inLayer = texel % perLayer;
+            return fmt::format("mip {} layer {} ({}, {}) channel {}", mip, layer, inLayer % image.mipWidth(mip),
+                               inLayer / image.mipWidth(mip), index % channels);
+        }
+        texel -= perLayer * layers;
+    }
+    return "?";
+}
+
+std::string locate(const Readback& data, size_t index) {
+    return data.image ? locate(*data.image, 0, 0, index, false) : fmt::format("element {}", index);
+}
+
+// One API's run of the file: resources made, the dispatch or draw, expectations checked.
+class ApiRun {
+public:
+    ApiRun(const RunSpec& spec, const RunPlan& plan, RunEngine& engine, std::ostream& out, std::string prefix)
+        : spec_(spec), plan_(plan), engine_(engine), out_(out), prefix_(std::move(prefix)) {}
+
+    bool run(const RunPrograms& programs) {
+        fmt::print(out_, "{}device   {}\n", prefix_, engine_.deviceLine());
+        withKey(spec_.graphics ? "vertex" : "shader", [&] { engine_.makeProgram(spec_, programs, plan_.draw ? &*plan_.draw : nullptr); });
+        for (const auto& resource : plan_.resources) withKey("resources." + resource.spec->name, [&] { engine_.makeResource(resource); });
+        if (!plan_.pushConstants.empty()) withKey("push_constants", [&] { engine_.setPushConstants(plan_.pushConstants); });
+        std::string line;
+        withKey(spec_.graphics ? "draw" : "dispatch", [&] { line = engine_.execute(spec_, plan_.draw ? &*plan_.draw : nullptr); });
+        fmt::print(out_, "{}{}\n", prefix_, line);
         size_t passed = 0;
         for (const auto& expectation : spec_.expectations) passed += check(expectation);
-        saveAll();
         bool clean = true;
-        for (const auto& message : log_->messages()) {
-            fmt::print(out_, "FAIL validation: {}\n", message);
+        for (const auto& message : engine_.validationMessages()) {
+            fmt::print(out_, "{}FAIL validation: {}\n", prefix_, message);
             clean = false;
         }
-        fmt::print(out_, "{} of {} expectations passed\n", passed, spec_.expectations.size());
+        fmt::print(out_, "{}{} of {} expectations passed\n", prefix_, passed, spec_.expectations.size());
         return clean && passed == spec_.expectations.size();
     }
 
-private:
-    [[noreturn]] void fail(const std::string& why) const {
-        throw RunError(spec_.runFile.string() + ": error: " + why);
+    const Readback& read(const std::string& name) {
+        auto found = readbacks_.find(name);
+        if (found == readbacks_.end()) {
+            Readback data;
+            withKey("expect", [&] { data = engine_.read(name); });
+            found = readbacks_.emplace(name, std::move(data)).first;
+        }
+        return found->second;
     }
 
-    // Runs a step, turning a VulkanError or a driver's vk::SystemError into "<run file>: error: key: ...".
+private:
+    [[noreturn]] void fail(const std::string& why) const { throw RunError(spec_.runFile.string() + ": error: " + why); }
+
+    // The driver's and the runtime's errors name no run file or key: each step adds them.
     template <typename Step>
     void withKey(const std::string& key, Step step) const {
         try {
@@ -111,258 +94,36 @@ private:
             fail(key + ": " + error.what());
         } catch (const vk::SystemError& error) {
             fail(key + ": " + error.what());
+        } catch (const opengl::GlError& error) {
+            fail(key + ": " + error.what());
         }
     }
 
-    void checkNames(const compiler::ShaderReflection& reflection) const {
-        for (const auto& resource : spec_.resources) {
-            const auto* found = reflection.find(resource.binding);
-            if (!found) {
-                std::string names;
-                for (const auto& r : reflection.resources) names += (names.empty() ? "" : ", ") + r.name;
-                fail("resources." + resource.binding + ": the shader has no resource of that name (it has: " + names + ")");
-            }
-            const bool array = resource.name != resource.binding;
-            if (array != (found->location.count > 1) || resource.element >= found->location.count)
-                fail("resources." + resource.binding + ": the shader declares " +
-                     (found->location.count > 1 ? "an array of " + std::to_string(found->location.count) + " (give \"elements\")"
-                                                : std::string("one resource, not an array")));
-            const auto kind = compiler::resourceKindName(found->kind);
-            const std::string& given = resource.kind;
-            const bool matches = (given == "buffer" && kind == "buffer") || (given == "cbuffer" && kind == "cbuffer") ||
-                                 ((given == "image" || given == "cube") && kind == "texture") ||
-                                 (given == "storage_image" && kind == "storage_image") ||
-                                 (given == "sampler" && kind == "sampler");
-            if (!matches) fail("resources." + resource.name + ": is a " + given + ", but the shader declares a " + std::string(kind));
-        }
-        for (const auto& resource : reflection.resources) {
-            const auto given = std::count_if(spec_.resources.begin(), spec_.resources.end(),
-                                             [&](const auto& r) { return r.binding == resource.name; });
-            if (given == 0) fail("resources: the shader needs '" + resource.name + "' (" +
-                                 std::string(compiler::resourceKindName(resource.kind)) + "), which the run file does not give");
-            if (size_t(given) != resource.location.count)
-                fail("resources." + resource.name + ": the shader declares an array of " + std::to_string(resource.location.count) +
-                     ", the run file gives " + std::to_string(given) + " elements");
-        }
-        const auto holdsValues = [&](const std::string& name, const std::string& where) {
-            const auto found = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
-            if (found == spec_.resources.end()) fail(where + ": no resource named '" + name + "'");
-            if (found->kind == "sampler") fail(where + ": '" + name + "' is a sampler: it holds no values");
-        };
-        for (const auto& expectation : spec_.expectations) holdsValues(expectation.resource, "expect");
-        for (const auto& [name, path] : spec_.saves) holdsValues(name, "save");
-        if (!spec_.pushConstants.empty() && reflection.pushConstantSize == 0)
-            fail("push_constants: the shader has no push constants (no [[vk::push_constant]] block)");
-        std::vector<std::filesystem::path> saves;
-        for (const auto& [name, path] : spec_.saves) saves.push_back(path);
-        files::requireDistinctOutputs(saves, inputFiles()); // before any device work: nothing is lost
-        checkGivenValues();
-    }
-
-    // The values the run file gives an integer resource, and expects of it, must be its integers
-    // (2^32 would wrap, 1.5 be cut): checked before anything is made. A data file's are checked
-    // when it is read.
-    void checkGivenValues() const {
-        const auto formatOf = [&](const std::string& name) -> const vulkan::TexelFormat* {
-            const auto resource = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
-            if (resource == spec_.resources.end()) return nullptr;
-            if (resource->kind == "buffer") return &bufferFormat(*resource);
-            if (resource->kind == "sampler" || resource->kind == "cbuffer") return nullptr;
-            try {
-                return &vulkan::texelFormatNamed(resource->format);
-            } catch (const vulkan::VulkanError&) {
-                return nullptr; // named with its key when the image is made
-            }
-        };
-        const auto check = [&](const ValueSource& source, const std::string& name, const std::string& where) {
-            if (const auto* format = formatOf(name)) {
-                requireFormatValues(source.values, *format, where + ".values");
-                requireFormatValues(source.fill, *format, where + ".fill");
-            }
-        };
-        for (const auto& resource : spec_.resources) check(resource.initial, resource.name, "resources." + resource.name);
-        for (size_t i = 0; i < spec_.expectations.size(); ++i)
-            check(spec_.expectations[i].expected, spec_.expectations[i].resource, "expect[" + std::to_string(i) + "]");
-    }
-
-    // What the run reads: a save must be none of them.
-    std::vector<std::filesystem::path> inputFiles() const {
-        std::vector<std::filesystem::path> inputs{spec_.runFile, spec_.shader};
-        for (const auto& resource : spec_.resources)
-            if (!resource.initial.file.empty()) inputs.push_back(resource.initial.file);
-        for (const auto& expectation : spec_.expectations)
-            if (!expectation.expected.file.empty()) inputs.push_back(expectation.expected.file);
-        return inputs;
-    }
-
-    // The values of a fill, a list or a file, for a resource or an expectation of `count` values.
-    std::vector<double> valuesOf(const ValueSource& source, const std::string& where, const vulkan::TexelFormat& format,
-                                 size_t count, uint32_t channels) const {
-        if (!source.file.empty()) return requireFormatValues(readValues(source.file, format, count), format, where + ".file");
-        if (!source.values.empty()) {
-            if (source.values.size() != count)
-                fail(where + ".values: " + std::to_string(source.values.size()) + " values for " + std::to_string(count));
-            return source.values;
-        }
-        std::vector<double> values(count, 0.0);
-        if (!source.fill.empty()) {
-            if (source.fill.size() != 1 && source.fill.size() != channels)
-                fail(where + ".fill: " + std::to_string(source.fill.size()) + " numbers for " + std::to_string(channels) +
-                     " channels");
-            for (size_t i = 0; i < count; ++i) values[i] = source.fill[source.fill.size() == 1 ? 0 : i % channels];
-        }
-        return values;
-    }
-
-    // An integer resource's values must be its integers: 2^32 would wrap, 1.5 be cut.
-    const std::vector<double>& requireFormatValues(const std::vector<double>& values, const vulkan::TexelFormat& format,
-                                                   const std::string& where) const {
-        for (size_t i = 0; i < values.size(); ++i)
-            if (const auto problem = vulkan::integerValueProblem(format, values[i]); !problem.empty())
-                fail(where + "[" + std::to_string(i) + "]: " + problem);
-        return values;
-    }
-
-    std::vector<double> initialValues(const ResourceSpec& spec, const vulkan::TexelFormat& format, size_t count,
-                                      uint32_t channels) const {
-        return valuesOf(spec.initial, "resources." + spec.name, format, count, channels);
-    }
-
-    static const vulkan::TexelFormat& bufferFormat(const ResourceSpec& spec) {
-        if (spec.elementType == "uint") return vulkan::texelFormatNamed("R32_UINT");
-        if (spec.elementType == "int") return vulkan::texelFormatNamed("R32_SINT");
-        return vulkan::texelFormatNamed("R32_SFLOAT");
-    }
-
-    void makeAndBind(const ResourceSpec& spec, vulkan::ComputeProgram& compute) {
-        const auto& reflected = *compute.reflection().find(spec.binding);
-        if (spec.kind == "cbuffer") {
-            const uint32_t size = std::max(16u, (reflected.blockSize + 15) / 16 * 16);
-            auto buffer = std::make_unique<vulkan::Buffer>(context_, size, vk::BufferUsageFlagBits::eUniformBuffer, spec.name);
-            buffer->write(vulkan::packBlock(spec.binding, reflected.members, size, spec.members));
-            compute.bind(spec.binding, *buffer, spec.element);
-            resources_[spec.name] = std::move(buffer);
-        } else if (spec.kind == "buffer") {
-            const auto& format = bufferFormat(spec);
-            size_t count = spec.count ? spec.count : spec.sizeBytes / 4;
-            if (!count) count = spec.initial.values.size();
-            if (!count && !spec.initial.file.empty()) count = readValues(spec.initial.file, format).size();
-            if (!count) fail("resources." + spec.name + ": give \"count\", \"size_bytes\", \"values\" or \"file\"");
-            auto buffer = std::make_unique<vulkan::Buffer>(context_, std::max<size_t>(count * 4, reflected.blockSize),
-                                                           vk::BufferUsageFlagBits::eStorageBuffer, spec.name);
-            const auto values = initialValues(spec, format, count, 1);
-            std::vector<std::byte> bytes(count * 4);
-            vulkan::encodeTexels(format, values, bytes);
-            buffer->write(bytes);
-            compute.bind(spec.binding, *buffer, spec.element);
-            resources_[spec.name] = std::move(buffer);
-        } else if (spec.kind == "sampler") {
-            auto sampler = std::make_unique<vulkan::Sampler>(context_, samplerDesc(spec));
-            compute.bind(spec.binding, *sampler, spec.element);
-            resources_[spec.name] = std::move(sampler);
-        } else {
-            const auto& format = vulkan::texelFormatNamed(spec.format);
-            const uint32_t mips = spec.mips ? spec.mips : vulkan::fullMipCount(spec.width, spec.height);
-            auto image = std::make_unique<vulkan::Image>(
-                context_, vulkan::ImageDesc{spec.name, &format, spec.width, spec.height, spec.layers, mips,
-                                            spec.dimension == "cube", spec.kind == "storage_image"});
-            const auto values = initialValues(spec, format, image->valueCount(), format.channels);
-            std::vector<std::byte> bytes(values.size() * format.bytesPerChannel);
-            vulkan::encodeTexels(format, values, bytes);
-            image->uploadBytes(context_, bytes);
-            compute.bind(spec.binding, *image, spec.mip, spec.element);
-            resources_[spec.name] = std::move(image);
-        }
-    }
-
-    vulkan::SamplerDesc samplerDesc(const ResourceSpec& spec) const {
-        vulkan::SamplerDesc desc;
-        const auto filter = [&](const std::string& value, const std::string& key) {
-            if (value == "nearest") return vk::Filter::eNearest;
-            if (value == "linear") return vk::Filter::eLinear;
-            fail("resources." + spec.name + "." + key + ": '" + value + "' (nearest, linear)");
-        };
-        desc.filter = filter(spec.filter, "filter");
-        desc.mipmap = filter(spec.mipmap, "mipmap") == vk::Filter::eNearest ? vk::SamplerMipmapMode::eNearest
-                                                                             : vk::SamplerMipmapMode::eLinear;
-        if (spec.address == "clamp") desc.address = vk::SamplerAddressMode::eClampToEdge;
-        else if (spec.address == "repeat") desc.address = vk::SamplerAddressMode::eRepeat;
-        else if (spec.address == "mirror") desc.address = vk::SamplerAddressMode::eMirroredRepeat;
-        else fail("resources." + spec.name + ".address: '" + spec.address + "' (clamp, repeat, mirror)");
-        return desc;
-    }
-
-    struct Readback {
-        std::vector<double> values;
-        const vulkan::TexelFormat* format;
-        const vulkan::Image* image; // null for buffers
-    };
-
-    Readback readback(const std::string& name) const {
-        const auto found = resources_.find(name);
-        if (found == resources_.end()) fail("no resource named '" + name + "' to check or save");
-        if (const auto* image = std::get_if<std::unique_ptr<vulkan::Image>>(&found->second)) {
-            const auto& format = *(*image)->desc().format;
-            const auto bytes = (*image)->downloadBytes(context_);
-            std::vector<double> values(bytes.size() / format.bytesPerChannel);
-            vulkan::decodeTexels(format, bytes, values);
-            return {values, &format, image->get()};
-        }
-        if (const auto* buffer = std::get_if<std::unique_ptr<vulkan::Buffer>>(&found->second)) {
-            const auto spec = std::find_if(spec_.resources.begin(), spec_.resources.end(), [&](const auto& r) { return r.name == name; });
-            const auto& format = spec->kind == "buffer" ? bufferFormat(*spec) : vulkan::texelFormatNamed("R32_SFLOAT");
-            const auto bytes = (*buffer)->read();
-            std::vector<double> values(bytes.size() / 4);
-            vulkan::decodeTexels(format, bytes, values);
-            return {values, &format, nullptr};
-        }
-        fail("'" + name + "' is a sampler: it holds no values");
-    }
-
-    // Where value i of a subresource selection lies, for the report.
-    static std::string locate(const vulkan::Image& image, uint32_t firstMip, uint32_t firstLayer, size_t index, bool oneLayer) {
-        const uint32_t channels = image.desc().format->channels;
-        size_t texel = index / channels;
-        for (uint32_t mip = firstMip; mip < image.desc().mips; ++mip) {
-            const size_t perLayer = size_t(image.mipWidth(mip)) * image.mipHeight(mip);
-            const size_t layers = oneLayer ? 1 : image.desc().layers;
-            if (texel < perLayer * layers) {
-                const size_t layer = firstLayer + texel / perLayer, inLayer = texel % perLayer;
-                return fmt::format("mip {} layer {} ({}, {}) channel {}", mip, layer, inLayer % image.mipWidth(mip),
-                                   inLayer / image.mipWidth(mip), index % channels);
-            }
-            texel -= perLayer * layers;
-        }
-        return "?";
-    }
-
-    bool check(const Expectation& expectation) const {
-        auto data = readback(expectation.resource);
+    bool check(const Expectation& expectation) {
+        const auto& data = read(expectation.resource);
         std::vector<double> selected = data.values;
         uint32_t firstMip = 0, firstLayer = 0;
         bool oneLayer = false;
         if (data.image && (expectation.mip || expectation.layer)) {
-            const auto& desc = data.image->desc();
+            const auto& shape = *data.image;
             firstMip = expectation.mip.value_or(0);
-            const uint32_t lastMip = expectation.mip ? firstMip + 1 : desc.mips;
-            if (firstMip >= desc.mips) fail("expect: " + expectation.resource + " has no mip " + std::to_string(firstMip));
-            if (expectation.layer && *expectation.layer >= desc.layers)
+            const uint32_t lastMip = expectation.mip ? firstMip + 1 : shape.mips;
+            if (firstMip >= shape.mips) fail("expect: " + expectation.resource + " has no mip " + std::to_string(firstMip));
+            if (expectation.layer && *expectation.layer >= shape.layers)
                 fail("expect: " + expectation.resource + " has no layer " + std::to_string(*expectation.layer));
             oneLayer = expectation.layer.has_value();
             firstLayer = expectation.layer.value_or(0);
             selected.clear();
             for (uint32_t mip = firstMip; mip < lastMip; ++mip)
-                for (uint32_t layer = 0; layer < desc.layers; ++layer) {
+                for (uint32_t layer = 0; layer < shape.layers; ++layer) {
                     if (oneLayer && layer != firstLayer) continue;
-                    const size_t begin = data.image->valueOffset(mip, layer);
-                    const size_t end = layer + 1 < desc.layers ? data.image->valueOffset(mip, layer + 1)
-                                                               : data.image->valueOffset(mip + 1, 0);
-                    selected.insert(selected.end(), data.values.begin() + begin, data.values.begin() + end);
+                    const size_t begin = shape.valueOffset(mip, layer);
+                    const size_t end = layer + 1 < shape.layers ? shape.valueOffset(mip, layer + 1) : shape.valueOffset(mip + 1, 0);
+                    selected.insert(selected.end(), data.values.begin() + std::ptrdiff_t(begin), data.values.begin() + std::ptrdiff_t(end));
                 }
         } else if (!data.image && (expectation.mip || expectation.layer)) {
             fail("expect: " + expectation.resource + " is a buffer: it has no mips or layers");
         }
-
         CheckResult result;
         std::string how;
         if (expectation.range) {
@@ -370,8 +131,7 @@ private:
             how = fmt::format("within [{}, {}]", (*expectation.range)[0], (*expectation.range)[1]);
         } else {
             const uint32_t channels = data.image ? data.format->channels : 1;
-            const auto expected = valuesOf(expectation.expected, "expect " + expectation.resource, *data.format,
-                                           selected.size(), channels);
+            const auto expected = valuesOf(spec_, expectation.expected, "expect " + expectation.resource, *data.format, selected.size(), channels);
             result = compareValues(selected, expected, expectation.tolerance, *data.format);
             how = describeTolerance(expectation.tolerance);
         }
@@ -385,34 +145,54 @@ private:
             detail = fmt::format("{}worst at {}: expected {}, got {} (error {:.3g}, {} ulp)",
                                  result.passed ? "" : fmt::format("{} outside, ", result.failed), where, result.expected,
                                  result.actual, result.worstAbsolute, result.worstUlp);
-        fmt::print(out_, "{} {}: {} values {}; {}\n", result.passed ? "PASS" : "FAIL", expectation.resource,
+        fmt::print(out_, "{}{} {}: {} values {}; {}\n", prefix_, result.passed ? "PASS" : "FAIL", expectation.resource,
                    result.compared, how, detail);
         return result.passed;
     }
 
-    // Every save or none: all are written to temporaries first (files::AtomicOutput).
-    void saveAll() const {
-        files::AtomicOutput output;
-        output.protect(inputFiles());
-        for (const auto& [name, path] : spec_.saves) {
-            const auto data = readback(name);
-            std::vector<size_t> shape{data.values.size()};
-            if (data.image && data.image->desc().mips == 1) {
-                const auto& desc = data.image->desc();
-                shape = {desc.layers, desc.height, desc.width, desc.format->channels};
-            }
-            output.add(path, encodeValues(path, *data.format, data.values, shape));
-        }
-        output.commit();
-        for (const auto& [name, path] : spec_.saves) fmt::print(out_, "saved    {} -> {}\n", name, path.string());
-    }
-
     const RunSpec& spec_;
+    const RunPlan& plan_;
+    RunEngine& engine_;
     std::ostream& out_;
-    std::shared_ptr<vulkan::ValidationLog> log_;
-    vulkan::VulkanContext context_;
-    std::map<std::string, Resource> resources_;
+    std::string prefix_;
+    std::map<std::string, Readback> readbacks_;
 };
+
+// Every save or none: all are written to temporaries first (files::AtomicOutput).
+void saveAll(const RunSpec& spec, ApiRun& run, std::ostream& out) {
+    files::AtomicOutput output;
+    output.protect(inputFiles(spec));
+    for (const auto& [name, path] : spec.saves) {
+        const auto& data = run.read(name);
+        std::vector<size_t> shape{data.values.size()};
+        if (data.image && data.image->mips == 1) shape = {data.image->layers, data.image->height, data.image->width, data.image->format->channels};
+        output.add(path, encodeValues(path, *data.format, data.values, shape));
+    }
+    output.commit();
+    for (const auto& [name, path] : spec.saves) fmt::print(out, "saved    {} -> {}\n", name, path.string());
+}
+
+// What each API's shaders wrote, compared: the report names the largest difference and where.
+bool compareApis(const RunSpec& spec, const RunPlan& plan, ApiRun& vulkan, ApiRun& opengl, std::ostream& out) {
+    const Tolerance bound = spec.crossApi.value_or(kDefaultCrossApiTolerance);
+    bool passed = true;
+    for (const auto& name : plan.written) {
+        const auto& a = vulkan.read(name);
+        const auto& b = opengl.read(name);
+        if (a.values.size() != b.values.size()) {
+            fmt::print(out, "FAIL cross-API {}: {} values on Vulkan, {} on OpenGL\n", name, a.values.size(), b.values.size());
+            passed = false;
+            continue;
+        }
+        const auto result = compareValues(b.values, a.values, bound, *a.format);
+        fmt::print(out, "{} cross-API {}: {} values, {}{}; largest difference {:.3g} ({} ulp) at {}: vulkan {}, opengl {}\n",
+                   result.passed ? "PASS" : "FAIL", name, result.compared, describeTolerance(bound),
+                   result.passed ? "" : fmt::format(", {} outside", result.failed), result.worstAbsolute, result.worstUlp,
+                   locate(a, result.worstIndex), result.expected, result.actual);
+        passed = passed && result.passed;
+    }
+    return passed;
+}
 
 } // namespace
 
@@ -429,7 +209,35 @@ compiler::CompileOptions compileOptionsOf(const RunSpec& spec) {
 }
 
 bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out) {
-    return Executor(spec, options, out).run();
+    const auto programs = loadPrograms(spec);
+    const auto plan = planRun(spec, programs);
+    if (spec.graphics)
+        fmt::print(out, "shader   {} ({}) and {} ({})\n", spec.graphics->vertex.shader.string(), spec.graphics->vertex.entry,
+                   spec.graphics->pixel.shader.string(), spec.graphics->pixel.entry);
+    else
+        fmt::print(out, "shader   {} ({}), workgroup {}x{}x{}\n", spec.shader.string(), spec.entry, programs.compute->reflection.workgroupSize[0],
+                   programs.compute->reflection.workgroupSize[1], programs.compute->reflection.workgroupSize[2]);
+    const bool both = options.api == RunApi::All;
+    std::unique_ptr<RunEngine> vulkanEngine, openglEngine;
+    std::optional<ApiRun> vulkanRun, openglRun;
+    bool passed = true;
+    if (options.api != RunApi::OpenGl) {
+        vulkanEngine = makeVulkanEngine(options);
+        vulkanRun.emplace(spec, plan, *vulkanEngine, out, both ? "vulkan: " : "");
+        passed = vulkanRun->run(programs) && passed;
+    }
+    if (options.api != RunApi::Vulkan) {
+        try {
+            openglEngine = makeOpenGlEngine();
+        } catch (const opengl::GlError& error) {
+            throw RunError(spec.runFile.string() + ": error: OpenGL: " + error.what());
+        }
+        openglRun.emplace(spec, plan, *openglEngine, out, both ? "opengl: " : "");
+        passed = openglRun->run(programs) && passed;
+    }
+    if (both) passed = compareApis(spec, plan, *vulkanRun, *openglRun, out) && passed;
+    saveAll(spec, vulkanRun ? *vulkanRun : *openglRun, out);
+    return passed;
 }
 
 } // namespace iblkit::run

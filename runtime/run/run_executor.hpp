@@ -10,7 +10,11 @@
 
 namespace iblkit::run {
 
+enum class RunApi { Vulkan, OpenGl, All };
+
 struct RunOptions {
+    // Vulkan from the SPIR-V, OpenGL from the GLSL form, or both, compared with each other.
+    RunApi api = RunApi::Vulkan;
     std::string device;      // see vulkan::ContextOptions
     bool validation = false; // any validation message then fails the run
     // How long the dispatch (or any upload or download) may take, and what to do when it does
@@ -19,14 +23,20 @@ struct RunOptions {
     std::function<void(const std::string& message)> onDeviceFailure = {};
 };
 
+// How far OpenGL's results may lie from Vulkan's when the run file does not say
+// (docs/run-files.md gives the measurement behind it).
+inline const Tolerance kDefaultCrossApiTolerance{std::nullopt, std::nullopt, 4.0};
+
 // How the run file's HLSL shader is compiled: its entry point, include folders, defines, image
 // formats, 16-bit types and HLSL version.
 compiler::CompileOptions compileOptionsOf(const RunSpec& spec);
 
-// Compiles the shader, makes and fills the resources, dispatches, checks every expectation
-// and saves what was asked, printing a line for each step to `out`. Returns true when every
-// expectation passed. Throws RunError, compiler::CompileError or vulkan::VulkanError when the
-// run cannot be carried out at all.
+// Compiles the shaders, makes and fills the resources, dispatches or draws, checks every
+// expectation and saves what was asked, printing a line for each step to `out`. With
+// RunApi::All it does so on each API and compares what the shaders wrote on one with the
+// other (the run file's "cross_api" bound, or kDefaultCrossApiTolerance). Returns true when
+// every expectation and comparison passed. Throws RunError, compiler::CompileError or
+// vulkan::VulkanError when the run cannot be carried out at all.
 bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out);
 
 } // namespace iblkit::run

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -13,6 +14,8 @@ namespace iblkit::run {
 namespace {
 
 using nlohmann::json;
+
+constexpr std::array kDrawKeys{"vertex", "pixel", "vertex_input", "indices", "draw", "targets", "raster", "viewport"};
 
 constexpr uint64_t kLargest32 = 0xFFFFFFFFu;
 
@@ -23,12 +26,24 @@ public:
     RunSpec read(const json& root, const std::filesystem::path& file) const {
         fields_.objectOf(root, "the run file", {"shader", "entry", "include", "defines", "image_formats", "enable_16bit_types",
                                                 "hlsl_version", "specialization",
-                                                "push_constants", "resources", "dispatch", "expect", "save", "comment"});
+                                                "push_constants", "resources", "dispatch", "expect", "save", "comment",
+                                                "vertex", "pixel", "vertex_input", "indices", "draw", "targets", "raster",
+                                                "viewport", "cross_api"});
         RunSpec spec;
         spec.runFile = file;
-        if (!root.contains("shader")) fields_.fail("the run file", "needs a \"shader\"");
-        spec.shader = path(root.at("shader"), "shader");
-        if (root.contains("entry")) spec.entry = fields_.text(root.at("entry"), "entry");
+        const bool draws = std::any_of(kDrawKeys.begin(), kDrawKeys.end(), [&](const char* key) { return root.contains(key); });
+        if (draws && root.contains("dispatch"))
+            fields_.fail("the run file", "mixes a dispatch with a draw: give \"dispatch\" or \"vertex\" and \"pixel\", not both");
+        if (draws) {
+            if (root.contains("entry")) fields_.fail("entry", "a draw takes each stage's entry in \"vertex\" and \"pixel\"");
+            spec.graphics = readGraphics(fields_, root, folder_);
+            spec.shader = spec.graphics->vertex.shader;
+            spec.entry = spec.graphics->vertex.entry;
+        } else {
+            if (!root.contains("shader")) fields_.fail("the run file", "needs a \"shader\"");
+            spec.shader = path(root.at("shader"), "shader");
+            if (root.contains("entry")) spec.entry = fields_.text(root.at("entry"), "entry");
+        }
         if (root.contains("include"))
             for (const auto& dir : fields_.textArray(root.at("include"), "include")) spec.includeDirs.push_back(folder_ / dir);
         if (root.contains("defines")) spec.defines = fields_.textMap(root.at("defines"), "defines");
@@ -43,12 +58,13 @@ public:
         if (root.contains("resources"))
             for (const auto& [name, object] : fields_.object(root.at("resources"), "resources").items())
                 for (auto& each : resourceOrElements(name, object)) spec.resources.push_back(std::move(each));
-        readDispatch(root, spec);
+        if (!draws) readDispatch(root, spec);
         if (root.contains("expect")) {
             const auto& expectations = fields_.array(root.at("expect"), "expect");
             for (size_t index = 0; index < expectations.size(); ++index)
                 spec.expectations.push_back(expectation(expectations[index], index));
         }
+        if (root.contains("cross_api")) spec.crossApi = tolerance(root.at("cross_api"), "cross_api");
         if (root.contains("save"))
             for (const auto& [name, file] : fields_.object(root.at("save"), "save").items())
                 spec.saves[name] = path(file, "save." + name);
@@ -61,7 +77,7 @@ private:
     }
 
     void readDispatch(const json& root, RunSpec& spec) const {
-        if (!root.contains("dispatch")) fields_.fail("the run file", "needs a \"dispatch\"");
+        if (!root.contains("dispatch")) fields_.fail("the run file", "needs a \"dispatch\" (a compute run) or \"vertex\" and \"pixel\" (a draw)");
         const auto& dispatch = fields_.objectOf(root.at("dispatch"), "dispatch", {"threads", "groups"});
         if (dispatch.contains("threads") == dispatch.contains("groups"))
             fields_.fail("dispatch", "needs exactly one of \"threads\" and \"groups\"");
@@ -188,14 +204,18 @@ private:
         }
         if (expectation.expected.given() == expectation.range.has_value())
             fields_.fail(where, "needs exactly one of \"fill\", \"values\", \"file\" or \"range\"");
-        if (object.contains("tolerance")) {
-            const auto& tolerance = fields_.objectOf(object.at("tolerance"), where + ".tolerance", {"abs", "rel", "ulp"});
-            const auto bound = [&](const char* key) { return fields_.nonNegative(tolerance.at(key), where + ".tolerance." + key); };
-            if (tolerance.contains("abs")) expectation.tolerance.absolute = bound("abs");
-            if (tolerance.contains("rel")) expectation.tolerance.relative = bound("rel");
-            if (tolerance.contains("ulp")) expectation.tolerance.ulp = bound("ulp");
-        }
+        if (object.contains("tolerance")) expectation.tolerance = tolerance(object.at("tolerance"), where + ".tolerance");
         return expectation;
+    }
+
+    Tolerance tolerance(const json& value, const std::string& where) const {
+        const auto& object = fields_.objectOf(value, where, {"abs", "rel", "ulp"});
+        const auto bound = [&](const char* key) { return fields_.nonNegative(object.at(key), where + "." + key); };
+        Tolerance tolerance;
+        if (object.contains("abs")) tolerance.absolute = bound("abs");
+        if (object.contains("rel")) tolerance.relative = bound("rel");
+        if (object.contains("ulp")) tolerance.ulp = bound("ulp");
+        return tolerance;
     }
 
     JsonFields fields_;

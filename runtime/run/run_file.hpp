@@ -54,6 +54,56 @@ struct Expectation {
     Tolerance tolerance;
 };
 
+// A draw's shader stage: its file and entry point.
+struct StageSpec {
+    std::filesystem::path shader;
+    std::string entry;
+};
+
+// One per-vertex attribute, bound to the vertex shader's input of that semantic.
+struct VertexInputSpec {
+    std::string semantic; // as the run file writes it: "POSITION", "TEXCOORD0"
+    std::string format;   // a vertex format: vertex_format.hpp
+    ValueSource source;   // "values" or "file"
+};
+
+// A render target, named by the pixel shader's output semantic (SV_Target0 ... SV_Target7).
+struct TargetSpec {
+    std::string name; // as the run file writes it; expectations and saves use it
+    std::string format;
+    uint32_t width = 0, height = 0;
+    std::array<double, 4> clear{0, 0, 0, 0};
+    std::string blend = "none"; // none, alpha, premultiplied, additive
+};
+
+struct DepthSpec {
+    std::string name = "SV_Depth";
+    uint32_t width = 0, height = 0; // the colour targets' size when 0
+    double clear = 1.0;
+    std::string test = "less"; // never, less, equal, less_equal, greater, not_equal, greater_equal, always
+    bool write = true;
+};
+
+struct DrawSpec {
+    std::optional<uint32_t> vertices; // vertices drawn, or indices when the run file gives "indices"
+    uint32_t instances = 1, firstVertex = 0, firstInstance = 0;
+    int32_t baseVertex = 0;
+    std::string topology = "triangle_list"; // triangle_strip, line_list, line_strip, point_list
+};
+
+// What makes a run file a draw rather than a dispatch.
+struct GraphicsSpec {
+    StageSpec vertex, pixel;
+    std::vector<VertexInputSpec> vertexInput;
+    std::vector<uint32_t> indices;
+    DrawSpec draw;
+    std::vector<TargetSpec> targets;
+    std::optional<DepthSpec> depth;
+    std::string cull = "none";       // none, front, back
+    std::string front = "clockwise"; // clockwise or counter_clockwise, as seen in the target
+    std::optional<std::array<double, 6>> viewport; // x, y, width, height, min depth, max depth
+};
+
 struct RunSpec {
     std::filesystem::path runFile;
     std::filesystem::path shader;
@@ -69,6 +119,8 @@ struct RunSpec {
     std::optional<std::array<uint32_t, 3>> threads, groups;
     std::vector<Expectation> expectations;
     std::map<std::string, std::filesystem::path> saves;
+    std::optional<GraphicsSpec> graphics; // a draw; `shader` and `entry` are then the vertex stage's
+    std::optional<Tolerance> crossApi;    // how far the APIs may differ, when not the default
 };
 
 // Reads a run file (docs/run-files.md); paths in it are relative to the file.
@@ -80,6 +132,9 @@ void readHlslLanguage(const JsonFields& fields, const nlohmann::json& object, co
                       bool& enable16BitTypes, lowering::HlslVersion& version);
 
 RunSpec readRunFile(const std::filesystem::path& path);
+// The keys that make a draw (graphics_run_file.cpp): "vertex", "pixel", "vertex_input", "indices",
+// "draw", "targets", "raster" and "viewport".
+GraphicsSpec readGraphics(const JsonFields& fields, const nlohmann::json& root, const std::filesystem::path& folder);
 // The same from the file's text; paths in it are relative to `path`'s folder.
 RunSpec parseRunFile(const std::string& text, const std::filesystem::path& path);
 

@@ -2,6 +2,7 @@
 
 #include "buffer.hpp"
 #include "image.hpp"
+#include "resource_bindings.hpp"
 #include "vulkan_context.hpp"
 
 #include "reflection.hpp"
@@ -29,41 +30,27 @@ public:
     ComputeProgram(const VulkanContext& context, const std::vector<uint32_t>& spirv,
                    compiler::ShaderReflection reflection, const std::map<std::string, double>& specialization = {});
 
-    const compiler::ShaderReflection& reflection() const { return reflection_; }
+    const compiler::ShaderReflection& reflection() const { return bindings_.reflection(); }
 
     // Each checks that the shader has a resource of that name and kind, with a matching
     // format and dimension, and throws VulkanError naming the problem otherwise. Images are
     // bound whole when sampled, and at one mip when written.
     // `element` is the index within an array of resources (Texture2D t[4]); each element of an
     // array must be bound before a dispatch.
-    void bind(const std::string& name, const Buffer& buffer, uint32_t element = 0);
-    void bind(const std::string& name, Image& image, uint32_t mip = 0, uint32_t element = 0);
-    void bind(const std::string& name, const Sampler& sampler, uint32_t element = 0);
-    void setPushConstants(std::span<const std::byte> bytes);
+    void bind(const std::string& name, const Buffer& buffer, uint32_t element = 0) { bindings_.bind(name, buffer, element); }
+    void bind(const std::string& name, Image& image, uint32_t mip = 0, uint32_t element = 0) {
+        bindings_.bind(name, image, mip, element);
+    }
+    void bind(const std::string& name, const Sampler& sampler, uint32_t element = 0) { bindings_.bind(name, sampler, element); }
+    void setPushConstants(std::span<const std::byte> bytes) { bindings_.setPushConstants(bytes); }
 
     std::array<uint32_t, 3> groupsForThreads(std::array<uint32_t, 3> threads) const;
     DispatchTiming dispatchGroups(const VulkanContext& context, std::array<uint32_t, 3> groups);
     DispatchTiming dispatchThreads(const VulkanContext& context, std::array<uint32_t, 3> threads);
 
 private:
-    struct Bound {
-        vk::DescriptorType type;
-        vk::DescriptorBufferInfo buffer;
-        vk::DescriptorImageInfo image;
-    };
-    const compiler::ReflectedResource& resource(const std::string& name) const;
-    void record(const std::string& name, uint32_t element, Bound bound);
-    void writeDescriptorSets() const;
-
-    compiler::ShaderReflection reflection_;
-    const vk::raii::Device* device_;
-    std::map<uint32_t, vk::raii::DescriptorSetLayout> setLayouts_;
-    vk::raii::PipelineLayout pipelineLayout_{nullptr};
+    ResourceBindings bindings_;
     vk::raii::Pipeline pipeline_{nullptr};
-    vk::raii::DescriptorPool descriptorPool_{nullptr};
-    std::map<uint32_t, vk::raii::DescriptorSet> sets_;
-    std::map<std::string, std::vector<std::optional<Bound>>> bound_; // by name, one per element
-    std::vector<std::byte> pushConstants_;
 };
 
 } // namespace iblkit::vulkan

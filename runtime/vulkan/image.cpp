@@ -15,6 +15,8 @@ vk::ImageUsageFlags usageOf(const ImageDesc& desc) {
     vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc |
                                 vk::ImageUsageFlagBits::eTransferDst;
     if (desc.storage) usage |= vk::ImageUsageFlagBits::eStorage;
+    if (desc.attachment)
+        usage |= desc.format->depth() ? vk::ImageUsageFlagBits::eDepthStencilAttachment : vk::ImageUsageFlagBits::eColorAttachment;
     return usage;
 }
 
@@ -39,7 +41,7 @@ void validate(const VulkanContext& context, const ImageDesc& desc) {
             desc.cube ? vk::ImageCreateFlagBits::eCubeCompatible : vk::ImageCreateFlags());
     } catch (const vk::FormatNotSupportedError&) {
         fail("the device does not support " + std::string(desc.format->name) +
-             (desc.storage ? " as a storage image" : " as a sampled image"));
+             (desc.storage ? " as a storage image" : desc.attachment ? " as a render target" : " as a sampled image"));
     }
     if (desc.width > properties.maxExtent.width || desc.height > properties.maxExtent.height ||
         desc.mips > properties.maxMipLevels || desc.layers > properties.maxArrayLayers)
@@ -53,13 +55,13 @@ std::vector<vk::BufferImageCopy> copyRegions(const Image& image) {
     const auto& desc = image.desc();
     for (uint32_t mip = 0; mip < desc.mips; ++mip)
         regions.emplace_back(image.valueOffset(mip, 0) / desc.format->channels * desc.format->bytesPerTexel(), 0, 0,
-                             vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, mip, 0, desc.layers),
+                             vk::ImageSubresourceLayers(desc.format->aspect(), mip, 0, desc.layers),
                              vk::Offset3D(0, 0, 0), vk::Extent3D(image.mipWidth(mip), image.mipHeight(mip), 1));
     return regions;
 }
 
 vk::ImageSubresourceRange wholeImage(const ImageDesc& desc) {
-    return {vk::ImageAspectFlagBits::eColor, 0, desc.mips, 0, desc.layers};
+    return {desc.format->aspect(), 0, desc.mips, 0, desc.layers};
 }
 
 } // namespace
@@ -138,7 +140,7 @@ vk::ImageView Image::view(vk::ImageViewType type, uint32_t baseMip, uint32_t mip
     auto found = views_.find(key);
     if (found == views_.end()) {
         const vk::ImageViewCreateInfo info({}, *image_, type, desc_.format->format, {},
-                                           {vk::ImageAspectFlagBits::eColor, baseMip, mipCount, baseLayer, layerCount});
+                                           {desc_.format->aspect(), baseMip, mipCount, baseLayer, layerCount});
         found = views_.emplace(key, vk::raii::ImageView(*device_, info)).first;
     }
     return *found->second;
@@ -171,7 +173,7 @@ SubmissionTiming Image::copyMipFrom(const VulkanContext& context, const Image& s
         source.desc().layers != desc_.layers)
         throw VulkanError("image '" + desc_.name + "': mip " + std::to_string(mip) + " of '" + source.desc().name +
                           "' differs in format, size or layers");
-    const vk::ImageSubresourceLayers layers(vk::ImageAspectFlagBits::eColor, mip, 0, desc_.layers);
+    const vk::ImageSubresourceLayers layers(desc_.format->aspect(), mip, 0, desc_.layers);
     const vk::ImageCopy region(layers, {}, layers, {}, vk::Extent3D(mipWidth(mip), mipHeight(mip), 1));
     return submitTimed(
         context,

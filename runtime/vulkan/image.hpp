@@ -21,6 +21,7 @@ struct ImageDesc {
     uint32_t mips = 1;
     bool cube = false;
     bool storage = false; // usable as a storage image (RWTexture*)
+    bool attachment = false; // a render target (a depth target for a depth format)
 };
 
 // The number of mips of a full chain down to 1x1.

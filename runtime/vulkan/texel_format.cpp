@@ -1,6 +1,7 @@
 #include "texel_format.hpp"
 
 #include "half_float.hpp"
+#include "image_formats.hpp"
 #include "vulkan_error.hpp"
 
 #include <algorithm>
@@ -27,6 +28,7 @@ constexpr std::array kFormats{
     TexelFormat{vk::Format::eR32G32Sint, "R32G32_SINT", 2, 4, ComponentKind::SInt},
     TexelFormat{vk::Format::eR32G32B32A32Uint, "R32G32B32A32_UINT", 4, 4, ComponentKind::UInt},
     TexelFormat{vk::Format::eR32G32B32A32Sint, "R32G32B32A32_SINT", 4, 4, ComponentKind::SInt},
+    TexelFormat{vk::Format::eD32Sfloat, "D32_SFLOAT", 1, 4, ComponentKind::Float},
 };
 
 double decodeOne(const TexelFormat& format, const std::byte* bytes) {
@@ -97,6 +99,11 @@ void copySingles(const void* from, void* to, size_t count) { std::memcpy(to, fro
 const TexelFormat& texelFormatNamed(std::string_view name) {
     for (const auto& format : kFormats)
         if (format.name == name) return format;
+    // The short names of GLSL and [[vk::image_format]]: "rgba32f", and "d32f" for depth.
+    const auto* known = compiler::findImageFormatByGlslName(name);
+    const std::string_view vulkanName = name == "d32f" ? "D32_SFLOAT" : known ? known->vulkanName : "";
+    for (const auto& format : kFormats)
+        if (!vulkanName.empty() && format.name == vulkanName) return format;
     throw VulkanError("unsupported format '" + std::string(name) + "' (supported: " + supportedFormatNames() + ")");
 }
 

@@ -20,6 +20,8 @@ struct TexelFormat {
     ComponentKind kind;
 
     uint32_t bytesPerTexel() const { return channels * bytesPerChannel; }
+    bool depth() const { return format == vk::Format::eD32Sfloat; }
+    vk::ImageAspectFlags aspect() const { return depth() ? vk::ImageAspectFlagBits::eDepth : vk::ImageAspectFlagBits::eColor; }
 };
 
 // Throws VulkanError naming the supported formats.

@@ -128,8 +128,12 @@ bool hasDeviceExtension(const vk::raii::PhysicalDevice& device, std::string_view
                        [&](const vk::ExtensionProperties& extension) { return name == extension.extensionName.data(); });
 }
 
+// A queue that draws as well, where there is one: every GPU and lavapipe have it.
 uint32_t computeQueueFamily(const vk::raii::PhysicalDevice& device) {
     const auto families = device.getQueueFamilyProperties();
+    const auto both = vk::QueueFlagBits::eCompute | vk::QueueFlagBits::eGraphics;
+    for (uint32_t i = 0; i < families.size(); ++i)
+        if ((families[i].queueFlags & both) == both) return i;
     for (uint32_t i = 0; i < families.size(); ++i)
         if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return i;
     throw VulkanError("the Vulkan device has no compute queue");
@@ -185,6 +189,7 @@ VulkanContext::VulkanContext(const ContextOptions& options)
 
     queueFamily_ = computeQueueFamily(physicalDevice_);
     const auto family = physicalDevice_.getQueueFamilyProperties()[queueFamily_];
+    canDraw_ = bool(family.queueFlags & vk::QueueFlagBits::eGraphics);
     if (family.timestampValidBits > 0) timestampPeriod_ = physicalDevice_.getProperties().limits.timestampPeriod;
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);

@@ -36,6 +36,7 @@ public:
     // pipelineCacheUUID, in hex.
     std::string pipelineCacheIdentity() const;
     bool validationEnabled() const { return validationEnabled_; }
+    bool canDraw() const { return canDraw_; } // the queue draws as well as dispatches
     const ShaderFeatures& shaderFeatures() const { return shaderFeatures_; } // enabled: all the device has
     uint64_t mostGroupsPerDispatch() const { return mostGroupsPerDispatch_; }
     // Nanoseconds per timestamp tick, 0 when the queue has no timestamps.
@@ -61,6 +62,7 @@ private:
     vk::raii::PhysicalDevice physicalDevice_{nullptr};
     DeviceInfo deviceInfo_;
     uint32_t queueFamily_ = 0;
+    bool canDraw_ = false;
     ShaderFeatures shaderFeatures_;
     double timestampPeriod_ = 0;
     vk::raii::Device device_{nullptr};

@@ -16,10 +16,14 @@ void addRunCommand(CLI::App& app) {
         std::string runFile;
         RunRequest request;
         double timeoutSeconds = 60;
+        std::string api = "vulkan";
     };
     auto arguments = std::make_shared<Arguments>();
-    auto* command = app.add_subcommand("run", "Run a compute shader as a run file describes, and check its results");
+    auto* command = app.add_subcommand("run", "Run a dispatch or a draw as a run file describes, and check its results");
     command->add_option("run_file", arguments->runFile, "Run file (JSON)")->required();
+    command->add_option("--api", arguments->api,
+                        "vulkan (the SPIR-V), opengl (the GLSL form, through EGL) or all (both, compared; default vulkan)")
+        ->check(CLI::IsMember({"vulkan", "opengl", "all"}));
     command->add_option("--device", arguments->request.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("--validate", arguments->request.validation, "Turn on the Vulkan validation layer; any message fails the run");
     command->add_option("--timeout", arguments->timeoutSeconds, "Seconds the device may take for the dispatch (default 60)")
@@ -27,6 +31,7 @@ void addRunCommand(CLI::App& app) {
     command->callback([arguments] {
         auto request = arguments->request;
         request.runFile = arguments->runFile;
+        request.api = arguments->api == "opengl" ? RunApi::OpenGl : arguments->api == "all" ? RunApi::All : RunApi::Vulkan;
         request.timeout = std::chrono::milliseconds(int64_t(arguments->timeoutSeconds * 1000));
         // The device may still be running the shader: nothing made for it can be freed, so the
         // run ends here rather than unwinding.
