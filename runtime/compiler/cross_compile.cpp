@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace iblkit::compiler {
 namespace {
@@ -83,8 +84,36 @@ void requireEsslImageAccess(const spirv_cross::CompilerGLSL& compiler, const Sha
     }
 }
 
+// GLSL allows a matrix layout qualifier on a block's members only, so SPIRV-Cross writes a struct
+// inside a buffer with one layout for all of its matrices: a struct holding both (an HLSL
+// row_major member beside a column-major one) would be read wrongly. Refused by name.
+void requireOneMatrixLayoutPerStruct(const std::vector<uint32_t>& spirv, const std::string& sourceName, std::string_view form) {
+    const SpirvModule module(spirv);
+    std::set<uint32_t> blocks;
+    std::map<uint32_t, std::set<uint32_t>> layouts; // struct -> the layouts of its matrix members
+    std::map<uint32_t, std::string> names;
+    for (size_t i = 0; i < module.size(); ++i) {
+        const auto& instruction = module.instruction(i);
+        const auto& operands = instruction.operands;
+        if (instruction.opcode == spv::OpDecorate && operands.size() > 1 &&
+            (operands[1] == spv::DecorationBlock || operands[1] == spv::DecorationBufferBlock))
+            blocks.insert(operands[0]);
+        else if (instruction.opcode == spv::OpMemberDecorate && operands.size() > 2 &&
+                 (operands[2] == spv::DecorationRowMajor || operands[2] == spv::DecorationColMajor))
+            layouts[operands[0]].insert(operands[2]);
+        else if (instruction.opcode == spv::OpName && operands.size() > 1)
+            names[operands[0]] = literalString(operands, 1);
+    }
+    for (const auto& [type, kinds] : layouts)
+        if (kinds.size() > 1 && !blocks.count(type))
+            throw CompileError(sourceName + ": error: " + std::string(form) + " cannot express the shader: struct '" + names[type] +
+                               "' in a buffer holds row_major and column_major matrices, and GLSL gives a struct's "
+                               "matrices one layout: declare them all alike (or write the msl or hlsl form)");
+}
+
 CrossCompiled toOpenGl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
                        const std::string& sourceName) {
+    requireOneMatrixLayoutPerStruct(spirv, sourceName, es ? "essl" : "glsl");
     const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, StandIn>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
     if (es) requireEsslImageAccess(compiler, reflection, sourceName, false);
@@ -187,6 +216,7 @@ uint32_t lowestShaderModel(const spirv_cross::Compiler& compiler, bool usesSpace
 
 CrossCompiled toVulkanGlsl(std::vector<uint32_t> spirv, const ShaderReflection& reflection, bool es,
                            const std::string& sourceName) {
+    requireOneMatrixLayoutPerStruct(spirv, sourceName, es ? "vulkan-essl" : "vulkan-glsl");
     const auto adaptedFrom = es ? esslStandIns(spirv, reflection, sourceName) : std::map<std::string, StandIn>{};
     spirv_cross::CompilerGLSL compiler(std::move(spirv));
     if (es) requireEsslImageAccess(compiler, reflection, sourceName, true);

@@ -39,6 +39,16 @@ GlObject createFramebuffer(const EglContext& context) {
 
 namespace {
 
+// A driver's log on one line: its lines joined with "; ".
+std::string oneLine(const char* log) {
+    std::string line;
+    for (const char* c = log; *c; ++c) {
+        if (*c != '\n') line += *c;
+        else if (c[1] != '\0') line += "; ";
+    }
+    return line;
+}
+
 GlObject compiledShader(const EglContext& context, GLenum stage, const std::string& source, const std::string& name) {
     const auto& gl = context.gl();
     GlObject shader(context, gl.CreateShader(stage), [](const GlFunctions& g, GLuint n) { g.DeleteShader(n); });
@@ -50,7 +60,7 @@ GlObject compiledShader(const EglContext& context, GLenum stage, const std::stri
     if (!ok) {
         std::string log(4096, '\0');
         gl.GetShaderInfoLog(shader.name(), GLsizei(log.size()), nullptr, log.data());
-        throw GlError(name + ": error: OpenGL rejected the shader: " + log.c_str());
+        throw GlError(name + ": error: OpenGL rejected the shader: " + oneLine(log.c_str()));
     }
     return shader;
 }
@@ -65,7 +75,7 @@ GlObject linkedProgram(const EglContext& context, const std::vector<const GlObje
     if (!ok) {
         std::string log(4096, '\0');
         gl.GetProgramInfoLog(program.name(), GLsizei(log.size()), nullptr, log.data());
-        throw GlError(name + ": error: OpenGL did not link the shader: " + log.c_str());
+        throw GlError(name + ": error: OpenGL did not link the shader: " + oneLine(log.c_str()));
     }
     return program;
 }

@@ -44,13 +44,33 @@ struct GlForm {
     std::string name;
 };
 
-GlForm glslFormOf(const ShaderProgram& program) {
+// SPIRV-Cross writes each specialization constant as a macro with its default, for the
+// program to define first: "#define SPIRV_CROSS_CONSTANT_ID_3 5u" after the #version line.
+std::string specialized(const std::string& source, const compiler::ShaderReflection& reflection,
+                        const std::map<std::string, double>& values) {
+    std::string defines;
+    for (const auto& constant : reflection.specializationConstants) {
+        const auto value = values.find(constant.name);
+        if (value == values.end()) continue;
+        const std::string literal = constant.type == "float"  ? fmt::format("{:.9e}", value->second)
+                                    : constant.type == "bool" ? (value->second != 0 ? "true" : "false")
+                                    : constant.type == "int"  ? fmt::format("{}", int64_t(value->second))
+                                                              : fmt::format("{}u", uint64_t(value->second));
+        defines += fmt::format("#define SPIRV_CROSS_CONSTANT_ID_{} {}\n", constant.constantId, literal);
+    }
+    const size_t afterVersion = source.find('\n') + 1;
+    return source.substr(0, afterVersion) + defines + source.substr(afterVersion);
+}
+
+GlForm glslFormOf(const ShaderProgram& program, const std::map<std::string, double>& specialization) {
+    compiler::CrossCompiled glsl;
     try {
-        return {compiler::crossCompile(program.namedSpirv, program.reflection, compiler::CrossTarget::Glsl, program.sourceName),
-                program.sourceName + " (" + program.reflection.entryPoint + ")"};
+        glsl = compiler::crossCompile(program.namedSpirv, program.reflection, compiler::CrossTarget::Glsl, program.sourceName);
     } catch (const std::exception& error) {
         throw GlError(std::string("the GLSL form cannot be made: ") + error.what());
     }
+    glsl.source = specialized(glsl.source, program.reflection, specialization);
+    return {glsl, program.sourceName + " (" + program.reflection.entryPoint + ")"};
 }
 
 struct Texture {
@@ -64,17 +84,17 @@ public:
     std::string apiName() const override { return "opengl"; }
     std::string deviceLine() const override { return context_.renderer(); }
 
-    void makeProgram(const RunSpec&, const RunPrograms& programs, const DrawPlan* draw) override {
+    void makeProgram(const RunSpec& spec, const RunPrograms& programs, const DrawPlan* draw) override {
         const auto& gl = context_.gl();
         gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
         gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
         if (!draw) {
-            forms_.push_back(glslFormOf(*programs.compute));
+            forms_.push_back(glslFormOf(*programs.compute, spec.specialization));
             program_.emplace(opengl::createComputeProgram(context_, forms_[0].glsl.source, forms_[0].name + " (GLSL)"));
             workgroup_ = programs.compute->reflection.workgroupSize;
         } else {
-            forms_.push_back(glslFormOf(*programs.vertex));
-            forms_.push_back(glslFormOf(*programs.pixel));
+            forms_.push_back(glslFormOf(*programs.vertex, spec.specialization));
+            forms_.push_back(glslFormOf(*programs.pixel, spec.specialization));
             program_.emplace(opengl::createGraphicsProgram(context_, forms_[0].glsl.source, forms_[1].glsl.source,
                                                            forms_[0].name + " and " + forms_[1].name + " (GLSL)"));
         }

@@ -205,7 +205,7 @@ void checkGivenValues(const RunSpec& spec, const std::optional<DrawPlan>& draw) 
 }
 
 template <typename Step>
-auto withKey(const RunSpec& spec, const std::string& key, Step step) {
+decltype(auto) withKey(const RunSpec& spec, const std::string& key, Step step) {
     try {
         return step();
     } catch (const vulkan::VulkanError& error) {
