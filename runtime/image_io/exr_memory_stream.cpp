@@ -14,4 +14,10 @@ bool ExrMemoryStream::read(char c[], int n) {
     return position_ < bytes_.size();
 }
 
+void ExrMemoryOutput::write(const char c[], int n) {
+    if (position_ + uint64_t(n) > bytes_.size()) bytes_.resize(size_t(position_) + size_t(n));
+    std::copy(c, c + n, bytes_.begin() + std::ptrdiff_t(position_));
+    position_ += uint64_t(n);
+}
+
 } // namespace iblkit::image_io

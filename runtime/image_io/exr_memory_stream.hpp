@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 
 namespace iblkit::image_io {
 
@@ -19,6 +20,21 @@ public:
 
 private:
     std::span<const std::byte> bytes_;
+    uint64_t position_ = 0;
+};
+
+// The other way: an EXR file written into memory, for outputs that are committed all at once.
+class ExrMemoryOutput : public Imf::OStream {
+public:
+    explicit ExrMemoryOutput(const char* name) : Imf::OStream(name) {}
+
+    void write(const char c[], int n) override;
+    uint64_t tellp() override { return position_; }
+    void seekp(uint64_t position) override { position_ = position; }
+    const std::string& bytes() const { return bytes_; }
+
+private:
+    std::string bytes_;
     uint64_t position_ = 0;
 };
 

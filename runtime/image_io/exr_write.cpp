@@ -1,4 +1,5 @@
 #include "file_names.hpp"
+#include "exr_memory_stream.hpp"
 #include "float_image.hpp"
 #include "image_error.hpp"
 
@@ -24,9 +25,8 @@ void requireWritable(const std::filesystem::path& path, const FloatImage& image)
              std::to_string(image.height) + "x" + std::to_string(image.channels) + " needs " + std::to_string(expected));
 }
 
-} // namespace
-
-void writeExr(const std::filesystem::path& path, const FloatImage& image) {
+template <typename Destination>
+void writeExrTo(const std::filesystem::path& path, const FloatImage& image, Destination& destination) {
     requireWritable(path, image);
     try {
         Imf::Header header(int(image.width), int(image.height));
@@ -40,7 +40,7 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image) {
             char* base = const_cast<char*>(reinterpret_cast<const char*>(image.values.data() + c));
             frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, xStride, yStride));
         }
-        Imf::OutputFile file(path.c_str(), header);
+        Imf::OutputFile file(destination, header);
         file.setFrameBuffer(frame);
         file.writePixels(int(image.height));
     } catch (const std::exception& error) {
@@ -48,6 +48,20 @@ void writeExr(const std::filesystem::path& path, const FloatImage& image) {
         std::replace(reason.begin(), reason.end(), '\n', ' ');
         throw ImageError("cannot write " + quoted(path) + ": " + reason);
     }
+}
+
+} // namespace
+
+void writeExr(const std::filesystem::path& path, const FloatImage& image) {
+    const std::string name = path.string();
+    const char* file = name.c_str();
+    writeExrTo(path, image, file);
+}
+
+std::string encodeExr(const FloatImage& image, const std::filesystem::path& name) {
+    ExrMemoryOutput output(name.c_str());
+    writeExrTo(name, image, output);
+    return output.bytes();
 }
 
 } // namespace iblkit::image_io

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace iblkit::image_io {
@@ -34,6 +35,8 @@ std::vector<float> rgbaValues(const FloatImage& image);
 
 // 32-bit FLOAT channels R, G, B (and A when channels is 4), ZIP compression.
 void writeExr(const std::filesystem::path& path, const FloatImage& image);
+// The same EXR, in memory; `name` names it in messages.
+std::string encodeExr(const FloatImage& image, const std::filesystem::path& name);
 // 8-bit RGBA, rows top first, through stb_image_write.
 void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgba8);
 // The same PNG, in memory.

@@ -4,6 +4,7 @@
 #include "data_file.hpp"
 #include "expectation_check.hpp"
 #include "gl_error.hpp"
+#include "image_save.hpp"
 #include "opengl_engine.hpp"
 #include "run_error.hpp"
 #include "run_plan.hpp"
@@ -176,6 +177,12 @@ void saveAll(const RunSpec& spec, ApiRun& run, std::ostream& out) {
     output.protect(inputFiles(spec));
     for (const auto& [name, path] : spec.saves) {
         const auto& data = run.read(name);
+        if (isPictureFile(path)) {
+            if (!data.image) throw RunError(path.string() + ": error: '" + name + "' is a buffer: save it as .npy");
+            const auto& image = *data.image;
+            output.add(path, encodePicture(path, *data.format, data.values, image.width, image.height, image.layers, image.mips));
+            continue;
+        }
         std::vector<size_t> shape{data.values.size()};
         if (data.image && data.image->mips == 1) shape = {data.image->layers, data.image->height, data.image->width, data.image->format->channels};
         output.add(path, encodeValues(path, *data.format, data.values, shape));

@@ -6,6 +6,7 @@
 #include "data_file.hpp"
 #include "graphics_program.hpp"
 #include "hlsl_frontend.hpp"
+#include "image_save.hpp"
 #include "run_error.hpp"
 #include "run_executor.hpp"
 #include "spirv_tools.hpp"
@@ -250,6 +251,10 @@ RunPlan planRun(const RunSpec& spec, const RunPrograms& programs) {
     if (spec.graphics) plan.draw = planDraw(spec, programs);
     checkNames(spec, programs.resources, plan.draw);
     checkGivenValues(spec, plan.draw);
+    for (const auto& [name, path] : spec.saves)
+        if (const auto* format = formatOfName(spec, plan.draw, name);
+            format && isPictureFile(path) && (format->kind == vulkan::ComponentKind::UInt || format->kind == vulkan::ComponentKind::SInt))
+            refuse(spec, "save." + name + ": " + std::string(format->name) + " holds integers, not colours: save it as .npy");
     for (const auto& resource : spec.resources) {
         plan.resources.push_back(planResource(spec, resource, *programs.resources.find(resource.binding)));
         const auto& reflected = *plan.resources.back().reflected;
