@@ -14,6 +14,8 @@
 #include <fmt/core.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
+#include <functional>
 #include <map>
 
 namespace iblkit::run {
@@ -48,8 +50,9 @@ std::string locate(const Readback& data, size_t index) {
     return data.image ? locate(*data.image, 0, 0, index, false) : fmt::format("element {}", index);
 }
 
-// OpenGL cannot take the shaders: its form is refused, or the driver rejects it.
-class OpenGlRefusal : public std::runtime_error {
+// A path cannot take the shaders: OpenGL's form is refused or the driver rejects it, the HLSL
+// form is refused or does not compile again.
+class PathRefusal : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
@@ -66,7 +69,7 @@ public:
             try {
                 engine_.makeProgram(spec_, programs, plan_.draw ? &*plan_.draw : nullptr);
             } catch (const opengl::GlError& error) {
-                throw OpenGlRefusal(spec_.runFile.string() + ": error: " + error.what());
+                throw PathRefusal(spec_.runFile.string() + ": error: " + error.what());
             }
         });
         for (const auto& resource : plan_.resources) withKey("resources." + resource.spec->name, [&] { engine_.makeResource(resource); });
@@ -191,26 +194,64 @@ void saveAll(const RunSpec& spec, ApiRun& run, std::ostream& out) {
     for (const auto& [name, path] : spec.saves) fmt::print(out, "saved    {} -> {}\n", name, path.string());
 }
 
-// What each API's shaders wrote, compared: the report names the largest difference and where.
-bool compareApis(const RunSpec& spec, const RunPlan& plan, ApiRun& vulkan, ApiRun& opengl, std::ostream& out) {
+// What a path's shaders wrote, compared with the first path's: the report names the largest
+// difference and where.
+bool comparePaths(const RunSpec& spec, const RunPlan& plan, ApiRun& first, ApiRun& other, const std::string& label,
+                  const std::string& otherName, std::ostream& out) {
     const Tolerance bound = spec.crossApi.value_or(kDefaultCrossApiTolerance);
     bool passed = true;
     for (const auto& name : plan.written) {
-        const auto& a = vulkan.read(name);
-        const auto& b = opengl.read(name);
+        const auto& a = first.read(name);
+        const auto& b = other.read(name);
         if (a.values.size() != b.values.size()) {
-            fmt::print(out, "FAIL cross-API {}: {} values on Vulkan, {} on OpenGL\n", name, a.values.size(), b.values.size());
+            fmt::print(out, "FAIL {} {}: {} values on Vulkan, {} on {}\n", label, name, a.values.size(), b.values.size(), otherName);
             passed = false;
             continue;
         }
         const auto result = compareValues(b.values, a.values, bound, *a.format);
-        fmt::print(out, "{} cross-API {}: {} values, {}{}; largest difference {:.3g} ({} ulp) at {}: vulkan {}, opengl {}\n",
-                   result.passed ? "PASS" : "FAIL", name, result.compared, describeTolerance(bound),
+        fmt::print(out, "{} {} {}: {} values, {}{}; largest difference {:.3g} ({} ulp) at {}: vulkan {}, {} {}\n",
+                   result.passed ? "PASS" : "FAIL", label, name, result.compared, describeTolerance(bound),
                    result.passed ? "" : fmt::format(", {} outside", result.failed), result.worstAbsolute, result.worstUlp,
-                   locate(a, result.worstIndex), result.expected, result.actual);
+                   locate(a, result.worstIndex), result.expected, otherName, result.actual);
         passed = passed && result.passed;
     }
     return passed;
+}
+
+// A way to carry out the run file: an engine, and the shaders it runs.
+struct RunPath {
+    std::string name;  // "vulkan", "hlsl-form", "opengl"
+    std::string label; // how its comparison with Vulkan is named
+    std::function<std::unique_ptr<RunEngine>()> engine;
+    std::function<RunPrograms()> programs;
+    bool specializedInSource = false; // the shaders' constants are set before they are compiled
+};
+
+std::vector<RunPath> pathsOf(const RunSpec& spec, const RunOptions& options, const RunPrograms& programs) {
+    const RunPath vulkan{"vulkan", "", [&] { return makeVulkanEngine(options); }, [&] { return programs; }};
+    const RunPath opengl{"opengl", "cross-API", [&] {
+                             try {
+                                 return makeOpenGlEngine();
+                             } catch (const opengl::GlError& error) {
+                                 throw RunError(spec.runFile.string() + ": error: OpenGL: " + error.what());
+                             }
+                         },
+                         [&] { return programs; }};
+    const RunPath roundTrip{"hlsl-form", "round trip", [&] { return makeVulkanEngine(options); },
+                            [&] {
+                                try {
+                                    return hlslFormPrograms(spec, programs);
+                                } catch (const std::exception& error) {
+                                    throw PathRefusal(error.what());
+                                }
+                            },
+                            true};
+    switch (options.api) {
+    case RunApi::Vulkan: return {vulkan};
+    case RunApi::OpenGl: return {opengl};
+    case RunApi::All: break;
+    }
+    return {vulkan, roundTrip, opengl};
 }
 
 } // namespace
@@ -227,7 +268,7 @@ compiler::CompileOptions compileOptionsOf(const RunSpec& spec) {
     return options;
 }
 
-bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out) {
+RunSummary executeRunOnPaths(const RunSpec& spec, const RunOptions& options, std::ostream& out) {
     const auto programs = loadPrograms(spec);
     const auto plan = planRun(spec, programs);
     if (spec.graphics)
@@ -236,35 +277,44 @@ bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& ou
     else
         fmt::print(out, "shader   {} ({}), workgroup {}x{}x{}\n", spec.shader.string(), spec.entry, programs.compute->reflection.workgroupSize[0],
                    programs.compute->reflection.workgroupSize[1], programs.compute->reflection.workgroupSize[2]);
-    const bool both = options.api == RunApi::All;
-    std::unique_ptr<RunEngine> vulkanEngine, openglEngine;
-    std::optional<ApiRun> vulkanRun, openglRun;
-    bool passed = true;
-    if (options.api != RunApi::OpenGl) {
-        vulkanEngine = makeVulkanEngine(options);
-        vulkanRun.emplace(spec, plan, *vulkanEngine, out, both ? "vulkan: " : "");
-        passed = vulkanRun->run(programs) && passed;
-    }
-    if (options.api != RunApi::Vulkan) {
+    const auto paths = pathsOf(spec, options, programs);
+    const bool several = paths.size() > 1;
+    RunSummary summary;
+    // Each path's engine outlives the comparisons, which read its resources.
+    std::vector<std::unique_ptr<RunEngine>> engines;
+    std::vector<std::optional<ApiRun>> runs(paths.size());
+    std::vector<RunSpec> pathSpecs(paths.size(), spec);
+    for (size_t i = 0; i < paths.size(); ++i) {
+        const auto& path = paths[i];
+        if (path.specializedInSource) pathSpecs[i].specialization.clear();
+        PathOutcome outcome{path.name, false, false, ""};
         try {
-            openglEngine = makeOpenGlEngine();
-        } catch (const opengl::GlError& error) {
-            throw RunError(spec.runFile.string() + ": error: OpenGL: " + error.what());
+            const auto pathPrograms = path.programs();
+            engines.push_back(path.engine());
+            runs[i].emplace(pathSpecs[i], plan, *engines.back(), out, several ? path.name + ": " : "");
+            outcome.passed = runs[i]->run(pathPrograms);
+            outcome.ran = true;
+        } catch (const PathRefusal& refusal) {
+            // A form another path cannot take (wave operations in OpenGL, 16-bit types on
+            // llvmpipe) is no failure of the run on Vulkan: said, and nothing compared.
+            if (!several || i == 0) throw RunError(refusal.what());
+            fmt::print(out, "{}: not run: {}\n", path.name, refusal.what());
+            outcome.notRun = refusal.what();
+            runs[i].reset();
         }
-        openglRun.emplace(spec, plan, *openglEngine, out, both ? "opengl: " : "");
-        try {
-            passed = openglRun->run(programs) && passed;
-        } catch (const OpenGlRefusal& refusal) {
-            // A form OpenGL cannot take (wave operations, 16-bit types) is no failure of the
-            // run on Vulkan: said, and nothing compared.
-            if (!both) throw RunError(refusal.what());
-            fmt::print(out, "opengl: not run: {}\n", refusal.what());
-            openglRun.reset();
-        }
+        summary.paths.push_back(outcome);
     }
-    if (both && openglRun) passed = compareApis(spec, plan, *vulkanRun, *openglRun, out) && passed;
-    saveAll(spec, vulkanRun ? *vulkanRun : *openglRun, out);
-    return passed;
+    summary.pathsAgree = true;
+    for (size_t i = 1; i < paths.size(); ++i)
+        if (runs[i]) summary.pathsAgree = comparePaths(spec, plan, *runs[0], *runs[i], paths[i].label, paths[i].name, out) && summary.pathsAgree;
+    saveAll(spec, *runs[0], out);
+    summary.passed = summary.pathsAgree &&
+                     std::all_of(summary.paths.begin(), summary.paths.end(), [](const auto& p) { return !p.ran || p.passed; });
+    return summary;
+}
+
+bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out) {
+    return executeRunOnPaths(spec, options, out).passed;
 }
 
 } // namespace iblkit::run

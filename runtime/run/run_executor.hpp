@@ -7,6 +7,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace iblkit::run {
 
@@ -38,5 +39,25 @@ compiler::CompileOptions compileOptionsOf(const RunSpec& spec);
 // every expectation and comparison passed. Throws RunError, compiler::CompileError or
 // vulkan::VulkanError when the run cannot be carried out at all.
 bool executeRun(const RunSpec& spec, const RunOptions& options, std::ostream& out);
+
+// How one path carried out the run file: "vulkan" (the SPIR-V), "hlsl-form" (the HLSL form
+// compiled again, on Vulkan), "opengl" (the GLSL form).
+struct PathOutcome {
+    std::string path;
+    bool ran = false;    // false: the path could not take the shaders (notRun says why)
+    bool passed = false; // every expectation held on it
+    std::string notRun;
+};
+
+struct RunSummary {
+    bool passed = false;     // every expectation on every path that ran, and every comparison
+    bool pathsAgree = false; // every path that ran wrote what Vulkan wrote, within the bound
+    std::vector<PathOutcome> paths;
+};
+
+// executeRun with what each path did. RunApi::All runs three paths: Vulkan from the SPIR-V,
+// Vulkan again from the HLSL form compiled anew, and OpenGL from the GLSL form; the last two are
+// compared with the first.
+RunSummary executeRunOnPaths(const RunSpec& spec, const RunOptions& options, std::ostream& out);
 
 } // namespace iblkit::run

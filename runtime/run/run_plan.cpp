@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <regex>
 
 namespace iblkit::run {
 namespace {
@@ -75,6 +76,52 @@ RunPrograms loadPrograms(const RunSpec& spec) {
         refuse(spec, std::string("resources: ") + error.what());
     }
     return programs;
+}
+
+namespace {
+
+ShaderProgram throughHlslForm(const RunSpec& spec, const ShaderProgram& program) {
+    const auto form = compiler::crossCompile(program.namedSpirv, program.reflection, compiler::CrossTarget::Hlsl, program.sourceName);
+    compiler::CompileOptions options;
+    options.source = program.sourceName + " (hlsl form)";
+    options.sourceText = form.source;
+    // The form holds push constants as Direct3D's root constants, a cbuffer without a register;
+    // for Vulkan a port marks it [[vk::push_constant]].
+    if (program.reflection.pushConstantSize > 0)
+        options.sourceText = std::regex_replace(form.source, std::regex(R"(\ncbuffer (\w+)\n)"), "\n[[vk::push_constant]] cbuffer $1\n");
+    options.stage = program.reflection.stage;
+    options.entryPoint = program.reflection.entryPoint;
+    options.enable16BitTypes = spec.enable16BitTypes;
+    // The form declares a storage image by its texel type alone, as Direct3D binds it; for Vulkan
+    // a port gives the format, as --image-format does.
+    for (const auto& resource : program.reflection.resources)
+        if (resource.kind == compiler::ResourceKind::StorageImage && resource.format != "unknown" && resource.location.count == 1)
+            options.imageFormats[resource.name] = resource.format;
+    // Specialization constants are macros in the form, SPIRV-Cross's SPIRV_CROSS_CONSTANT_ID_n.
+    for (const auto& constant : program.reflection.specializationConstants)
+        if (const auto value = spec.specialization.find(constant.name); value != spec.specialization.end())
+            options.defines["SPIRV_CROSS_CONSTANT_ID_" + std::to_string(constant.constantId)] =
+                constant.type == "float" ? std::to_string(value->second) + "f"
+                : constant.type == "int" ? std::to_string(int64_t(value->second))
+                                         : std::to_string(uint64_t(value->second)) + "u";
+    auto shader = compiler::compileShader(options);
+    return {shader.spirv, shader.namedSpirv, shader.reflection, options.source.string()};
+}
+
+} // namespace
+
+RunPrograms hlslFormPrograms(const RunSpec& spec, const RunPrograms& programs) {
+    if (spec.shader.extension() == ".spv" && !spec.graphics) throw RunError("a SPIR-V shader has no HLSL source to compare a form with");
+    RunPrograms forms;
+    if (programs.compute) {
+        forms.compute = throughHlslForm(spec, *programs.compute);
+        forms.resources = forms.compute->reflection;
+        return forms;
+    }
+    forms.vertex = throughHlslForm(spec, *programs.vertex);
+    forms.pixel = throughHlslForm(spec, *programs.pixel);
+    forms.resources = vulkan::mergeStageReflections(forms.vertex->reflection, forms.pixel->reflection);
+    return forms;
 }
 
 const vulkan::TexelFormat& bufferFormat(const ResourceSpec& spec) {

@@ -7,6 +7,10 @@ namespace iblkit::run {
 // Compiles the run file's shaders (HLSL, or SPIR-V for a dispatch). Throws RunError or
 // compiler::CompileError.
 RunPrograms loadPrograms(const RunSpec& spec);
+// The same shaders through their HLSL form: each written by SPIRV-Cross and compiled again by the
+// kit, as a port would take them. Throws compiler::CompileError when the form is refused or does
+// not compile.
+RunPrograms hlslFormPrograms(const RunSpec& spec, const RunPrograms& programs);
 
 // Everything a run needs that no API decides, checked against the shaders before any device
 // work: every failure is RunError("<run file>: error: <key>: <why>").
