@@ -29,6 +29,11 @@ std::string builtInName(uint32_t builtIn) {
     case spv::BuiltInPrimitiveId: return "PrimitiveId";
     case spv::BuiltInClipDistance: return "ClipDistance";
     case spv::BuiltInCullDistance: return "CullDistance";
+    case spv::BuiltInViewIndex: return "ViewIndex";
+    case spv::BuiltInSubgroupSize: return "SubgroupSize";
+    case spv::BuiltInSubgroupLocalInvocationId: return "SubgroupLocalInvocationId";
+    case spv::BuiltInLayer: return "Layer";
+    case spv::BuiltInViewportIndex: return "ViewportIndex";
     default: return "BuiltIn" + std::to_string(builtIn);
     }
 }

@@ -41,7 +41,7 @@ GlFunctions loadGlFunctions() {
     IBLKIT_LOAD(DrawArraysInstancedBaseInstance); IBLKIT_LOAD(DrawElementsInstancedBaseVertexBaseInstance); IBLKIT_LOAD(ProgramUniform1fv); IBLKIT_LOAD(ProgramUniform2fv);
     IBLKIT_LOAD(ProgramUniform3fv); IBLKIT_LOAD(ProgramUniform4fv); IBLKIT_LOAD(ProgramUniform1iv); IBLKIT_LOAD(ProgramUniform2iv);
     IBLKIT_LOAD(ProgramUniform3iv); IBLKIT_LOAD(ProgramUniform4iv); IBLKIT_LOAD(ProgramUniform1uiv); IBLKIT_LOAD(ProgramUniform2uiv);
-    IBLKIT_LOAD(ProgramUniform3uiv); IBLKIT_LOAD(ProgramUniform4uiv); IBLKIT_LOAD(GetUniformLocation); IBLKIT_LOAD(SamplerParameterf); IBLKIT_LOAD(TextureParameteri);
+    IBLKIT_LOAD(ProgramUniform3uiv); IBLKIT_LOAD(ProgramUniform4uiv); IBLKIT_LOAD(GetUniformLocation); IBLKIT_LOAD(SamplerParameterf); IBLKIT_LOAD(TextureParameteri); IBLKIT_LOAD(ProvokingVertex);
 #undef IBLKIT_LOAD
     return gl;
 }

@@ -93,6 +93,7 @@ struct GlFunctions {
     PFNGLGETUNIFORMLOCATIONPROC GetUniformLocation;
     PFNGLSAMPLERPARAMETERFPROC SamplerParameterf;
     PFNGLTEXTUREPARAMETERIPROC TextureParameteri;
+    PFNGLPROVOKINGVERTEXPROC ProvokingVertex;
 };
 
 // Throws GlError naming the first entry point that cannot be found.

@@ -3,6 +3,7 @@
 #include "compile_error.hpp"
 #include "compiler.hpp"
 #include "glsl_frontend.hpp"
+#include "seeded_run.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -54,15 +55,20 @@ std::map<CrossTarget, FormOutcome> formOutcomes(const compiler::CompiledShader& 
 
 namespace {
 
-void carryOutRun(const std::filesystem::path& runFile, const run::RunOptions& options, ShaderOutcome& outcome) {
+// Every path of the run; `seeded` runs have no expectations, so only the paths' agreement counts.
+void carryOutRun(const run::RunSpec& spec, bool seeded, run::RunOptions options, ShaderOutcome& outcome) {
     std::ostringstream log;
+    options.api = run::RunApi::All;
     try {
-        const bool passed = run::executeRun(run::readRunFile(runFile), options, log);
-        outcome.run = passed ? RunOutcome::Passed : RunOutcome::Failed;
+        const auto summary = run::executeRunOnPaths(spec, options, log);
+        outcome.paths = summary.paths;
+        outcome.pathsAgree = summary.pathsAgree;
+        outcome.run = seeded && summary.passed ? RunOutcome::Seeded : summary.passed ? RunOutcome::Passed : RunOutcome::Failed;
         outcome.runLog = log.str();
     } catch (const std::exception& error) { // RunError, CompileError, VulkanError: the run could not be carried out
-        outcome.run = RunOutcome::Failed;
-        outcome.runLog = log.str() + error.what();
+        // A seeded run has nothing to meet: the device lacking what the shader needs is a reason not to run it.
+        outcome.run = seeded ? RunOutcome::NotRun : RunOutcome::Failed;
+        (seeded ? outcome.notRun : outcome.runLog) = seeded ? std::string(error.what()) : log.str() + error.what();
     }
 }
 
@@ -90,7 +96,7 @@ void judgeCompiled(const CorpusFeature& feature, const ShaderOutcome& shader, Fe
         mismatches.push_back("no warning says '" + feature.warning + "'");
     for (const auto& [target, form] : shader.forms)
         if (auto mismatch = formMismatch(feature, target, form); !mismatch.empty()) mismatches.push_back(std::move(mismatch));
-    if (shader.run == RunOutcome::Failed) mismatches.push_back("its run file failed: " + shader.runLog);
+    if (shader.run == RunOutcome::Failed) mismatches.push_back("its run failed: " + shader.runLog);
     outcome.status = !feature.kitEdits.empty() ? FeatureStatus::Lowered
                      : !feature.warning.empty() ? FeatureStatus::Warned
                                                 : FeatureStatus::Supported;
@@ -101,16 +107,29 @@ void judgeCompiled(const CorpusFeature& feature, const ShaderOutcome& shader, Fe
 ShaderOutcome runCorpusShader(const CorpusShader& corpusShader, const run::RunOptions& runOptions) {
     ShaderOutcome outcome;
     outcome.name = corpusShader.name;
+    compiler::ShaderReflection reflection;
     try {
         const auto shader = compiler::compileShader(corpusShader.options);
         outcome.warnings = shader.warnings;
         outcome.kitEdits = shader.kitEdits;
         outcome.forms = formOutcomes(shader, corpusShader.options);
+        reflection = shader.reflection;
     } catch (const compiler::CompileError& error) {
         outcome.compileError = error.what();
         return outcome;
     }
-    if (corpusShader.runFile) carryOutRun(*corpusShader.runFile, runOptions, outcome);
+    if (corpusShader.runFile) {
+        try {
+            carryOutRun(run::readRunFile(*corpusShader.runFile), false, runOptions, outcome);
+        } catch (const std::exception& error) {
+            outcome.run = RunOutcome::Failed;
+            outcome.runLog = error.what();
+        }
+        return outcome;
+    }
+    auto seeded = run::seededRun(corpusShader.options, reflection);
+    if (auto* why = std::get_if<std::string>(&seeded)) outcome.notRun = *why;
+    else carryOutRun(std::get<run::RunSpec>(seeded), true, runOptions, outcome);
     return outcome;
 }
 

@@ -24,7 +24,10 @@ struct FormOutcome {
 std::map<compiler::CrossTarget, FormOutcome> formOutcomes(const compiler::CompiledShader& shader,
                                                           const compiler::CompileOptions& options);
 
-enum class RunOutcome { NoRunFile, Passed, Failed };
+// Passed and Failed: the run file's expectations on every path that ran. Seeded: no run file, run
+// with seeded resources (run::seededRun), which only the paths' agreement judges. NotRun: no run
+// file, and the shader cannot be run with seeded resources (ShaderOutcome::notRun says why).
+enum class RunOutcome { NotRun, Passed, Failed, Seeded };
 
 // What the compiler and the device made of one corpus shader.
 struct ShaderOutcome {
@@ -33,11 +36,17 @@ struct ShaderOutcome {
     std::vector<std::string> warnings;
     std::vector<std::string> kitEdits;
     std::map<compiler::CrossTarget, FormOutcome> forms; // every form, when it compiled
-    RunOutcome run = RunOutcome::NoRunFile;
+    RunOutcome run = RunOutcome::NotRun;
     std::string runLog; // what the run printed, or why it could not be carried out
+    std::string notRun; // why a shader without a run file was not run
+    // Each path of run::RunApi::All (Vulkan from the SPIR-V, from the HLSL form, OpenGL), and
+    // whether those that ran wrote the same values.
+    std::vector<run::PathOutcome> paths;
+    bool pathsAgree = false;
 };
 
-// Compiles the shader into every form, reads each form back, and carries out its run file.
+// Compiles the shader into every form, reads each form back, and carries out its run file (or a
+// seeded run) on every path.
 ShaderOutcome runCorpusShader(const CorpusShader& shader, const run::RunOptions& runOptions);
 
 enum class FeatureStatus { Supported, Lowered, Warned, Refused };

@@ -326,6 +326,8 @@ std::string OpenGlEngine::drawWith(const DrawPlan& draw) {
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
     // Direct3D's conventions: NDC y = +1 on the first row, gl_FragCoord from the top, depth 0 to 1.
     gl.ClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    // A nointerpolation value comes from a primitive's first vertex, as in Direct3D and Vulkan.
+    gl.ProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
     for (const auto& target : draw.targets) {
         const auto& clear = target.spec->clear;
         const auto drawBuffer = GLint(target.location);

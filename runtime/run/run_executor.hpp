@@ -24,9 +24,11 @@ struct RunOptions {
     std::function<void(const std::string& message)> onDeviceFailure = {};
 };
 
-// How far OpenGL's results may lie from Vulkan's when the run file does not say
-// (docs/run-files.md gives the measurement behind it).
-inline const Tolerance kDefaultCrossApiTolerance{std::nullopt, std::nullopt, 4.0};
+// How far another path's results may lie from Vulkan's when the run file does not say: 4 ULP, or
+// 1e-6 absolute, which a value interpolated across a primitive needs (llvmpipe's OpenGL and
+// lavapipe set interpolation up apart: 3.3e-7 measured on the porting corpus's seeded
+// ArrayVaryingLocations draw, 22 ULP of its 0.14). docs/run-files.md gives the measurements.
+inline const Tolerance kDefaultCrossApiTolerance{1e-6, std::nullopt, 4.0};
 
 // How the run file's HLSL shader is compiled: its entry point, include folders, defines, image
 // formats, 16-bit types and HLSL version.

@@ -58,6 +58,7 @@ struct Expectation {
 struct StageSpec {
     std::filesystem::path shader;
     std::string entry;
+    std::optional<std::string> text; // compiled instead of the file (a stage the kit wrote); `shader` names it
 };
 
 // One per-vertex attribute, bound to the vertex shader's input of that semantic.

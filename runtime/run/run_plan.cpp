@@ -41,6 +41,7 @@ ShaderProgram loadSpirv(const RunSpec& spec) {
 ShaderProgram compileStage(const RunSpec& spec, const StageSpec& stage, compiler::ShaderStage kind) {
     auto options = compileOptionsOf(spec);
     options.source = stage.shader;
+    options.sourceText = stage.text;
     options.entryPoint = stage.entry;
     options.stage = kind;
     options.boundPreprocessing = true;
