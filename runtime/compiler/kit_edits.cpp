@@ -7,7 +7,7 @@ namespace iblkit::compiler {
 namespace {
 
 // The source edits are runtime/lowering's passes; the SPIR-V edits are the spirv_*.cpp files here.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 26> kKitEdits{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 27> kKitEdits{{
     {"resource-locals", "a local variable holding a resource (ByteAddressBuffer b = Buffers[i];) is replaced by its value at each use, when nothing that value reads is assigned later in its block"},
     {"struct-scope-declarations", "a struct's static members with their values and its enums move to a namespace of the struct's name (S::Name, then S__Name)"},
     {"non-uniform-resource-index", "NonUniformResourceIndex(i) becomes (i), and every access into an array of resources at a run-time index is decorated NonUniform (conservative: glslang's SPIR-V no longer tells one index from another)"},
@@ -19,6 +19,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 26> kKitEdit
                                  "on a RWTexture2D) converts them to the texture's, as DXC truncates them"},
     {"struct-conversions", "a struct returned as another struct of the same member types (return input; from a "
                            "vertex shader) becomes that conversion, member by member"},
+    {"byte-address-dimensions", "a byte-address buffer's GetDimensions, which glslang answers in 32-bit words, is "
+                                "multiplied by 4 to the bytes Direct3D answers ({ B.GetDimensions(n); n *= 4u; })"},
     {"builtin-structs", "DXR's RayDesc and BuiltInTriangleIntersectionAttributes, used outside ray tracing, are "
                         "declared as the HLSL specification defines them"},
     {"templates", "function and struct templates become one function or struct per argument list (f<float> and a call "

@@ -43,6 +43,10 @@ SuiteOptions defaultSuiteOptions(const std::string& manifest, uint32_t sampleCou
     auto inPyramid = options.shaders.at("PrefilterConvolutionCS");
     inPyramid.defines[kernels::kSourceTexelsInPyramidDefine] = "1";
     options.shaders.emplace(kConvolutionInPyramidShader, std::move(inPyramid));
+    auto forward = options.shaders.at("SplitSumSpheresCS"); // its folder, include folders and files
+    forward.source = forward.source.parent_path() / "ForwardSpheres.hlsl";
+    if (forward.sourceText) forward.sourceText = forward.virtualFiles.at(forward.source.generic_string());
+    options.shaders.emplace(kForwardPassShader, std::move(forward));
     return options;
 }
 
@@ -59,7 +63,8 @@ ConsistencyResult runConsistency(const vulkan::VulkanContext& context, const Sui
         {"chunked prefilter", addChunkedPrefilterOutput}, {"sky", addSkyOutputs},
         {"cube", addCubeOutputs},                   {"convolution", addConvolutionOutputs},
         {"filtered", addFilteredOutputs},           {"preview", addPreviewOutput},
-        {"render", addRenderOutputs},               {"probes", addProbeOutputs}};
+        {"render", addRenderOutputs},               {"forward pass", addForwardPassOutput},
+        {"probes", addProbeOutputs}};
     for (const auto& [name, add] : groups) {
         if (progress) progress->begin(name);
         add(run);

@@ -61,6 +61,10 @@ struct SuiteOptions {
 // own beside the manifest's, judged on every path as they are.
 inline constexpr const char* kConvolutionInPyramidShader = "PrefilterConvolutionCS, SOURCE_TEXELS_IN_PYRAMID";
 
+// ForwardSpheres.hlsl, the preview's spheres drawn as meshes (vertex and pixel shaders), beside
+// the manifest's kernels: judged on every path of the run harness against SplitSumSpheresCS.
+inline constexpr const char* kForwardPassShader = "ForwardSpheres";
+
 // The options the suite runs every kernel with: the manifest's (or, when there is no such file,
 // those of the hlsl/ built into the program), with SAMPLE_COUNT set and the LUTs written as
 // R32G32_SFLOAT (so that the comparison measures arithmetic, not storage); and
@@ -129,6 +133,7 @@ Bounds lutProbeBounds();
 Bounds bsdfProbeBounds();
 Bounds renderReferenceBounds();
 Bounds splitSumSpheresBounds();
+Bounds forwardPassBounds();
 std::string boundsRationale();
 // Why `kernel` on the path named `path` is known to diverge, or empty.
 std::string knownDivergence(const std::string& kernel, const std::string& path);

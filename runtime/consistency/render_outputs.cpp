@@ -22,17 +22,19 @@ namespace {
 
 constexpr uint32_t kCellSize = 8, kSamples = 16, kSeed = 3;
 
-
 const render::SphereGrid& grid() { return render::defaultSphereGrid(); }
 
 uint32_t gridWidth() { return grid().columns() * kCellSize; }
 uint32_t gridHeight() { return grid().rowCount() * kCellSize; }
 
-// What both render kernels read of the grid: its spheres' materials.
+} // namespace
+
 const std::vector<float>& sphereMaterials() {
     static const auto materials = render::packSpheres(grid());
     return materials;
 }
+
+namespace {
 
 // What RenderReferenceCS reads: the environment with its distribution at mip 0, and the lights.
 struct ReferenceInputs {
@@ -109,6 +111,8 @@ std::vector<float> glReference(const opengl::EglContext& context, const OpenGlFo
     return values;
 }
 
+} // namespace
+
 kernels::RenderSplitSumParameters splitSumParameters(const PreviewInputs& maps) {
     const auto& glass = shading::defaultRecipe().glass;
     return {grid().columns(), kCellSize, maps.specular.mips, maps.parameters.recipe, uint32_t(glass.transmission),
@@ -127,6 +131,12 @@ std::vector<float> gpuSplitSum(const vulkan::VulkanContext& context, const PathP
                                splitSumParameters(inputs));
     return image.download(context);
 }
+
+PreviewInputs splitSumMaps(const SuiteOptions& options) {
+    return previewInputs(options.environment, 1, 1, 1, options.cubeSize, options.chunkLutSize, options.sampleCount);
+}
+
+namespace {
 
 std::vector<float> glSplitSum(const opengl::EglContext& context, const OpenGlForm& form, const PreviewInputs& inputs) {
     const auto program = glpath::program(context, form);
@@ -170,7 +180,7 @@ void addRenderOutputs(SuiteRun& run) {
         addOutputAgainstPathA(run, {kernel, output, renderReferenceBounds()},
                               [&](const PathProgram& program) { return gpuReference(run.vulkan, program, reference); },
                               [&](const OpenGlForm& form) { return glReference(run.gl, form, reference); });
-    const auto maps = previewInputs(options.environment, 1, 1, 1, options.cubeSize, options.chunkLutSize, options.sampleCount);
+    const auto maps = splitSumMaps(options);
     addOutputAgainstPathA(run, {"SplitSumSpheresCS", fmt::format("{}×{} spheres, fitted pairs of lookups and a light", reference.width, reference.height),
                                 splitSumSpheresBounds()},
                           [&](const PathProgram& program) { return gpuSplitSum(run.vulkan, program, maps); },

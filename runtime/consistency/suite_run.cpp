@@ -36,14 +36,7 @@ double colourError(const std::vector<T>& values, const std::vector<double>& refe
 
 void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& references, const PathRun& vulkanRun,
                  const OpenGlRun& openGlRun, bool skipPathA) {
-    const auto add = [&](std::string path, const std::vector<float>& gpu) {
-        const auto vsFloat = measureError(gpu, references.inFloat);
-        const auto vsDouble = measureError(gpu, references.inDouble);
-        auto knownIssue = knownDivergence(spec.kernel, path);
-        run.rows.push_back({spec.kernel, std::move(path), spec.output, vsFloat, vsDouble, spec.bounds, false,
-                            withinBounds(vsFloat, vsDouble, spec.bounds), std::move(knownIssue),
-                            colourError(gpu, references.inDouble)});
-    };
+    const auto add = [&](std::string path, const std::vector<float>& gpu) { addJudgedRow(run, spec, std::move(path), gpu, references); };
     for (const auto path : kVulkanPaths)
         if (!skipPathA || path != ShaderPath::Glslang)
             add(std::string(pathName(path)), vulkanRun(run.program(spec.kernel, path)));
@@ -51,6 +44,14 @@ void addPathRows(SuiteRun& run, const OutputSpec& spec, const References& refere
 }
 
 } // namespace
+
+void addJudgedRow(SuiteRun& run, const OutputSpec& spec, std::string path, const std::vector<float>& gpu, const References& references) {
+    const auto vsFloat = measureError(gpu, references.inFloat);
+    const auto vsDouble = measureError(gpu, references.inDouble);
+    auto knownIssue = knownDivergence(spec.kernel, path);
+    run.rows.push_back({spec.kernel, std::move(path), spec.output, vsFloat, vsDouble, spec.bounds, false,
+                        withinBounds(vsFloat, vsDouble, spec.bounds), std::move(knownIssue), colourError(gpu, references.inDouble)});
+}
 
 const compiler::CompileOptions& SuiteRun::shader(const std::string& kernel) const {
     const auto found = options.shaders.find(kernel);

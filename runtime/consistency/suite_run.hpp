@@ -59,6 +59,9 @@ using OpenGlRun = std::function<std::vector<float>(const OpenGlForm&)>;
 void addOutput(SuiteRun& run, const OutputSpec& spec, const std::function<References()>& references,
                const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
+// One path's values judged against the references: a row, passed when within the spec's bounds.
+void addJudgedRow(SuiteRun& run, const OutputSpec& spec, std::string path, const std::vector<float>& gpu, const References& references);
+
 // For an output with no C++ reference: path a's result is the reference of the other paths.
 void addOutputAgainstPathA(SuiteRun& run, const OutputSpec& spec, const PathRun& vulkanRun, const OpenGlRun& openGlRun);
 
@@ -76,6 +79,8 @@ void addCubeOutputs(SuiteRun& run); // the panorama's resampling, the mip chain,
 void addConvolutionOutputs(SuiteRun& run);
 void addFilteredOutputs(SuiteRun& run);
 void addPreviewOutput(SuiteRun& run);
+// ForwardSpheres drawn on every path of the run harness, against SplitSumSpheresCS's image (forward_outputs.cpp).
+void addForwardPassOutput(SuiteRun& run);
 void addProbeOutputs(SuiteRun& run);
 
 // Every output that reads run.options.environment, in the suite's order.

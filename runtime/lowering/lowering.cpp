@@ -1,6 +1,7 @@
 #include "lowering.hpp"
 
 #include "builtin_structs.hpp"
+#include "byte_address_dimensions.hpp"
 #include "enums.hpp"
 #include "intrinsics.hpp"
 #include "namespaces.hpp"
@@ -63,6 +64,7 @@ LoweredSource lowerHlsl(const std::string& preprocessed, const std::string& sour
     tokens = runPass(tokens, "partial-texel-writes", edits, lowerPartialTexelWrites);
     tokens = runPass(tokens, "storage-load-coordinates", edits, convertStorageLoadCoordinates);
     tokens = runPass(tokens, "struct-conversions", edits, convertReturnedStructs);
+    tokens = runPass(tokens, "byte-address-dimensions", edits, scaleByteAddressDimensions);
     refuseUnsupportedFeatures(tokens);
     if (version == HlslVersion::Hlsl2021) tokens = runPass(tokens, "select-and-or", edits, lowerIntrinsics);
     for (size_t i = 0; i + 2 < tokens.size(); ++i)

@@ -24,9 +24,11 @@ EglContext::EglContext() {
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay) throw GlError("EGL lacks eglGetPlatformDisplayEXT");
     const EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    const bool initializedBefore = display != EGL_NO_DISPLAY && eglQueryString(display, EGL_VENDOR) != nullptr;
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
         throw GlError("cannot open EGL's surfaceless display (Debian package libgl1-mesa-dri)");
     display_.handle = display;
+    display_.initializedHere = !initializedBefore;
     const char* extensions = eglQueryString(display, EGL_EXTENSIONS);
     if (!hasExtension(extensions, "EGL_KHR_surfaceless_context") || !hasExtension(extensions, "EGL_KHR_no_config_context"))
         throw GlError("the EGL display cannot make a context without a surface");

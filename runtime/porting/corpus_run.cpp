@@ -59,6 +59,7 @@ namespace {
 void carryOutRun(const run::RunSpec& spec, bool seeded, run::RunOptions options, ShaderOutcome& outcome) {
     std::ostringstream log;
     options.api = run::RunApi::All;
+    outcome.seeded = seeded;
     try {
         const auto summary = run::executeRunOnPaths(spec, options, log);
         outcome.paths = summary.paths;
@@ -96,7 +97,8 @@ void judgeCompiled(const CorpusFeature& feature, const ShaderOutcome& shader, Fe
         mismatches.push_back("no warning says '" + feature.warning + "'");
     for (const auto& [target, form] : shader.forms)
         if (auto mismatch = formMismatch(feature, target, form); !mismatch.empty()) mismatches.push_back(std::move(mismatch));
-    if (shader.run == RunOutcome::Failed) mismatches.push_back("its run failed: " + shader.runLog);
+    if (shader.run == RunOutcome::Failed)
+        mismatches.push_back(std::string(shader.seeded ? "its seeded run failed: " : "its run file failed: ") + shader.runLog);
     outcome.status = !feature.kitEdits.empty() ? FeatureStatus::Lowered
                      : !feature.warning.empty() ? FeatureStatus::Warned
                                                 : FeatureStatus::Supported;

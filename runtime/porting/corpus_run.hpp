@@ -39,6 +39,7 @@ struct ShaderOutcome {
     RunOutcome run = RunOutcome::NotRun;
     std::string runLog; // what the run printed, or why it could not be carried out
     std::string notRun; // why a shader without a run file was not run
+    bool seeded = false; // run with seeded resources, having no run file
     // Each path of run::RunApi::All (Vulkan from the SPIR-V, from the HLSL form, OpenGL), and
     // whether those that ran wrote the same values.
     std::vector<run::PathOutcome> paths;

@@ -107,7 +107,8 @@ public:
         if (spec.kind == "cbuffer" || spec.kind == "buffer") {
             auto buffer = opengl::createBuffer(context_);
             std::vector<std::byte> contents(plan.bufferSize);
-            std::copy(plan.bytes.begin(), plan.bytes.end(), contents.begin());
+            const auto initial = plan.contents();
+            std::copy(initial.begin(), initial.end(), contents.begin());
             gl.NamedBufferData(buffer.name(), GLsizeiptr(contents.size()), contents.data(), GL_DYNAMIC_COPY);
             for (const auto slot : slotsOf(spec.binding, spec.kind == "cbuffer" ? "uniform_block" : "storage_buffer", spec.element))
                 gl.BindBufferBase(spec.kind == "cbuffer" ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, slot, buffer.name());
@@ -117,7 +118,7 @@ public:
         } else if (spec.kind == "sampler") {
             samplers_.emplace(spec.name, makeSampler(spec));
         } else {
-            textures_.emplace(spec.name, makeTexture(spec, *plan.image, plan.bytes));
+            textures_.emplace(spec.name, makeTexture(spec, *plan.image, plan.contents()));
             if (spec.kind == "storage_image") {
                 const auto& texture = textures_.at(spec.name);
                 const auto& format = glTexelFormatOf(*texture.shape.format);

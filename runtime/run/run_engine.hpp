@@ -6,6 +6,7 @@
 
 #include "reflection.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -41,12 +42,15 @@ struct RunPrograms {
     compiler::ShaderReflection resources; // every stage's resources and push constants, by name
 };
 
-// A resource ready to be made: its bytes worked out from the run file, the same for every API.
+// A resource ready to be made, the same for every API.
 struct ResourcePlan {
     const ResourceSpec* spec = nullptr;
     const compiler::ReflectedResource* reflected = nullptr;
-    std::vector<std::byte> bytes;     // buffers, cbuffers and images: the initial contents
-    size_t bufferSize = 0;            // buffers and cbuffers: bytes allocated (at least bytes.size())
+    // Buffers, cbuffers and images: the initial contents, worked out from the run file when the
+    // engine has made the resource (so that a size the device refuses is named before gigabytes
+    // of values are). Throws RunError for values that do not fit the resource.
+    std::function<std::vector<std::byte>()> contents;
+    size_t bufferSize = 0;            // buffers and cbuffers: bytes allocated (at least the contents')
     std::optional<ImageShape> image;  // images
     const vulkan::TexelFormat* format = nullptr; // buffers: what their elements are
 };

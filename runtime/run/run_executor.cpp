@@ -265,6 +265,7 @@ compiler::CompileOptions compileOptionsOf(const RunSpec& spec) {
     options.imageFormats = spec.imageFormats;
     options.enable16BitTypes = spec.enable16BitTypes;
     options.hlslVersion = spec.hlslVersion;
+    options.virtualFiles = spec.virtualFiles;
     return options;
 }
 
@@ -303,6 +304,8 @@ RunSummary executeRunOnPaths(const RunSpec& spec, const RunOptions& options, std
             runs[i].reset();
         }
         summary.paths.push_back(outcome);
+        if (runs[i])
+            for (const auto& name : plan.written) summary.written[path.name][name] = runs[i]->read(name).values;
     }
     summary.pathsAgree = true;
     for (size_t i = 1; i < paths.size(); ++i)

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -55,6 +56,8 @@ struct RunSummary {
     bool passed = false;     // every expectation on every path that ran, and every comparison
     bool pathsAgree = false; // every path that ran wrote what Vulkan wrote, within the bound
     std::vector<PathOutcome> paths;
+    // What each path that ran wrote, by path and resource (or target) name.
+    std::map<std::string, std::map<std::string, std::vector<double>>> written;
 };
 
 // executeRun with what each path did. RunApi::All runs three paths: Vulkan from the SPIR-V,

@@ -122,6 +122,7 @@ struct RunSpec {
     std::map<std::string, std::filesystem::path> saves;
     std::optional<GraphicsSpec> graphics; // a draw; `shader` and `entry` are then the vertex stage's
     std::optional<Tolerance> crossApi;    // how far the APIs may differ, when not the default
+    std::map<std::string, std::string> virtualFiles; // files the shaders include, by path, instead of the disk's (a program's own)
 };
 
 // Reads a run file (docs/run-files.md); paths in it are relative to the file.

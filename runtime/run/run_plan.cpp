@@ -209,7 +209,8 @@ void checkNames(const RunSpec& spec, const compiler::ShaderReflection& reflectio
         if (draw && std::any_of(draw->targets.begin(), draw->targets.end(), [&](const auto& t) { return t.spec->name == name; })) return;
         if (draw && draw->depth && spec.graphics->depth->name == name) return;
         const auto found = std::find_if(spec.resources.begin(), spec.resources.end(), [&](const auto& r) { return r.name == name; });
-        if (found == spec.resources.end()) refuse(spec, where + ": no resource or target named '" + name + "'");
+        if (found == spec.resources.end())
+            refuse(spec, where + ": no resource " + (draw ? "or target " : "") + "named '" + name + "'");
         if (found->kind == "sampler") refuse(spec, where + ": '" + name + "' is a sampler: it holds no values");
     };
     for (const auto& expectation : spec.expectations) holdsValues(expectation.resource, "expect");
@@ -267,7 +268,8 @@ ResourcePlan planResource(const RunSpec& run, const ResourceSpec& spec, const co
     const std::string where = "resources." + spec.name;
     if (spec.kind == "cbuffer") {
         plan.bufferSize = std::max(16u, (reflected.blockSize + 15) / 16 * 16);
-        plan.bytes = withKey(run, where, [&] { return vulkan::packBlock(spec.binding, reflected.members, uint32_t(plan.bufferSize), spec.members); });
+        auto bytes = withKey(run, where, [&] { return vulkan::packBlock(spec.binding, reflected.members, uint32_t(plan.bufferSize), spec.members); });
+        plan.contents = [bytes] { return bytes; };
         plan.format = &vulkan::texelFormatNamed("R32_SFLOAT");
     } else if (spec.kind == "buffer") {
         const auto& format = bufferFormat(spec);
@@ -275,18 +277,24 @@ ResourcePlan planResource(const RunSpec& run, const ResourceSpec& spec, const co
         if (!count) count = spec.initial.values.size();
         if (!count && !spec.initial.file.empty()) count = readValues(spec.initial.file, format).size();
         if (!count) refuse(run, where + ": give \"count\", \"size_bytes\", \"values\" or \"file\"");
-        const auto values = valuesOf(run, spec.initial, where, format, count, 1);
-        plan.bytes.resize(count * 4);
-        vulkan::encodeTexels(format, values, plan.bytes);
+        plan.contents = [&run, &spec, &format, where, count] {
+            const auto values = valuesOf(run, spec.initial, where, format, count, 1);
+            std::vector<std::byte> bytes(count * 4);
+            vulkan::encodeTexels(format, values, bytes);
+            return bytes;
+        };
         plan.bufferSize = std::max<size_t>(count * 4, reflected.blockSize);
         plan.format = &format;
     } else if (spec.kind != "sampler") {
         const auto& format = withKey(run, where + ".format", [&]() -> const vulkan::TexelFormat& { return vulkan::texelFormatNamed(spec.format); });
         const uint32_t mips = spec.mips ? spec.mips : vulkan::fullMipCount(spec.width, spec.height);
         plan.image = ImageShape{&format, spec.width, spec.height, spec.layers, mips, spec.dimension == "cube"};
-        const auto values = valuesOf(run, spec.initial, where, format, plan.image->valueCount(), format.channels);
-        plan.bytes.resize(values.size() * format.bytesPerChannel);
-        vulkan::encodeTexels(format, values, plan.bytes);
+        plan.contents = [&run, &spec, &format, where, shape = *plan.image] {
+            const auto values = valuesOf(run, spec.initial, where, format, shape.valueCount(), format.channels);
+            std::vector<std::byte> bytes(values.size() * format.bytesPerChannel);
+            vulkan::encodeTexels(format, values, bytes);
+            return bytes;
+        };
         plan.format = &format;
     }
     return plan;

@@ -103,7 +103,7 @@ public:
         if (spec.kind == "cbuffer" || spec.kind == "buffer") {
             const auto usage = spec.kind == "cbuffer" ? vk::BufferUsageFlagBits::eUniformBuffer : vk::BufferUsageFlagBits::eStorageBuffer;
             auto buffer = std::make_unique<vulkan::Buffer>(context_, plan.bufferSize, usage, spec.name);
-            buffer->write(plan.bytes);
+            buffer->write(plan.contents());
             bind(spec.binding, *buffer, spec.element);
             formats_[spec.name] = plan.format;
             resources_[spec.name] = std::move(buffer);
@@ -116,7 +116,7 @@ public:
             auto image = std::make_unique<vulkan::Image>(
                 context_, vulkan::ImageDesc{spec.name, shape.format, shape.width, shape.height, shape.layers, shape.mips,
                                             shape.cube, spec.kind == "storage_image"});
-            image->uploadBytes(context_, plan.bytes);
+            image->uploadBytes(context_, plan.contents());
             std::visit([&](auto& program) {
                 if constexpr (!std::is_same_v<std::decay_t<decltype(program)>, std::monostate>)
                     program.bind(spec.binding, *image, spec.mip, spec.element);

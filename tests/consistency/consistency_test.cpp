@@ -79,12 +79,12 @@ std::vector<RowShape> committedShapes(const std::string& report) {
 // The whole suite, as `iblkit consistency` runs it for docs/consistency.md (about 50 s).
 TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
     const auto rows = run(defaultSuiteOptions());
-    ASSERT_EQ(rows.size(), 39u * 6u + 4u * 5u)
+    ASSERT_EQ(rows.size(), 39u * 6u + 4u * 5u + 3u)
         << "LUT 512² and 32², the quadrature LUT, the quadrature grid's nodes and resampling, the polynomial LUT, four prefilter roughnesses, the chunked LUT and prefilter, the sky, the panorama, the mip chain, the "
            "harmonics, the irradiance cube, the energy pyramid and its convolution by N·L and by G1, by both the manifest's walk and the bake's (SOURCE_TEXELS_IN_PYRAMID), the filtered, table and pyramid "
            "prefilters at four roughnesses, the pyramid's ring at the two of them wide enough for it, the three probes: the float "
            "reference and five paths each; the preview, both Monte Carlo references and the split-sum spheres: path a "
-           "as the reference and four paths";
+           "as the reference and four paths; the forward pass drawn on three";
     EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const auto& row) { return row.path == openGlPathName(); }), 43)
         << "path d runs on OpenGL for every output";
     for (const auto& kernel : kernels::kernelTable())
@@ -117,7 +117,8 @@ TEST(Consistency, EveryPathIsWithinItsBoundsForEveryOutput) {
 // runs the copy of hlsl/ built into the program.
 TEST(ConsistencyOptions, WithoutAManifestOnDiskTheBuiltInShadersServe) {
     const auto options = defaultSuiteOptions("no/such/folder/shaders.json", 16);
-    ASSERT_EQ(options.shaders.size(), kernels::kernelTable().size() + 1) << "every kernel, and the bake's convolution walk";
+    ASSERT_EQ(options.shaders.size(), kernels::kernelTable().size() + 2) << "every kernel, the bake's convolution walk and the forward pass";
+    EXPECT_TRUE(options.shaders.contains(kForwardPassShader));
     EXPECT_TRUE(options.shaders.contains(kConvolutionInPyramidShader));
     for (const auto& [name, shader] : options.shaders) {
         ASSERT_TRUE(shader.sourceText.has_value()) << name;
@@ -162,6 +163,14 @@ protected:
 
     testing::TempFolder scratch;
 };
+
+// The classic port's bug: the vertex shader's y not turned down the image. The drawn spheres are
+// mirrored in each cell, and every path of the forward pass fails against the computed image.
+TEST_F(BrokenVariant, AnUnflippedYFailsTheForwardPass) {
+    expectEveryPathFails(broken("ForwardSpheres.hlsl", "float2( input.Position.x, -input.Position.y )",
+                                "float2( input.Position.x, input.Position.y )"),
+                         {kForwardPassShader});
+}
 
 TEST_F(BrokenVariant, KFromDirectLightingFailsTheLut) {
     expectEveryPathFails(broken("document/Common/PBR.fxh", "float k = ( a * a ) / 2.f;", "float k = ( ( a + 1.f ) * ( a + 1.f ) ) / 8.f;"),
