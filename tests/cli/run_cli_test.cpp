@@ -27,8 +27,11 @@ protected:
     json example(const std::string& name) const {
         std::ifstream stream("docs/examples/" + name);
         json run = json::parse(stream);
-        run["shader"] = fs::absolute(fs::path("docs/examples") / run["shader"].get<std::string>()).lexically_normal();
-        run["include"] = json::array({fs::absolute("hlsl").string()});
+        const auto absolute = [](const json& path) { return fs::absolute(fs::path("docs/examples") / path.get<std::string>()).lexically_normal(); };
+        for (const char* stage : {"vertex", "pixel"})
+            if (run.contains(stage)) run[stage]["shader"] = absolute(run[stage]["shader"]);
+        if (run.contains("shader")) run["shader"] = absolute(run["shader"]);
+        run["include"] = json::array({fs::absolute("hlsl").string(), fs::absolute("hlsl/document").string()});
         for (auto& [resource, file] : run["save"].items()) file = (folder / file.get<std::string>()).string();
         return run;
     }
@@ -69,6 +72,24 @@ TEST_F(RunCli, WithoutAVulkanDriverOneLineSaysWhatToInstall) {
         EXPECT_EQ(result.err, "no Vulkan device found: install Mesa's lavapipe (Debian package mesa-vulkan-drivers) "
                               "or a GPU driver\n")
             << command;
+    }
+}
+
+// Every documented example on every path of --api all: each passes on each, and the report gives
+// each path's largest difference from Vulkan's for every value the shaders write.
+TEST_F(RunCli, EveryExamplePassesOnEveryPathAndTheirDifferencesAreReported) {
+    for (const auto& entry : fs::directory_iterator("docs/examples")) {
+        const auto name = entry.path().filename().string();
+        if (!name.ends_with(".run.json")) continue;
+        auto run = example(name);
+        run.erase("save");
+        const auto path = folder / "test.run.json";
+        std::ofstream(path) << run.dump(2);
+        const auto result = runProcess({IBLKIT_EXECUTABLE, "run", path.string(), "--api", "all"});
+        EXPECT_EQ(result.exitCode, 0) << name << "\n" << result.out << result.err;
+        for (const char* line : {"PASS round trip", "PASS cross-API", "largest difference"})
+            EXPECT_NE(result.out.find(line), std::string::npos) << name << " lacks '" << line << "':\n" << result.out;
+        EXPECT_EQ(result.out.find("FAIL"), std::string::npos) << name << "\n" << result.out;
     }
 }
 
