@@ -14,6 +14,7 @@
 #include "spirv_texel_widening.hpp"
 #include "spirv_wave_prefix.hpp"
 #include "spirv_tools.hpp"
+#include "spirv_varyings.hpp"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -86,6 +87,8 @@ CompiledShader compileShader(const CompileOptions& options) {
     shader.bindingShifts = frontend.bindingShifts;
     shader.includedFiles = std::move(frontend.includedFiles);
     shader.warnings = std::move(frontend.warnings);
+    if (auto warning = matrixInputWarning(varyings, frontend.stage == ShaderStage::Vertex, shader.sourceName); !warning.empty())
+        shader.warnings.push_back(std::move(warning));
     return shader;
 }
 

@@ -41,6 +41,7 @@ std::string builtInName(uint32_t builtIn) {
 struct Shape {
     std::string componentType = "float";
     uint32_t components = 1, locations = 1;
+    bool matrix = false;
 };
 
 Shape shapeOf(const SpirvModule& module, uint32_t type) {
@@ -58,6 +59,7 @@ Shape shapeOf(const SpirvModule& module, uint32_t type) {
     case spv::OpTypeMatrix: {
         auto shape = shapeOf(module, declaration->operands[1]);
         shape.locations = declaration->operands[2];
+        shape.matrix = true;
         return shape;
     }
     case spv::OpTypeArray: {
@@ -115,9 +117,21 @@ std::vector<Varying> readVaryings(const SpirvModule& module) {
         varying.componentType = shape.componentType;
         varying.components = shape.components;
         varying.locations = shape.locations;
+        varying.matrix = shape.matrix;
         varyings.push_back(std::move(varying));
     }
     return varyings;
+}
+
+std::string matrixInputWarning(const std::vector<Varying>& varyings, bool vertexShader, const std::string& sourceName) {
+    if (!vertexShader) return "";
+    for (const auto& varying : varyings)
+        if (varying.input && varying.matrix && varying.builtIn.empty())
+            return sourceName + ": warning: vertex input " + varying.semantic + " is a matrix, which glslang reads a row per "
+                   "location (" + std::to_string(varying.locations) + " of " + varying.componentType +
+                   std::to_string(varying.components) + "); Direct3D's input layout gives a column-major one (HLSL's "
+                   "default) by columns: bind its rows, or declare it row_major, which Direct3D also gives by rows";
+    return "";
 }
 
 } // namespace iblkit::compiler

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace iblkit::porting {
 namespace {
@@ -31,6 +32,33 @@ std::string escapeCell(std::string text) {
 std::string shortCommit(const std::string& commit) { return commit.substr(0, 12); }
 
 // ✓ produced and read back, ◐ produced and not read back, ✗ refused by name, · not made.
+// ✓ run on all three paths, the same numbers; ◐ the same where run; ✗ they differ (or the run
+// crashed); · not run.
+const char* pathsMark(const ConfigurationOutcome& outcome) {
+    if (outcome.paths.empty()) return "·";
+    if (!outcome.pathsAgree) return "✗";
+    return outcome.sameNumbersOnEveryPath() ? "✓" : "◐";
+}
+
+// The line of a message that says what went wrong: the first naming an error, not the "In file
+// included from" before it.
+std::string firstLineOf(const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (line.find("error") != std::string::npos) return line;
+    return text.substr(0, text.find('\n'));
+}
+
+// Why the seeded run shows less than ✓: the first difference, or why it or a path did not run.
+std::string runNote(const ConfigurationOutcome& outcome) {
+    if (!outcome.disagreement.empty()) return "differs: " + firstLineOf(outcome.disagreement);
+    if (!outcome.notRun.empty()) return "not run: " + firstLineOf(outcome.notRun);
+    std::string note;
+    for (const auto& path : outcome.paths)
+        if (!path.ran) note += (note.empty() ? "" : "; ") + path.path + " not run: " + firstLineOf(path.notRun);
+    return note.size() > 300 ? note.substr(0, 297) + "..." : note;
+}
+
 const char* formMark(const ConfigurationOutcome& outcome, CrossTarget target) {
     const auto found = outcome.forms.find(target);
     if (found == outcome.forms.end()) return "·";
@@ -40,24 +68,25 @@ const char* formMark(const ConfigurationOutcome& outcome, CrossTarget target) {
 
 void appendTotals(std::string& out, const std::vector<CodeBaseResults>& results) {
     out += "| code base | commit | configurations | stages | reach SPIR-V | every form | all six forms read back | "
-           "ray tracing, mesh |\n|---|---|--:|---|--:|--:|--:|--:|\n";
+           "same numbers where run | on all three paths | ray tracing, mesh |\n|---|---|--:|---|--:|--:|--:|--:|--:|--:|\n";
     for (const auto& result : results) {
         const auto totals = portingTotals({result});
         std::map<std::string, size_t> stages;
         for (const auto& outcome : result.outcomes) ++stages[outcome.stage];
         std::string stageList;
         for (const auto& [stage, count] : stages) stageList += (stageList.empty() ? "" : ", ") + fmt::format("{} {}", count, stage);
-        out += fmt::format("| [{}]({}) | `{}` | {} | {} | {} ({}) | {} ({}) | {} ({}) | {} |\n", result.codeBase.name,
+        out += fmt::format("| [{}]({}) | `{}` | {} | {} | {} ({}) | {} ({}) | {} ({}) | {} of {} | {} | {} |\n", result.codeBase.name,
                            result.codeBase.repository, shortCommit(result.codeBase.commit), totals.configurations, stageList,
                            totals.reachedSpirv, percent(totals.reachedSpirv, totals.counted()), totals.everyForm,
                            percent(totals.everyForm, totals.counted()), totals.allSixForms,
-                           percent(totals.allSixForms, totals.counted()), totals.refusedStages);
+                           percent(totals.allSixForms, totals.counted()), totals.sameWhereRun, totals.ran, totals.sameEveryPath,
+                           totals.refusedStages);
     }
     const auto all = portingTotals(results);
-    out += fmt::format("| **all** | | **{}** | | **{} ({})** | **{} ({})** | **{} ({})** | **{}** |\n\n", all.configurations,
-                       all.reachedSpirv, percent(all.reachedSpirv, all.counted()), all.everyForm,
+    out += fmt::format("| **all** | | **{}** | | **{} ({})** | **{} ({})** | **{} ({})** | **{} of {}** | **{}** | **{}** |\n\n",
+                       all.configurations, all.reachedSpirv, percent(all.reachedSpirv, all.counted()), all.everyForm,
                        percent(all.everyForm, all.counted()), all.allSixForms, percent(all.allSixForms, all.counted()),
-                       all.refusedStages);
+                       all.sameWhereRun, all.ran, all.sameEveryPath, all.refusedStages);
 }
 
 void appendCauses(std::string& out, const std::vector<CodeBaseResults>& results) {
@@ -98,12 +127,12 @@ void appendConfigurations(std::string& out, const CodeBaseResults& result) {
         out += fmt::format(", with [{}]({}) at `{}`", requirement.name, requirement.repository, requirement.commit);
     out += ".";
     if (!base.description.empty()) out += " " + base.description;
-    out += "\n\n| configuration | stage | build | glsl | essl | msl | hlsl | vulkan-glsl | vulkan-essl | why not |\n"
-           "|---|---|---|:-:|:-:|:-:|:-:|:-:|:-:|---|\n";
+    out += "\n\n| configuration | stage | build | glsl | essl | msl | hlsl | vulkan-glsl | vulkan-essl | why not | same numbers | run |\n"
+           "|---|---|---|:-:|:-:|:-:|:-:|:-:|:-:|---|:-:|---|\n";
     for (const auto& outcome : result.outcomes) {
         out += fmt::format("| `{}` | {} | {} {} |", escapeCell(outcome.label), outcome.stage, outcome.target, outcome.profile);
         for (const auto target : compiler::kCrossTargets) out += fmt::format(" {} |", formMark(outcome, target));
-        out += " " + escapeCell(failureCause(outcome)) + " |\n";
+        out += " " + escapeCell(failureCause(outcome)) + " | " + pathsMark(outcome) + " | " + escapeCell(runNote(outcome)) + " |\n";
     }
     out += "\n";
 }
@@ -117,13 +146,15 @@ nlohmann::json outcomeJson(const ConfigurationOutcome& outcome) {
             {"profile", outcome.profile},     {"refused_stage", outcome.refusedStage}, {"spirv", outcome.reachedSpirv()},
             {"every_form", outcome.everyForm()}, {"error", outcome.error},      {"cause", failureCause(outcome)},
             {"kit_edits", outcome.kitEdits},  {"warnings", outcome.warnings},  {"forms", forms},
-            {"seconds", outcome.seconds}};
+            {"same_numbers", pathsMark(outcome)}, {"run", runNote(outcome)}, {"seconds", outcome.seconds}};
 }
 
 nlohmann::json totalsJson(const PortingTotals& totals) {
     return {{"configurations", totals.configurations}, {"ray_tracing_or_mesh", totals.refusedStages},
             {"counted", totals.counted()},             {"spirv", totals.reachedSpirv},
-            {"every_form", totals.everyForm},          {"all_six_forms", totals.allSixForms}};
+            {"every_form", totals.everyForm},          {"all_six_forms", totals.allSixForms},
+            {"ran", totals.ran},                       {"same_numbers_where_run", totals.sameWhereRun},
+            {"same_numbers_on_every_path", totals.sameEveryPath}, {"differ", totals.differ}};
 }
 
 } // namespace
@@ -140,6 +171,10 @@ PortingTotals portingTotals(const std::vector<CodeBaseResults>& results) {
             totals.reachedSpirv += outcome.reachedSpirv();
             totals.everyForm += outcome.everyForm();
             totals.allSixForms += outcome.allSixForms();
+            totals.ran += !outcome.paths.empty();
+            totals.sameWhereRun += outcome.sameNumbersWhereRun();
+            totals.sameEveryPath += outcome.sameNumbersOnEveryPath();
+            totals.differ += !outcome.paths.empty() && !outcome.pathsAgree;
         }
     return totals;
 }
@@ -177,14 +212,23 @@ std::string codeBaseMarkdown(const std::vector<CodeBaseResults>& results, const 
                        percent(totals.reachedSpirv, totals.counted()), totals.everyForm,
                        percent(totals.everyForm, totals.counted()), totals.allSixForms,
                        percent(totals.allSixForms, totals.counted()));
+    out += fmt::format("Each that reaches SPIR-V is then run with seeded resources (every resource filled with seeded "
+                       "values in its valid range; a vertex or pixel shader alone drawn with a stage the kit writes; "
+                       "`iblkit run --api all`'s three paths: Vulkan from the SPIR-V, Vulkan from the HLSL form compiled "
+                       "anew, OpenGL from the GLSL form, each within 4 ULP or 1e-6 of Vulkan's values). "
+                       "**{} ran; {} wrote the same numbers on every path that could take them**, {} on all three; "
+                       "{} differ.\n\n",
+                       totals.ran, totals.sameWhereRun, totals.sameEveryPath, totals.differ);
     out += "## Code bases\n\n";
     appendTotals(out, results);
     out += "## Why the rest do not\n\nEach configuration without every form, by the first thing that stopped it: the "
            "kit's refusal with its place, names and numbers taken out, or the first form not read back.\n\n";
     appendCauses(out, results);
     appendEdits(out, results);
-    out += "## Every configuration\n\n✓ produced and read back; ◐ produced, not read back; ✗ refused by name (its "
-           "language cannot express the shader); · not made.\n\n";
+    out += "## Every configuration\n\nForms: ✓ produced and read back; ◐ produced, not read back; ✗ refused by name (its "
+           "language cannot express the shader); · not made. Same numbers: ✓ run on all three paths, which agree; ◐ they "
+           "agree where run (the run column says why a path could not take the shader); ✗ they differ, or the run "
+           "crashed; · not run.\n\n";
     for (const auto& result : results) appendConfigurations(out, result);
     return out;
 }

@@ -12,6 +12,9 @@ struct PortingTotals {
     size_t configurations = 0; // all of them
     size_t refusedStages = 0;  // ray tracing, mesh, amplification
     size_t reachedSpirv = 0, everyForm = 0, allSixForms = 0;
+    // Seeded runs: run on Vulkan with every other path that could take it agreeing; on all three agreeing;
+    // run at all; and differing (or crashing).
+    size_t sameWhereRun = 0, sameEveryPath = 0, ran = 0, differ = 0;
     size_t counted() const { return configurations - refusedStages; }
 };
 PortingTotals portingTotals(const std::vector<CodeBaseResults>& results);

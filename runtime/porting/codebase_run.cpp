@@ -3,12 +3,14 @@
 #include "bounded_child.hpp"
 #include "compile_error.hpp"
 #include "compiler.hpp"
+#include "seeded_run.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <regex>
+#include <sstream>
 
 namespace iblkit::porting {
 namespace {
@@ -46,6 +48,41 @@ std::string compileInChild(const CodeBaseConfiguration& configuration) {
         .dump();
 }
 
+// The child's work for the seeded run: compile again (the reflection holds the varyings), run on
+// every path, say what each did.
+std::string runSeededInChild(const CodeBaseConfiguration& configuration) {
+    const auto shader = compiler::compileShader(configuration.options);
+    auto seeded = run::seededRun(configuration.options, shader.reflection);
+    if (const auto* why = std::get_if<std::string>(&seeded)) return json{{"not_run", *why}}.dump();
+    std::ostringstream log;
+    run::RunOptions options;
+    options.api = run::RunApi::All;
+    options.timeout = std::chrono::seconds(30);
+    try {
+        const auto summary = run::executeRunOnPaths(std::get<run::RunSpec>(seeded), options, log);
+        json paths = json::array();
+        for (const auto& path : summary.paths) paths.push_back({{"path", path.path}, {"ran", path.ran}, {"not_run", path.notRun}});
+        std::string disagreement;
+        std::istringstream lines(log.str());
+        for (std::string line; disagreement.empty() && std::getline(lines, line);)
+            if (line.rfind("FAIL", 0) == 0) disagreement = line;
+        return json{{"paths", paths}, {"agree", summary.pathsAgree}, {"disagreement", disagreement}}.dump();
+    } catch (const std::exception& error) { // the device lacks what the shader needs, a resource it cannot make
+        return json{{"not_run", error.what()}}.dump();
+    }
+}
+
+void readSeededRun(const json& result, ConfigurationOutcome& outcome) {
+    if (result.contains("not_run")) {
+        outcome.notRun = result["not_run"].get<std::string>();
+        return;
+    }
+    for (const auto& path : result["paths"])
+        outcome.paths.push_back({path["path"].get<std::string>(), path["ran"].get<bool>(), false, path["not_run"].get<std::string>()});
+    outcome.pathsAgree = result["agree"].get<bool>();
+    outcome.disagreement = result["disagreement"].get<std::string>();
+}
+
 // The line that says what went wrong: the first error, not the "In file included from" before it.
 std::string errorLine(const std::string& message) {
     size_t start = 0;
@@ -76,6 +113,12 @@ bool ConfigurationOutcome::everyForm() const {
     return reachedSpirv() && std::all_of(forms.begin(), forms.end(), [](const auto& entry) {
                return !entry.second.produced || entry.second.message.empty();
            });
+}
+
+bool ConfigurationOutcome::sameNumbersWhereRun() const { return !paths.empty() && pathsAgree; }
+
+bool ConfigurationOutcome::sameNumbersOnEveryPath() const {
+    return sameNumbersWhereRun() && std::all_of(paths.begin(), paths.end(), [](const auto& path) { return path.ran; });
 }
 
 bool ConfigurationOutcome::allSixForms() const {
@@ -116,6 +159,18 @@ ConfigurationOutcome portConfiguration(const CodeBaseConfiguration& configuratio
     } catch (const compiler::CompileError& error) {
         outcome.error = error.what();
         if (outcome.error.empty()) outcome.error = configuration.options.source.string() + ": error: compilation failed";
+    }
+    if (outcome.reachedSpirv()) {
+        try {
+            readSeededRun(json::parse(compiler::runInBoundedChild(
+                              [&] { return runSeededInChild(configuration); },
+                              {limits.cpuSeconds, limits.wallSeconds, limits.extraMegabytes}, configuration.options.source.string(),
+                              "the seeded run", " of this configuration")),
+                          outcome);
+        } catch (const compiler::CompileError& error) { // a crash or a limit: a finding, named
+            outcome.disagreement = error.what();
+            outcome.paths.push_back({"vulkan", false, false, error.what()});
+        }
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return outcome;

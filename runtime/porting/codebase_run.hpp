@@ -21,6 +21,13 @@ struct ConfigurationOutcome {
     std::vector<std::string> kitEdits;
     std::vector<std::string> warnings;
     std::map<compiler::CrossTarget, FormOutcome> forms;
+    // The shader run with seeded resources on every path of run::RunApi::All (Vulkan from the
+    // SPIR-V, from the HLSL form, OpenGL from the GLSL form): which ran, whether they agree, why
+    // it or a path did not run, and the first comparison that failed.
+    std::vector<run::PathOutcome> paths;
+    bool pathsAgree = false;
+    std::string notRun;
+    std::string disagreement;
     double seconds = 0;
 
     bool reachedSpirv() const { return error.empty(); }
@@ -30,6 +37,10 @@ struct ConfigurationOutcome {
     bool everyForm() const;
     // Every form produced and read back.
     bool allSixForms() const;
+    // Run on Vulkan, and every other path that could take it wrote the same numbers.
+    bool sameNumbersWhereRun() const;
+    // Run on all three paths, which wrote the same numbers.
+    bool sameNumbersOnEveryPath() const;
 };
 
 // A configuration's failure, grouped: the kit's words with places, names and numbers taken out
@@ -46,7 +57,7 @@ struct ConfigurationLimits {
 };
 
 // Compiles the configuration, makes every form and reads each back, in a child process under
-// `limits`.
+// `limits`; then, in another, runs it with seeded resources on every path (run::seededRun).
 ConfigurationOutcome portConfiguration(const CodeBaseConfiguration& configuration, const ConfigurationLimits& limits = {});
 
 struct CodeBaseResults {

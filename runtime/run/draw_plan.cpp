@@ -34,11 +34,33 @@ std::string kindName(vulkan::ComponentKind kind) {
     return kind == K::UInt ? "uint" : kind == K::SInt ? "int" : "float";
 }
 
+} // namespace
+
+std::vector<compiler::Varying> inputSlots(const compiler::ShaderReflection& vertex) {
+    std::vector<compiler::Varying> slots;
+    for (const auto& varying : vertex.varyings) {
+        if (!varying.input || !varying.builtIn.empty()) continue;
+        const size_t digits = varying.semantic.find_last_not_of("0123456789") + 1;
+        const std::string name = varying.semantic.substr(0, digits);
+        const uint32_t index = digits < varying.semantic.size() ? uint32_t(std::stoul(varying.semantic.substr(digits))) : 0;
+        for (uint32_t row = 0; row < varying.locations; ++row) {
+            auto slot = varying;
+            slot.locations = 1;
+            slot.location = varying.location + int32_t(row);
+            slot.semantic = varying.locations > 1 ? name + std::to_string(index + row) : varying.semantic;
+            slots.push_back(std::move(slot));
+        }
+    }
+    return slots;
+}
+
+namespace {
+
 // The vertex shader's inputs other than system values, each bound to a vertex_input entry.
 std::vector<AttributePlan> planAttributes(const RunSpec& spec, const compiler::ShaderReflection& vertex, uint32_t& vertexCount) {
+    const auto slots = inputSlots(vertex);
     std::vector<const compiler::Varying*> inputs;
-    for (const auto& varying : vertex.varyings)
-        if (varying.input && varying.builtIn.empty()) inputs.push_back(&varying);
+    for (const auto& slot : slots) inputs.push_back(&slot);
     std::vector<AttributePlan> plans;
     for (const auto& given : spec.graphics->vertexInput) {
         const std::string where = "vertex_input." + given.semantic;
@@ -47,9 +69,6 @@ std::vector<AttributePlan> planAttributes(const RunSpec& spec, const compiler::S
         if (input == inputs.end())
             refuseDraw(spec, where + ": the vertex shader has no input of that semantic (it reads: " + listOf(inputs) + ")");
         const auto& format = *findVertexFormat(given.format);
-        if ((*input)->locations > 1)
-            refuseDraw(spec, where + ": the input is a " + std::to_string((*input)->locations) +
-                           "-row matrix or array; bind its rows as vectors of their own semantics");
         if (!kindsMatch((*input)->componentType, format.kind))
             refuseDraw(spec, where + ".format: the shader reads " + typeName(**input) + ", the format gives " + kindName(format.kind) + "s");
         const auto& component = format.componentFormat();

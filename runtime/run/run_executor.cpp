@@ -257,7 +257,7 @@ std::vector<RunPath> pathsOf(const RunSpec& spec, const RunOptions& options, con
 } // namespace
 
 compiler::CompileOptions compileOptionsOf(const RunSpec& spec) {
-    compiler::CompileOptions options;
+    compiler::CompileOptions options = spec.compileBase.value_or(compiler::CompileOptions{});
     options.source = spec.shader;
     options.entryPoint = spec.entry;
     options.includeDirs = spec.includeDirs;

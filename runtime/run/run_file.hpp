@@ -1,6 +1,7 @@
 #pragma once
 
 #include "json_fields.hpp"
+#include "compile_options.hpp"
 #include "lowering.hpp"
 
 #include <array>
@@ -123,6 +124,9 @@ struct RunSpec {
     std::optional<GraphicsSpec> graphics; // a draw; `shader` and `entry` are then the vertex stage's
     std::optional<Tolerance> crossApi;    // how far the APIs may differ, when not the default
     std::map<std::string, std::string> virtualFiles; // files the shaders include, by path, instead of the disk's (a program's own)
+    // Where the shaders' compile options start (a build's prelude files, binding shifts), for runs
+    // made from a code base's configuration; the keys above are then set on it.
+    std::optional<compiler::CompileOptions> compileBase;
 };
 
 // Reads a run file (docs/run-files.md); paths in it are relative to the file.

@@ -25,6 +25,9 @@ struct RunPlan {
 RunPlan planRun(const RunSpec& spec, const RunPrograms& programs);
 // The draw's vertex attributes and targets, bound to the shaders' semantics (draw_plan.cpp).
 DrawPlan planDraw(const RunSpec& spec, const RunPrograms& programs);
+// The vertex shader's inputs other than system values, one per location: a matrix or array input
+// of semantic NAMEn takes NAMEn, NAMEn+1, ... for its rows, as Direct3D's input layout gives them.
+std::vector<compiler::Varying> inputSlots(const compiler::ShaderReflection& vertex);
 
 // The buffer element format of a "buffer" resource.
 const vulkan::TexelFormat& bufferFormat(const ResourceSpec& spec);

@@ -1,5 +1,7 @@
 #include "seeded_run.hpp"
 
+#include "run_plan.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -222,6 +224,7 @@ StageSpec fullScreenVertexShader(const compiler::ShaderReflection& pixel, const 
 
 RunSpec runOf(const compiler::CompileOptions& options) {
     RunSpec run;
+    run.compileBase = options;
     run.runFile = options.source.string() + " (seeded run)";
     run.shader = options.source;
     run.entry = options.entryPoint;
@@ -230,6 +233,7 @@ RunSpec runOf(const compiler::CompileOptions& options) {
     run.imageFormats = options.imageFormats;
     run.enable16BitTypes = options.enable16BitTypes;
     run.hlslVersion = options.hlslVersion;
+    run.virtualFiles = options.virtualFiles;
     return run;
 }
 
@@ -250,8 +254,8 @@ std::variant<RunSpec, std::string> seededRun(const compiler::CompileOptions& opt
     const StageSpec own{options.source, options.entryPoint, options.sourceText};
     if (reflection.stage == compiler::ShaderStage::Vertex) {
         graphics.vertex = own;
-        for (const auto* input : userVaryings(reflection, true)) {
-            if (input->locations > 1) return input->semantic + " is a vertex input array or matrix; give the shader a run file";
+        const auto slots = inputSlots(reflection);
+        for (const auto* input = slots.data(); input != slots.data() + slots.size(); ++input) {
             const std::string kind = input->componentType == "float" ? "32f" : input->componentType == "uint" ? "32ui" : "32i";
             const std::string format = std::string(input->components == 1 ? "r" : input->components == 2 ? "rg" : input->components == 3 ? "rgb" : "rgba") + kind;
             graphics.vertexInput.push_back({input->semantic, format, {{}, seeds.values(input->componentType, 6 * input->components, -0.9, 0.9), {}}});

@@ -183,6 +183,32 @@ TEST_F(Draws, TheViewportCountsRowsFromTheTopAndBlendingAddsToTheClear) {
     EXPECT_TRUE(run(file, RunApi::All, report)) << report;
 }
 
+// float4x4 World : WORLD is WORLD0 to WORLD3 in Direct3D's input layout: one attribute per row.
+TEST_F(Draws, AMatrixInputTakesOneSemanticPerRow) {
+    std::ofstream(folder / "matrix.hlsl") << R"(
+struct VSIn { float2 position : POSITION; float4x4 world : WORLD; };
+struct VSOut { float4 position : SV_Position; float4 row : ROW; };
+VSOut VSMain(VSIn v) { VSOut o; o.position = float4(v.position, 0.5, 1); o.row = v.world[2]; return o; }
+float4 PSMain(VSOut i) : SV_Target { return i.row; }
+)";
+    json file = json::parse(R"({
+        "vertex": {"shader": "matrix.hlsl", "entry": "VSMain"}, "pixel": {"shader": "matrix.hlsl", "entry": "PSMain"},
+        "vertex_input": {"POSITION": {"format": "rg32f", "values": [-1, -1, -1, 3, 3, -1]},
+                         "WORLD0": {"format": "rgba32f", "values": [1, 0, 0, 0,  1, 0, 0, 0,  1, 0, 0, 0]},
+                         "WORLD1": {"format": "rgba32f", "values": [0, 1, 0, 0,  0, 1, 0, 0,  0, 1, 0, 0]},
+                         "WORLD2": {"format": "rgba32f", "values": [0, 0, 1, 0,  0, 0, 1, 0,  0, 0, 1, 0]},
+                         "WORLD3": {"format": "rgba32f", "values": [5, 6, 7, 1,  5, 6, 7, 1,  5, 6, 7, 1]}},
+        "targets": {"SV_Target0": {"format": "rgba32f", "size": [2, 2]}}})");
+    // glslang reads a row per location (the compiler warns that Direct3D reads a column-major matrix's
+    // columns): WORLD2 is world[2], (0, 0, 1, 0); by columns it would be (0, 0, 1, 7).
+    file["expect"] = {{{"resource", "SV_Target0"}, {"fill", {0, 0, 1, 0}}}};
+    std::string report;
+    EXPECT_TRUE(run(file, RunApi::All, report)) << report;
+    file["vertex_input"].erase("WORLD3");
+    EXPECT_NE(errorOf(file).find("vertex_input: the vertex shader reads WORLD3 (float4), which vertex_input does not give"),
+              std::string::npos) << errorOf(file);
+}
+
 TEST_F(Draws, BadDrawsAreOneLineNamingTheKey) {
     auto mixed = triangle();
     mixed["dispatch"] = {{"threads", {1}}};
