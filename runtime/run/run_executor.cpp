@@ -75,7 +75,16 @@ public:
         for (const auto& resource : plan_.resources) withKey("resources." + resource.spec->name, [&] { engine_.makeResource(resource); });
         if (!plan_.pushConstants.empty()) withKey("push_constants", [&] { engine_.setPushConstants(plan_.pushConstants); });
         std::string line;
-        withKey(spec_.graphics ? "draw" : "dispatch", [&] { line = engine_.execute(spec_, plan_.draw ? &*plan_.draw : nullptr); });
+        try {
+            line = engine_.execute(spec_, plan_.draw ? &*plan_.draw : nullptr);
+        } catch (const vulkan::VulkanError& error) {
+            const std::string what = error.what();
+            fail(what.rfind("targets.", 0) == 0 ? what : (spec_.graphics ? "draw: " : "dispatch: ") + what);
+        } catch (const vk::SystemError& error) {
+            fail((spec_.graphics ? "draw: " : "dispatch: ") + std::string(error.what()));
+        } catch (const opengl::GlError& error) {
+            fail((spec_.graphics ? "draw: " : "dispatch: ") + std::string(error.what()));
+        }
         fmt::print(out_, "{}{}\n", prefix_, line);
         size_t passed = 0;
         for (const auto& expectation : spec_.expectations) passed += check(expectation);

@@ -217,9 +217,15 @@ private:
                            deviceTime(timing.deviceMilliseconds), timing.wallMilliseconds);
     }
 
+    // A target the device cannot render is named by its key.
     vulkan::Image* makeTarget(const std::string& name, const ImageShape& shape) {
-        auto image = std::make_unique<vulkan::Image>(
-            context_, vulkan::ImageDesc{name, shape.format, shape.width, shape.height, 1, 1, false, false, true});
+        std::unique_ptr<vulkan::Image> image;
+        try {
+            image = std::make_unique<vulkan::Image>(
+                context_, vulkan::ImageDesc{name, shape.format, shape.width, shape.height, 1, 1, false, false, true});
+        } catch (const vulkan::VulkanError& error) {
+            throw vulkan::VulkanError("targets." + name + ": " + error.what());
+        }
         auto* raw = image.get();
         resources_[name] = std::move(image);
         return raw;
