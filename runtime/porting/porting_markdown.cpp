@@ -27,7 +27,7 @@ HLSL form compiled anew by the kit, and on OpenGL from its GLSL form (llvmpipe t
 values it states on each path; one without is run with seeded resources (each filled with seeded
 values in its valid range; a vertex or pixel shader alone drawn with a stage the kit writes to
 feed it or read it), and only the paths' agreement judges it. Every value a shader writes on the
-HLSL and OpenGL paths must lie within 4 ULP of Vulkan's.
+HLSL and OpenGL paths must lie within 4 ULP (or 1e-6) of Vulkan's.
 
 - **supported**: glslang's HLSL frontend compiles it as it is written.
 - **lowered by the kit**: the kit rewrites it, in the source before glslang or in the SPIR-V
