@@ -128,14 +128,22 @@ run::RunSpec forwardRun(const compiler::CompileOptions& shader, const PreviewInp
     return spec;
 }
 
-// The image where both pictures cover the pixel; elsewhere 0. What a mesh's polygon leaves out
-// of the sphere's silhouette is no error of the shading.
-std::vector<float> whereBothCover(std::span<const double> drawn, std::span<const float> computed) {
-    std::vector<float> masked(drawn.size(), 0.f);
+// Both images where both cover the pixel, and 0 elsewhere: what a mesh's polygon leaves out of
+// the sphere's silhouette is no error of the shading.
+struct CoveredByBoth {
+    std::vector<float> drawn;
+    std::vector<double> computed;
+};
+
+CoveredByBoth whereBothCover(std::span<const double> drawn, std::span<const float> computed) {
+    CoveredByBoth both{std::vector<float>(drawn.size(), 0.f), std::vector<double>(drawn.size(), 0.0)};
     for (size_t pixel = 0; pixel + 3 < drawn.size() && pixel + 3 < computed.size(); pixel += 4)
         if (drawn[pixel + 3] > 0 && computed[pixel + 3] > 0)
-            for (size_t c = 0; c < 4; ++c) masked[pixel + c] = float(drawn[pixel + c]);
-    return masked;
+            for (size_t c = 0; c < 4; ++c) {
+                both.drawn[pixel + c] = float(drawn[pixel + c]);
+                both.computed[pixel + c] = computed[pixel + c];
+            }
+    return both;
 }
 
 } // namespace
@@ -155,14 +163,9 @@ void addForwardPassOutput(SuiteRun& run) {
     for (const auto& path : summary.paths) {
         const std::string name = "drawn: " + path.path;
         if (!path.ran) throw std::runtime_error(std::string(kForwardPassShader) + " did not run on the " + path.path + " path: " + path.notRun);
-        const auto& drawn = summary.written.at(path.path).at("SV_Target0");
-        // The reference is the computed image where the drawn one covers it too.
-        std::vector<double> covered(drawn.size(), 0.0);
-        for (size_t pixel = 0; pixel + 3 < drawn.size(); pixel += 4)
-            if (drawn[pixel + 3] > 0 && computed[pixel + 3] > 0)
-                for (size_t c = 0; c < 4; ++c) covered[pixel + c] = computed[pixel + c];
-        References references{std::vector<float>(covered.begin(), covered.end()), covered};
-        addJudgedRow(run, spec, name, whereBothCover(drawn, computed), references);
+        const auto both = whereBothCover(summary.written.at(path.path).at("SV_Target0"), computed);
+        const References references{std::vector<float>(both.computed.begin(), both.computed.end()), both.computed};
+        addJudgedRow(run, spec, name, both.drawn, references);
     }
 }
 

@@ -73,6 +73,12 @@ GlForm glslFormOf(const ShaderProgram& program, const std::map<std::string, doub
     return {glsl, program.sourceName + " (" + program.reflection.entryPoint + ")"};
 }
 
+struct GlBuffer {
+    GlObject object;
+    const vulkan::TexelFormat* format;
+    size_t bytes;
+};
+
 struct Texture {
     GlObject object;
     ImageShape shape;
@@ -113,8 +119,7 @@ public:
             for (const auto slot : slotsOf(spec.binding, spec.kind == "cbuffer" ? "uniform_block" : "storage_buffer", spec.element))
                 gl.BindBufferBase(spec.kind == "cbuffer" ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, slot, buffer.name());
             context_.check(("binding " + spec.name).c_str());
-            buffers_.emplace(spec.name, std::make_pair(std::move(buffer), plan.format));
-            sizes_[spec.name] = plan.bufferSize;
+            buffers_.emplace(spec.name, GlBuffer{std::move(buffer), plan.format, plan.bufferSize});
         } else if (spec.kind == "sampler") {
             samplers_.emplace(spec.name, makeSampler(spec));
         } else {
@@ -208,8 +213,8 @@ public:
             return readback;
         }
         if (const auto found = buffers_.find(name); found != buffers_.end()) {
-            const auto& [buffer, format] = found->second;
-            std::vector<std::byte> bytes(sizes_.at(name));
+            const auto& [buffer, format, size] = found->second;
+            std::vector<std::byte> bytes(size);
             gl.GetNamedBufferSubData(buffer.name(), 0, GLsizeiptr(bytes.size()), bytes.data());
             context_.check(("reading " + name).c_str());
             Readback readback{std::vector<double>(bytes.size() / 4), format, std::nullopt};
@@ -300,8 +305,7 @@ private:
     std::optional<GlObject> program_;
     std::array<uint32_t, 3> workgroup_{1, 1, 1};
     compiler::ShaderReflection pushConstants_;
-    std::map<std::string, std::pair<GlObject, const vulkan::TexelFormat*>> buffers_;
-    std::map<std::string, size_t> sizes_;
+    std::map<std::string, GlBuffer> buffers_;
     std::map<std::string, GlObject> samplers_;
     std::map<std::string, Texture> textures_;
     std::vector<GlObject> drawObjects_;

@@ -56,7 +56,7 @@ struct RunSummary {
     bool passed = false;     // every expectation on every path that ran, and every comparison
     bool pathsAgree = false; // every path that ran wrote what Vulkan wrote, within the bound
     std::vector<PathOutcome> paths;
-    // What each path that ran wrote, by path and resource (or target) name.
+    // With several paths (RunApi::All), what each that ran wrote, by path and resource (or target) name.
     std::map<std::string, std::map<std::string, std::vector<double>>> written;
 };
 
