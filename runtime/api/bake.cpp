@@ -5,6 +5,7 @@
 #include "api/bake_summary.hpp"
 #include "api/baked_maps.hpp"
 #include "api/error_translation.hpp"
+#include "api/folder_bake_job.hpp"
 
 #include "bake.hpp"
 
@@ -45,18 +46,11 @@ BakedMaps bakeToMemory(const BakeRequest& request) {
 }
 
 BakeSummary bakeToFolder(const BakeRequest& request, const std::filesystem::path& folder) {
-    auto logged = loggedSettingsOf(request);
-    logged.settings.outputDir = folder;
-    const auto& settings = logged.settings;
-    bake::BakeProgress progress(request.quiet);
-    auto prepared = api::translated(ErrorKind::BadInput, [&] {
-        return bake::prepareBake(settings, bake::BakeDestination::Folder, progress);
-    });
-    auto summary = api::translated(ErrorKind::BakeFailed, [&] {
-        auto maps = bake::computeMaps(settings, prepared, version(), progress);
-        return api::bakeSummaryOf(bake::writeBake(settings, prepared, std::move(maps), version(), progress));
-    });
-    summary.validationMessages = logged.log->messages();
+    api::FolderBakeJob job(request, folder); // a batch of one, without a session: nothing outlives the bake
+    job.prepare();
+    job.compute();
+    auto summary = job.write();
+    summary.validationMessages = job.settings().context.validationLog->messages();
     return summary;
 }
 

@@ -2,6 +2,7 @@
 
 #include "bake_error.hpp"
 #include "bake_manifest.hpp"
+#include "bake_session.hpp"
 #include "lights_gltf.hpp"
 #include "remembered_facts.hpp"
 #include "shading_maps.hpp"
@@ -34,9 +35,11 @@ void arrangeCubes(const BakeSettings& settings, BakedOutputs& outputs) {
 
 } // namespace
 
-PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress) {
+PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress,
+                         BakeSession* session) {
     PreparedBake prepared;
     prepared.started = Clock::now();
+    prepared.session = session;
     validateSettings(settings);
     if (destination == BakeDestination::Folder && settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     // A scene that cannot be read fails before any device work.
@@ -46,13 +49,14 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
         prepared.directory = std::make_unique<BakeDirectory>(settings.outputDir, settings.environment);
     }
 
-    prepared.device.found = findDeviceEarly(settings);
-    prepared.device.confirmLater = destination == BakeDestination::Folder;
+    // A session's device is found once, for all its bakes (computeMaps).
+    if (!session) prepared.device.found = findDeviceEarly(settings);
+    prepared.device.confirmLater = !session && destination == BakeDestination::Folder;
     progress.begin("load");
     if (usesCache(settings)) prepared.store.emplace(*settings.cache);
     auto* store = prepared.store ? &*prepared.store : nullptr;
     prepared.input = readEnvironment(settings.environment, {settings.sanitize, settings.strict});
-    if (store) prepared.device.remembered = rememberedDevice(*store, settings.context);
+    if (store && !session) prepared.device.remembered = rememberedDevice(*store, settings.context);
     if (const auto facts = store ? rememberedFacts(*store, prepared.input) : std::nullopt) {
         takeFacts(prepared.input, *facts); // decoded only if the cache lacks an output
     } else {
@@ -73,8 +77,13 @@ ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, c
                          BakeProgress& progress) {
     auto* store = prepared.store ? &*prepared.store : nullptr;
     if (store) prepared.countsBeforeMaps = store->counts();
+    if (prepared.session && store && !prepared.device.found.valid()) {
+        std::promise<vulkan::DeviceInfo> device;
+        device.set_value(prepared.session->device());
+        prepared.device.found = device.get_future().share();
+    }
     ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store,
-                                  prepared.device), {}, {}};
+                                  prepared.device, prepared.session), {}, {}};
     auto& outputs = maps.outputs;
     const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
     maps.shadingRecord = shadingJson(facts).dump();

@@ -23,6 +23,8 @@
 
 namespace iblkit::bake {
 
+class BakeSession;
+
 struct BakeSummary {
     std::filesystem::path outputDir;
     std::string device;
@@ -63,11 +65,15 @@ struct PreparedBake {
     std::optional<cache::ContentStore> store; // settings.cache's, where the bake uses it (usesCache)
     DeviceSearch device; // findDeviceEarly's, started before the input loads, and the remembered device
     cache::ContentStore::Counts countsBeforeMaps; // the store's, for maps made again (writeBake)
+    BakeSession* session = nullptr; // the device and kernels the bake shares with others (bake_session.hpp)
 };
 
 // The settings checked, the output folder claimed (for a Folder), the scene and the environment
 // read, the plan made, the cache opened: every refusal of what was asked comes from here.
-PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress);
+// With a session, nothing here touches it (a batch prepares the next bake on another thread while
+// the session's device computes this one); the device work then runs on it.
+PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress,
+                         BakeSession* session = nullptr);
 
 // The maps as the files hold them before their 16-bit rounding and the half-range policy: the
 // cubes in the profile's frame, the specular's "iblkit.shading" key set.

@@ -6,6 +6,7 @@
 #include "bake_manifest.hpp"
 #include "cache_error.hpp"
 #include "content_store.hpp"
+#include "bake_session.hpp"
 #include "device_caches.hpp"
 #include "remembered_facts.hpp"
 #include "float_image.hpp"
@@ -260,39 +261,79 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
 }
 
+// A bake's device, caches and kernels: the session's, or its own, torn down after it.
+class BakeDevice {
+public:
+    BakeDevice(BakeSession* session, const BakeSettings& settings, cache::ContentStore* cache, const NeededOutputs& needed,
+               uint32_t size, BakeProgress& progress)
+        : session_(session) {
+        progress.part("instance and device");
+        if (!session) own_.context = std::make_unique<const vulkan::VulkanContext>(settings.context);
+        progress.part("pipeline cache");
+        if (!session) own_.caches = std::make_unique<DeviceCaches>(cache, context());
+        progress.part("kernel threads");
+        if (!session) own_.kernels = std::make_unique<BakeKernels>(context(), settings, needed, size);
+        caches_ = session ? &session->caches(cache) : own_.caches.get(); // first: new caches make the kernels anew
+        kernels_ = session ? &session->kernels(settings, needed, size) : own_.kernels.get();
+    }
+    const vulkan::VulkanContext& context() { return session_ ? session_->context() : *own_.context; }
+    DeviceCaches& caches() { return *caches_; }
+    BakeKernels& kernels() { return *kernels_; }
+    void tearDown() { own_ = {}; }
+
+private:
+    BakeSession* session_;
+    struct Own {
+        std::unique_ptr<const vulkan::VulkanContext> context;
+        std::unique_ptr<DeviceCaches> caches;
+        std::unique_ptr<BakeKernels> kernels;
+        Own& operator=(Own&& other) noexcept { // the kernels first, the context last
+            kernels = std::move(other.kernels);
+            caches = std::move(other.caches);
+            context = std::move(other.context);
+            return *this;
+        }
+    } own_;
+    BakeKernels* kernels_ = nullptr;
+    DeviceCaches* caches_ = nullptr;
+};
+
 // What the cache does not hold, computed on the device, and stored.
 BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
-                             const BakeKeys& keys, const Cached& cached, BakeProgress& progress, cache::ContentStore* cache) {
+                             const BakeKeys& keys, Cached cached, BakeProgress& progress, cache::ContentStore* cache,
+                             BakeSession* session) {
     kernels::KernelCompileCounter compiles;
     const kernels::CountKernelCompiles counting(&compiles);
+    // A LUT an earlier bake of the session made is this one's: it depends on the LUT's settings alone.
+    const bool lutFromSession = plan.lut && !cached.lut && session && session->lut(settings);
+    if (lutFromSession) {
+        cached.lut = *session->lut(settings);
+        cached.lut->format = lutFormatOf(settings); // the values are the device's, whatever the file's format
+    }
     progress.begin("device");
-    progress.part("instance and device");
-    auto context = std::make_unique<const vulkan::VulkanContext>(settings.context);
-    progress.part("pipeline cache");
-    auto caches = std::make_unique<DeviceCaches>(cache, *context);
-    progress.part("kernel threads");
-    auto kernels = std::make_unique<BakeKernels>(
-        *context, settings, NeededOutputs{plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut}, size);
+    BakeDevice device(session, settings, cache,
+                      NeededOutputs{plan.specular && !cached.specular, plan.irradiance, plan.lut && !cached.lut}, size, progress);
+    const auto& context = device.context();
+    auto& kernels = device.kernels();
     progress.part("memory check");
-    checkMemory(*context, settings, input, size);
+    checkMemory(context, settings, input, size);
     progress.end();
-    std::optional<DeviceResults> results(runSteps(*context, *kernels, settings, input, size, plan, cached, progress));
-    auto outputs = downloaded(*context, *kernels, settings, plan, cached, *results, progress);
+    std::optional<DeviceResults> results(runSteps(context, kernels, settings, input, size, plan, cached, progress));
+    auto outputs = downloaded(context, kernels, settings, plan, cached, *results, progress);
+    if (session && outputs.lut && !cached.lut) session->keepLut(settings, *outputs.lut);
     progress.part("cache entries");
     storeComputed(cache, keys, plan, cached, outputs);
     if (!plan.irradiance) outputs.irradiance.reset();
     progress.part("pipeline cache");
-    caches->keepPipelineCache(outputs.cacheWarnings);
-    outputs.compiledKernels = caches->compiledKernels();
-    outputs.pipelineCacheBytes = caches->pipelineCacheBytesLoaded();
-    outputs.kernelCompileMilliseconds = kernels->compileMilliseconds();
+    device.caches().keepPipelineCache(outputs.cacheWarnings);
+    outputs.compiledKernels = device.caches().compiledKernels();
+    outputs.pipelineCacheBytes = device.caches().pipelineCacheBytesLoaded();
+    outputs.kernelCompileMilliseconds = kernels.compileMilliseconds();
     outputs.kernelCompiles = compiles.counts(); // both threads' kernels are made by now
     progress.end();
     progress.begin("tear-down");
     results.reset();
-    kernels.reset();
-    caches.reset();
-    context.reset();
+    device.tearDown();
     progress.end();
     return outputs;
 }
@@ -374,9 +415,9 @@ CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& 
 
 BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
-                         const DeviceSearch& device) {
+                         const DeviceSearch& device, BakeSession* session) {
     if (!usesCache(settings)) store = nullptr;
-    if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr);
+    if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr, session);
     progress.begin("cache");
     auto [keys, cached, found] = lookUpEntries(settings, input, size, plan, toolVersion, progress, *store, device);
     progress.end();
@@ -387,7 +428,7 @@ BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, 
             decodeEnvironment(input);
             progress.end();
         }
-        return computeOnDevice(settings, input, size, plan, keys, cached, progress, store);
+        return computeOnDevice(settings, input, size, plan, keys, std::move(cached), progress, store, session);
     }
     auto lights = cached.lights.value_or(std::vector<shading::EnvironmentLight>{});
     const uint32_t lightLevel = shading::lightLevelOf(*plan.recipe, plan.schedule, lights);

@@ -19,6 +19,8 @@ class ContentStore;
 
 namespace iblkit::bake {
 
+class BakeSession;
+
 // The device's values of every output a bake writes (before any 16-bit rounding): each from the
 // cache where it holds the output's key (bake_cache.hpp), computed on the device otherwise and
 // then stored. With every output cached, no device is opened at all. With validation on, the cache
@@ -57,10 +59,11 @@ struct DeviceSearch {
     bool confirmLater = false;
 };
 
-// Decodes `input` (decodeEnvironment) if the cache lacks an output.
+// Decodes `input` (decodeEnvironment) if the cache lacks an output. With a session, the device work
+// runs on its device and kernels (bake_session.hpp).
 BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
-                         const DeviceSearch& device = {});
+                         const DeviceSearch& device = {}, BakeSession* session = nullptr);
 
 // Whether the device outputs.deviceUnconfirmed were read for is the one the bake runs on (true
 // for outputs that were not left unconfirmed). When it is not, the real device is remembered, the

@@ -5,7 +5,7 @@
 #include "sha256.hpp"
 
 #include <algorithm>
-#include <atomic>
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <span>
@@ -35,10 +35,16 @@ bool holds(std::string_view entry, const std::string& key) {
     return entry.substr(prefix.size(), 64) == sha256Hex(entry.substr(header));
 }
 
-// A name no other writer, in this process or another, uses at the same time.
+// A file beside `path` that no other writer uses: made by mkstemp (O_EXCL), so not by another
+// process on this machine nor, on a shared folder, on another machine (whose process ids overlap
+// this one's).
 fs::path temporaryBeside(const fs::path& path) {
-    static std::atomic<uint64_t> counter{0};
-    return fs::path(path.string() + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    std::string name = path.string() + ".tmp-XXXXXX";
+    const int descriptor = mkstemp(name.data());
+    if (descriptor < 0) throw CacheError(path.parent_path().string() + ": error: cannot make a cache entry there: " +
+                                         std::generic_category().message(errno));
+    close(descriptor);
+    return name;
 }
 
 } // namespace

@@ -58,55 +58,42 @@ void printSummary(const BakeSummary& summary) {
     fmt::print(stderr, "\n");
 }
 
-// What the input policies changed: printed even with --quiet, which silences only progress.
-void printPolicyReports(const BakeSummary& summary) {
-    for (const auto& clamp : summary.halfRangeClamps)
-        fmt::print(stderr, "warning: clamped {} values of {} past the 16-bit float range to 65504: mip {} lost {:.3g} % "
-                           "of its energy (--strict refuses them)\n",
-                   clamp.values, clamp.texture, clamp.worstMip, 100 * clamp.worstShare);
-    if (summary.negativeTexels)
-        fmt::print(stderr, "clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n",
-                   summary.negativeTexels, summary.mostNegative);
-    for (const auto& warning : summary.cacheWarnings) fmt::print(stderr, "warning: {}\n", warning);
-    for (const auto& note : summary.sceneNotes) fmt::print(stderr, "warning: {}\n", note);
-    const auto sanitized = summary.sanitizedTexels;
-    if (sanitized) fmt::print(stderr, "replaced {} NaN/Inf input texels by 0 (--sanitize)\n", sanitized);
-}
-
 } // namespace
+
+void printPolicyReports(const BakeSummary& summary, const std::string& prefix) {
+    for (const auto& clamp : summary.halfRangeClamps)
+        fmt::print(stderr, "{}warning: clamped {} values of {} past the 16-bit float range to 65504: mip {} lost {:.3g} % "
+                           "of its energy (--strict refuses them)\n",
+                   prefix, clamp.values, clamp.texture, clamp.worstMip, 100 * clamp.worstShare);
+    if (summary.negativeTexels)
+        fmt::print(stderr, "{}clamped {} input texels of negative radiance to 0, down to {:g} (--strict refuses them)\n", prefix,
+                   summary.negativeTexels, summary.mostNegative);
+    for (const auto& warning : summary.cacheWarnings) fmt::print(stderr, "{}warning: {}\n", prefix, warning);
+    for (const auto& note : summary.sceneNotes) fmt::print(stderr, "{}warning: {}\n", prefix, note);
+    const auto sanitized = summary.sanitizedTexels;
+    if (sanitized) fmt::print(stderr, "{}replaced {} NaN/Inf input texels by 0 (--sanitize)\n", prefix, sanitized);
+}
 
 void addBakeCommand(CLI::App& app) {
     struct Arguments {
-        BakeRequest request;
+        BakeLineArguments line;
         std::filesystem::path outputDir;
-        std::string environment;
-        std::string lutFormat = "rg16f";
         std::string cache;
         bool noCache = false;
         bool quiet = false;
         bool json = false;
     };
     auto arguments = std::make_shared<Arguments>();
-    auto& s = arguments->request;
+    auto& s = arguments->line.request;
     auto* command = app.add_subcommand(
         "bake", "Bake an HDR environment into a prefiltered specular cube, a BRDF LUT, irradiance and a preview");
-    command->add_option("ENV", arguments->environment,
-                        "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
+    addBakeLineOptions(*command, arguments->line);
     command->add_option("-o,--output", arguments->outputDir, "Output folder (replaced as a whole when the bake succeeds)")
         ->required();
-    addBakeSettingOptions(*command, s, arguments->lutFormat);
-    command->add_option("--scene", s.scene,
-                        "A glTF scene (.gltf or .glb): bake only what its materials need (iblkit plan SCENE shows what)");
     command->add_option("--cache", arguments->cache,
                         "Cache folder: each output is kept under the hash of everything it depends on, and taken "
                         "from there when nothing it depends on changed (default $XDG_CACHE_HOME/iblkit, else ~/.cache/iblkit)");
     command->add_flag("--no-cache", arguments->noCache, "Compute everything, and keep nothing");
-    command->add_flag("--dds", s.dds, "Also write .dds files");
-    command->add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
-    command->add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
-    command->add_flag("--strict", s.strict,
-                      "Refuse negative input texels, values beyond 65504 in 16-bit outputs and a scene's material "
-                      "factors outside [0, 1] instead of clamping them (to 0, to 65504 and into [0, 1], each reported)");
     command->add_flag("--validate", s.validation, "Run with the Vulkan validation layer; any message fails the bake");
     command->add_option("--device", s.device, "Device index or part of its name (default: lavapipe)");
     command->add_flag("-q,--quiet", arguments->quiet,
@@ -115,9 +102,7 @@ void addBakeCommand(CLI::App& app) {
     command->callback([arguments] {
         files::cleanUpOnSignals(); // first: the Vulkan driver's threads must inherit the blocked signals
         const double startMilliseconds = processAgeMilliseconds();
-        auto request = arguments->request;
-        if (!arguments->environment.empty()) request.environment = arguments->environment;
-        request.lutFormat = lutFormatNamed(arguments->lutFormat);
+        auto request = arguments->line.resolved();
         if (arguments->noCache && !arguments->cache.empty()) throw CLI::ValidationError("--cache and --no-cache", "give one of them");
         if (!arguments->noCache)
             request.cache = arguments->cache.empty() ? defaultCacheFolder() : std::filesystem::path(arguments->cache);

@@ -66,6 +66,28 @@ void addBakeSettingOptions(CLI::App& command, BakeRequest& s, std::string& lutFo
                        fmt::format("Irradiance cube face size, 1 to {} (default 32)", bake::kMaxIrradianceSize));
 }
 
+void addBakeLineOptions(CLI::App& command, BakeLineArguments& line) {
+    auto& s = line.request;
+    command.add_option("ENV", line.environment,
+                       "Equirectangular .hdr/.exr, a folder of six faces, or a .ktx2/.dds cube (default: built-in sky)");
+    addBakeSettingOptions(command, s, line.lutFormat);
+    command.add_option("--scene", s.scene,
+                       "A glTF scene (.gltf or .glb): bake only what its materials need (iblkit plan SCENE shows what)");
+    command.add_flag("--dds", s.dds, "Also write .dds files");
+    command.add_flag("--exr", s.exr, "Also write every face and mip as EXR under exr/");
+    command.add_flag("--sanitize", s.sanitize, "Replace NaN/Inf input texels by 0 instead of refusing them");
+    command.add_flag("--strict", s.strict,
+                     "Refuse negative input texels, values beyond 65504 in 16-bit outputs and a scene's material "
+                     "factors outside [0, 1] instead of clamping them (to 0, to 65504 and into [0, 1], each reported)");
+}
+
+BakeRequest BakeLineArguments::resolved() const {
+    auto out = request;
+    if (!environment.empty()) out.environment = environment;
+    out.lutFormat = lutFormatNamed(lutFormat);
+    return out;
+}
+
 LutFormat lutFormatNamed(const std::string& name) { return name == "rg32f" ? LutFormat::Rg32Float : LutFormat::Rg16Float; }
 
 } // namespace iblkit::cli

@@ -38,6 +38,8 @@ int main(int argc, char** argv) {
         return 127;
     }
     self[length] = '\0';
+    /* The program names this launcher where it writes a command for later (iblkit batch --slurm-script). */
+    setenv("IBLKIT_LAUNCHER", self, 1);
     char* slash = strrchr(self, '/');
     slash[1] = '\0';
     addTunable();

@@ -1,4 +1,5 @@
 #include "bake_command.hpp"
+#include "batch_command.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
 #include "compile_all_command.hpp"
@@ -50,6 +51,7 @@ int runCommand(int argc, char** argv) {
     iblkit::cli::addConsistencyCommand(app);
     iblkit::cli::addStressCommand(app);
     iblkit::cli::addBakeCommand(app);
+    iblkit::cli::addBatchCommand(app);
     iblkit::cli::addPlanCommand(app);
     iblkit::cli::addBenchCommand(app);
     iblkit::cli::addLutFitCommand(app);

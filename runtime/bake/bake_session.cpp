@@ -1,0 +1,74 @@
+#include "bake_session.hpp"
+
+#include "bake_kernels.hpp"
+#include "bake_outputs.hpp"
+#include "content_store.hpp"
+#include "device_caches.hpp"
+#include "vulkan_context.hpp"
+
+#include <fmt/format.h>
+
+namespace iblkit::bake {
+namespace {
+
+std::string kernelsKey(const BakeSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
+    return fmt::format("{} {} {} {} {} {} {}", settings.specularMethod, resolvedSamples(settings), sourceSize,
+                       outputs.specular, outputs.lut, settings.lutMethod, resolvedLutSamples(settings));
+}
+
+std::string lutKey(const BakeSettings& settings) {
+    return fmt::format("{} {} {}", settings.lutMethod, resolvedLutSamples(settings), settings.lutSize);
+}
+
+} // namespace
+
+BakeSession::BakeSession(vulkan::ContextOptions options) : options_(std::move(options)) {
+    contextFuture_ = std::async(std::launch::async, [options = options_] {
+        return std::make_unique<const vulkan::VulkanContext>(options);
+    });
+}
+
+BakeSession::~BakeSession() {
+    // The kernels before the caches that compiled them, the caches before the context they serve.
+    kernels_.clear();
+    caches_.reset();
+    if (contextFuture_.valid()) contextFuture_.wait();
+}
+
+const vulkan::VulkanContext& BakeSession::context() {
+    if (!context_) context_ = contextFuture_.get(); // a device that cannot be made throws here, for the bake that needs it
+    return *context_;
+}
+
+const vulkan::DeviceInfo& BakeSession::deviceInfo() {
+    if (!device_) device_ = context().deviceInfo();
+    return *device_;
+}
+
+DeviceCaches& BakeSession::caches(cache::ContentStore* store) {
+    const std::string folder = store ? store->folder().string() : std::string();
+    if (!caches_ || folder != cachesFolder_) {
+        kernels_.clear(); // made with the earlier caches' kernels in use
+        caches_.reset();
+        caches_ = std::make_unique<DeviceCaches>(store, context());
+        cachesFolder_ = folder;
+    }
+    return *caches_;
+}
+
+BakeKernels& BakeSession::kernels(const BakeSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
+    auto& kernels = kernels_[kernelsKey(settings, outputs, sourceSize)];
+    if (!kernels) kernels = std::make_unique<BakeKernels>(context(), settings, outputs, sourceSize);
+    return *kernels;
+}
+
+const BakedTexture* BakeSession::lut(const BakeSettings& settings) const {
+    const auto found = luts_.find(lutKey(settings));
+    return found == luts_.end() ? nullptr : found->second.get();
+}
+
+void BakeSession::keepLut(const BakeSettings& settings, const BakedTexture& lut) {
+    luts_[lutKey(settings)] = std::make_unique<BakedTexture>(lut);
+}
+
+} // namespace iblkit::bake
