@@ -68,6 +68,13 @@ void requireEnvironmentName(const std::string& name) {
                                  "blender's worlds (city, courtyard, forest, ...)", name));
 }
 
+std::optional<fs::path> bakeInputOf(const std::string& name, const fs::path& cacheDir) {
+    if (name == "sky") return fs::path();
+    if (isBlenderWorld(name)) return blenderWorlds(cacheDir) / (name + ".exr");
+    if (std::error_code error; fs::exists(name, error)) return fs::path(name);
+    return std::nullopt;
+}
+
 fs::path blenderWorlds(const fs::path& cacheDir) {
     const fs::path worlds = cacheDir / "blender-data" / "world";
     if (fs::exists(worlds / "sunset.exr")) return worlds;

@@ -3,10 +3,15 @@
 #include "environment_input.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace iblkit::bench {
+
+// The file `iblkit bake` reads for a bench environment: an empty path for the built-in sky; none
+// for an environment that exists only inside the bench (sun, furnace).
+std::optional<std::filesystem::path> bakeInputOf(const std::string& name, const std::filesystem::path& cacheDir);
 
 // An environment the bench measures on: a name for the tables and the input the bake reads.
 struct BenchEnvironment {

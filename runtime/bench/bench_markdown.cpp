@@ -115,6 +115,17 @@ std::string bakeTable(const std::vector<BakeTiming>& bakes) {
     return text;
 }
 
+std::string batchTable(const std::vector<BatchTiming>& batches) {
+    std::string text = "| caches | bakes | separate processes s | one batch s | batch / separate | min – max | the batch's "
+                       "environment work s | the batch over that work |\n|---|---:|---:|---:|---:|---|---:|---:|\n";
+    for (const auto& batch : batches)
+        text += fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} – {:.3f} | {} | +{:.1f} % |\n", batch.cache, batch.bakes,
+                            seconds(batch.separateMilliseconds), seconds(batch.batchMilliseconds), batch.ratio, batch.ratioMin,
+                            batch.ratioMax, seconds(batch.environmentMilliseconds),
+                            100 * (batch.batchMilliseconds / batch.environmentMilliseconds - 1));
+    return text;
+}
+
 std::string sizeCurveTable(const std::vector<SizePoint>& points) {
     std::string text = "| environment | method | count | size | wall s | peak MiB | specular RMS / max |\n"
                        "|---|---|---:|---:|---:|---:|---|\n";
@@ -192,6 +203,17 @@ std::string renderBenchMarkdown(const BenchRun& run, const std::string& command,
                 "needs values (every output it writes; of the specular chain, the prefiltered mips): bit for bit the "
                 "same is the full bake's error, unchanged.\n\n" +
                 bakeTable(run.bakes);
+    if (!run.batches.empty())
+        text += "\n## Batches: many bakes in one process\n\n"
+                "The environments as one `iblkit batch` list with the bake's default settings, against one `iblkit bake` "
+                "process each, as whole processes: the separate bakes' walls summed, then the batch's, in pairs whose "
+                "order alternates, each time the median over the pairs after a warm-up pair. \"Fresh cache\": each side "
+                "of each pair starts on an empty cache of its own, as default bakes on a new machine (the separate "
+                "bakes share theirs: the first one's LUT serves the rest); \"no cache\": `--no-cache` on both. Every "
+                "folder the batch writes is byte for byte the separate bake's. The environment work is what no batch "
+                "can share: the batch's bakes' source cube, lights, irradiance, prefilter and preview steps, summed; "
+                "the last column is what the batch spends beyond it.\n\n" +
+                batchTable(run.batches);
     if (!run.sizeCurve.empty())
         text += "\n## Cost against size\n\n" + images(plots, "size_curve", relativeFolder) +
                 "`iblkit bake ENV --size N --no-cache --method M` as a whole process, the default method (the convolution "

@@ -11,7 +11,7 @@
 
 namespace iblkit::bench {
 
-enum class BenchOutput { Specular, Lut, Irradiance, Bake };
+enum class BenchOutput { Specular, Lut, Irradiance, Bake, Batch };
 std::string_view outputName(BenchOutput output);
 
 // The ranges validate() holds the options to (and --help states).
@@ -90,6 +90,17 @@ struct SizePoint {
     double errorRms = 0, errorMax = 0; // the method's specular error at `samples` on that size (the worst mip's)
 };
 
+// Many default bakes as one `iblkit batch` against as many `iblkit bake` processes (BenchOutput::Batch).
+struct BatchTiming {
+    std::string cache;      // "fresh cache" or "no cache"
+    uint32_t bakes = 0;     // the environments in the list
+    double separateMilliseconds = 0; // the separate processes' walls summed; median over the pairs
+    double batchMilliseconds = 0;    // the batch process's wall; median over the pairs
+    double ratio = 0, ratioMin = 0, ratioMax = 0; // batch / separate, pair by pair: median, least, most
+    double environmentMilliseconds = 0; // the batch's environment-dependent steps, summed; median over the pairs
+    uint32_t repeat = 0;
+};
+
 struct BenchRun {
     std::string device;
     std::string machine;
@@ -97,6 +108,7 @@ struct BenchRun {
     std::vector<BenchResult> results;
     std::vector<BakeTiming> bakes;
     std::vector<SizePoint> sizeCurve;
+    std::vector<BatchTiming> batches;
 };
 
 } // namespace iblkit::bench

@@ -57,8 +57,14 @@ nlohmann::json resultsJson(const BenchRun& run, const std::string& command) {
         bakes.push_back({{"bake", bake.bake}, {"environment", bake.environment}, {"computed", bake.computed},
                          {"wall_ms", bake.wallMilliseconds}, {"full_wall_ms", bake.fullWallMilliseconds},
                          {"repeat", bake.repeat}, {"identical", bake.identical}});
+    nlohmann::json batches = nlohmann::json::array();
+    for (const auto& batch : run.batches)
+        batches.push_back({{"cache", batch.cache}, {"bakes", batch.bakes}, {"separate_ms", batch.separateMilliseconds},
+                           {"batch_ms", batch.batchMilliseconds}, {"ratio", batch.ratio}, {"ratio_min", batch.ratioMin},
+                           {"ratio_max", batch.ratioMax}, {"environment_ms", batch.environmentMilliseconds},
+                           {"repeat", batch.repeat}});
     return {{"machine", run.machine}, {"device", run.device}, {"date", run.date}, {"command", command},
-            {"results", results}, {"bakes", bakes}, {"size_curve", sizeCurveJson(run.sizeCurve)}};
+            {"results", results}, {"bakes", bakes}, {"size_curve", sizeCurveJson(run.sizeCurve)}, {"batches", batches}};
 }
 
 std::string csvRow(const BenchResult& result, const std::string& mip, double roughness, uint32_t texels, double rms,

@@ -1,5 +1,7 @@
 #include "bench_runner.hpp"
 
+#include "batch_bench.hpp"
+
 #include "bake_bench.hpp"
 #include "bench_environments.hpp"
 #include "bench_error.hpp"
@@ -199,6 +201,7 @@ std::string_view outputName(BenchOutput output) {
     case BenchOutput::Lut: return "lut";
     case BenchOutput::Irradiance: return "irradiance";
     case BenchOutput::Bake: return "bake";
+    case BenchOutput::Batch: return "batch";
     }
     return "?";
 }
@@ -213,8 +216,11 @@ BenchRun runBench(const BenchOptions& options) {
     // With --sizes the whole bakes are the cost curve's, measured after the rest.
     auto bakes = wants(options, BenchOutput::Bake) && options.sizes.empty() ? benchBakes(options, environments, cacheDir)
                                                                              : std::vector<BakeTiming>{};
+    std::vector<std::string> names;
+    for (const auto& environment : environments) names.push_back(environment.name);
+    auto batches = wants(options, BenchOutput::Batch) ? benchBatch(options, names, cacheDir) : std::vector<BatchTiming>{};
     const vulkan::VulkanContext context(options.context);
-    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}, std::move(bakes), {}};
+    BenchRun run{context.deviceInfo().name, machineDescription(), today(), {}, std::move(bakes), {}, std::move(batches)};
     if (wants(options, BenchOutput::Lut)) {
         if (options.log) fmt::print(options.log, "bench  converged LUT reference ({}²)\n", options.lutSize);
         LutBench lut(context, options, cache);

@@ -20,15 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The file `iblkit bake` reads for a bench environment: none for the built-in sky; nullopt for
-// an environment that exists only inside the bench.
-std::optional<fs::path> bakeInputOf(const std::string& name, const fs::path& cacheDir) {
-    if (name == "sky") return fs::path();
-    if (isBlenderWorld(name)) return blenderWorlds(cacheDir) / (name + ".exr");
-    if (std::error_code error; fs::exists(name, error)) return fs::path(name);
-    return std::nullopt;
-}
-
 uint32_t defaultSamplesOf(const std::string& method) {
     bake::BakeSettings settings;
     settings.specularMethod = method;

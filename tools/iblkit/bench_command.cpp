@@ -17,7 +17,7 @@ std::vector<bench::BenchOutput> parseOutputs(const std::vector<std::string>& nam
     std::vector<bench::BenchOutput> outputs;
     for (const auto& name : names)
         for (const auto output : {bench::BenchOutput::Specular, bench::BenchOutput::Lut, bench::BenchOutput::Irradiance,
-                                  bench::BenchOutput::Bake})
+                                  bench::BenchOutput::Bake, bench::BenchOutput::Batch})
             if (bench::outputName(output) == name) outputs.push_back(output);
     return outputs;
 }
@@ -94,9 +94,10 @@ void addBenchCommand(CLI::App& app) {
                         fmt::format("Timed runs per configuration, 1 to {}; times are medians (default 3)", bench::kMaxBenchRepeat));
     command->add_option("--outputs", arguments->outputs,
                         "What to measure (default specular,lut,irradiance; bake: whole default bakes, with and "
-                        "without the cache, and the bench's scenes)")
+                        "without the cache, and the bench's scenes; batch: the environments as one iblkit batch against separate "
+                        "iblkit bake processes)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"specular", "lut", "irradiance", "bake"}));
+        ->check(CLI::IsMember({"specular", "lut", "irradiance", "bake", "batch"}));
     command->add_option("--cache", arguments->cache, "Folder for converged references and downloads "
                                                      "(default $XDG_CACHE_HOME/iblkit or ~/.cache/iblkit)");
     command->add_option("--out", arguments->out, "Folder for results.csv, results.json and the plots")->required();
