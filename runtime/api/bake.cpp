@@ -39,7 +39,7 @@ BakedMaps bakeToMemory(const BakeRequest& request) {
         return bake::prepareBake(settings, bake::BakeDestination::Memory, progress);
     });
     auto maps = api::translated(ErrorKind::BakeFailed, [&] {
-        return api::bakedMapsOf(bake::computeMaps(settings, prepared, version(), progress), prepared.plan);
+        return api::bakedMapsOf(bake::computeMaps(prepared, version(), progress), prepared.plan);
     });
     maps.validationMessages = logged.log->messages();
     return maps;

@@ -26,12 +26,12 @@ void FolderBakeJob::prepare(bake::BakeSession* session) {
 }
 
 void FolderBakeJob::compute() {
-    maps_ = translated(ErrorKind::BakeFailed, [&] { return bake::computeMaps(settings_, *prepared_, version(), *progress_); });
+    maps_ = translated(ErrorKind::BakeFailed, [&] { return bake::computeMaps(*prepared_, version(), *progress_); });
 }
 
 BakeSummary FolderBakeJob::write() {
     auto summary = translated(ErrorKind::BakeFailed, [&] {
-        return bakeSummaryOf(bake::writeBake(settings_, *prepared_, std::move(*maps_), version(), *progress_));
+        return bakeSummaryOf(bake::writeBake(*prepared_, std::move(*maps_), version(), *progress_));
     });
     maps_.reset();
     prepared_.reset(); // the input's memory goes with it

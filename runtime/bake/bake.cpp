@@ -17,16 +17,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-ManifestFacts factsOf(const BakeSettings& settings, const PreparedBake& prepared, const BakedOutputs& outputs,
-                            const std::string& toolVersion, bool lobeTableFile) {
-    return {toolVersion,           outputs.device,  &prepared.input, &settings,        prepared.size,     prepared.mips,
+ManifestFacts factsOf(const PreparedBake& prepared, const BakedOutputs& outputs, const std::string& toolVersion,
+                      bool lobeTableFile) {
+    const auto& settings = prepared.settings;
+    return {toolVersion,           outputs.device,  &prepared.input, &settings,        settings.faceSize, settings.mipCount,
             &outputs.sh,           nullptr,         outputs.previewExposure, &prepared.plan, &outputs.lights,
             outputs.lightLevel,    lobeTableFile};
 }
 
 // The cubes from the kit's frame into the profile's, as its files hold them.
-void arrangeCubes(const BakeSettings& settings, BakedOutputs& outputs) {
-    const auto& profile = resolvedProfile(settings);
+void arrangeCubes(const ResolvedSettings& settings, BakedOutputs& outputs) {
+    const auto& profile = *settings.engineProfile;
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture && (*texture)->faces == 6)
             profiles::arrangeCube(profile.frame, (*texture)->values, (*texture)->size, (*texture)->mips,
@@ -35,12 +36,13 @@ void arrangeCubes(const BakeSettings& settings, BakedOutputs& outputs) {
 
 } // namespace
 
-PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destination, BakeProgress& progress,
+PreparedBake prepareBake(const BakeSettings& asked, BakeDestination destination, BakeProgress& progress,
                          BakeSession* session) {
     PreparedBake prepared;
     prepared.started = Clock::now();
     prepared.session = session;
-    validateSettings(settings);
+    prepared.settings = resolveSettings(asked);
+    auto& settings = prepared.settings;
     if (destination == BakeDestination::Folder && settings.outputDir.empty()) throw BakeError("no output folder (-o DIR)");
     // A scene that cannot be read fails before any device work.
     const auto scene = settings.scene ? std::optional(scene::readSceneMaterials(*settings.scene, settings.strict)) : std::nullopt;
@@ -63,18 +65,14 @@ PreparedBake prepareBake(const BakeSettings& settings, BakeDestination destinati
         decodeEnvironment(prepared.input);
         if (store) rememberFacts(*store, prepared.input);
     }
-    prepared.size = resolvedSize(settings, prepared.input.cubeSize);
-    if (!std::has_single_bit(prepared.size))
-        throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", prepared.size,
-                                    prepared.size));
-    prepared.mips = resolvedMips(settings, prepared.size);
-    prepared.plan = planBake(settings, prepared.size, scene);
+    resolveFaceSize(settings, prepared.input.cubeSize);
+    prepared.plan = planBake(settings, scene);
     progress.end();
     return prepared;
 }
 
-ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
-                         BakeProgress& progress) {
+ComputedMaps computeMaps(PreparedBake& prepared, const std::string& toolVersion, BakeProgress& progress) {
+    const auto& settings = prepared.settings;
     auto* store = prepared.store ? &*prepared.store : nullptr;
     if (store) prepared.countsBeforeMaps = store->counts();
     if (prepared.session && store && !prepared.device.found.valid()) {
@@ -82,10 +80,10 @@ ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, c
         device.set_value(prepared.session->device());
         prepared.device.found = device.get_future().share();
     }
-    ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.size, prepared.plan, toolVersion, progress, store,
-                                  prepared.device, prepared.session), {}, {}};
+    ComputedMaps maps{bakeOutputs(settings, prepared.input, prepared.plan, toolVersion, progress, store, prepared.device,
+                                  prepared.session), {}, {}};
     auto& outputs = maps.outputs;
-    const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
+    const auto facts = factsOf(prepared, outputs, toolVersion, outputs.lobeTable.has_value());
     maps.shadingRecord = shadingJson(facts).dump();
     if (outputs.specular) outputs.specular->keyValues["iblkit.shading"] = maps.shadingRecord;
     arrangeCubes(settings, outputs);
@@ -93,11 +91,11 @@ ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, c
     return maps;
 }
 
-BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, ComputedMaps maps,
-                      const std::string& toolVersion, BakeProgress& progress) {
+BakeSummary writeBake(PreparedBake& prepared, ComputedMaps maps, const std::string& toolVersion, BakeProgress& progress) {
+    const auto& settings = prepared.settings;
     auto& outputs = maps.outputs;
     progress.begin("write");
-    const auto facts = factsOf(settings, prepared, outputs, toolVersion, outputs.lobeTable.has_value());
+    const auto facts = factsOf(prepared, outputs, toolVersion, outputs.lobeTable.has_value());
     std::vector<BakedTexture> textures; // what the plan needs: a skipped output is no file
     for (auto* texture : {&outputs.specular, &outputs.lut, &outputs.irradiance, &outputs.lobeTable})
         if (*texture) textures.push_back(std::move(**texture));
@@ -132,7 +130,7 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
         prepared.store->restoreCounts(prepared.countsBeforeMaps);
         prepared.directory->clearStaging();
         progress.end();
-        return writeBake(settings, prepared, computeMaps(settings, prepared, toolVersion, progress), toolVersion, progress);
+        return writeBake(prepared, computeMaps(prepared, toolVersion, progress), toolVersion, progress);
     }
     prepared.directory->commit();
     progress.end();
@@ -159,8 +157,8 @@ BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, Comp
 
 BakeSummary bakeEnvironment(const BakeSettings& settings, const std::string& toolVersion, BakeProgress& progress) {
     auto prepared = prepareBake(settings, BakeDestination::Folder, progress);
-    auto maps = computeMaps(settings, prepared, toolVersion, progress);
-    return writeBake(settings, prepared, std::move(maps), toolVersion, progress);
+    auto maps = computeMaps(prepared, toolVersion, progress);
+    return writeBake(prepared, std::move(maps), toolVersion, progress);
 }
 
 } // namespace iblkit::bake

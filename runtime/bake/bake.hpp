@@ -57,10 +57,10 @@ enum class BakeDestination { Folder, Memory };
 
 // What a bake asked and read, before any device work.
 struct PreparedBake {
+    ResolvedSettings settings; // what was asked, resolved once; the face size and chain from the input
     std::chrono::steady_clock::time_point started;
     std::unique_ptr<BakeDirectory> directory; // the output folder claimed; none for a bake kept in memory
     EnvironmentInput input;
-    uint32_t size = 0, mips = 0;
     BakePlan plan;
     std::optional<cache::ContentStore> store; // settings.cache's, where the bake uses it (usesCache)
     DeviceSearch device; // findDeviceEarly's, started before the input loads, and the remembered device
@@ -82,11 +82,9 @@ struct ComputedMaps {
     std::string shadingRecord; // shadingJson, compact, as specular.ktx2's "iblkit.shading"
     cache::ContentStore::Counts cache; // zeros without a cache or with validation on
 };
-ComputedMaps computeMaps(const BakeSettings& settings, PreparedBake& prepared, const std::string& toolVersion,
-                         BakeProgress& progress);
+ComputedMaps computeMaps(PreparedBake& prepared, const std::string& toolVersion, BakeProgress& progress);
 
 // Writes the maps into the claimed folder, all or nothing.
-BakeSummary writeBake(const BakeSettings& settings, PreparedBake& prepared, ComputedMaps maps,
-                      const std::string& toolVersion, BakeProgress& progress);
+BakeSummary writeBake(PreparedBake& prepared, ComputedMaps maps, const std::string& toolVersion, BakeProgress& progress);
 
 } // namespace iblkit::bake

@@ -90,12 +90,13 @@ std::string kernelSourcesDigest(const std::vector<std::string>& kernelNames, con
     return key.hex();
 }
 
-BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+BakeKeys bakeKeys(const ResolvedSettings& settings, const EnvironmentInput& input, const BakePlan& plan,
                   const vulkan::DeviceInfo& device, const std::string& toolVersion, const kernels::ShaderFiles& files) {
+    const uint32_t size = settings.faceSize;
     auto specular = commonKey("specular", device, toolVersion);
     addSource(specular, input, size, files)
         .add("method", settings.specularMethod)
-        .add("samples", resolvedSamples(settings))
+        .add("samples", settings.sampleCount)
         .add("prefiltered mips", plan.prefilteredMips())
         .add("roughness of mips", roughnessList(plan))
         .add("lobe", std::string(shading::nameOf(plan.recipe->weighting)))
@@ -104,7 +105,7 @@ BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, u
         .add("cluster kernel", kernelSourcesDigest({"ClusterCubeCS"}, files)); // the convolution's pyramids
     addLights(specular, *plan.recipe);
     auto lut = commonKey("brdf lut", device, toolVersion);
-    lut.add("method", settings.lutMethod).add("samples", resolvedLutSamples(settings)).add("size", settings.lutSize);
+    lut.add("method", settings.lutMethod).add("samples", settings.lutSampleCount).add("size", settings.lutSize);
     lut.add("kernels", kernelSourcesDigest(methodKernels(settings.lutMethod), files));
     auto irradiance = commonKey("irradiance", device, toolVersion);
     addSource(irradiance, input, size, files)

@@ -24,7 +24,7 @@ namespace iblkit::bake {
 struct BakeKeys {
     std::string specular, lut, irradiance, lights, lobeTable, preview;
 };
-BakeKeys bakeKeys(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+BakeKeys bakeKeys(const ResolvedSettings& settings, const EnvironmentInput& input, const BakePlan& plan,
                   const vulkan::DeviceInfo& device, const std::string& toolVersion,
                   const kernels::ShaderFiles& files = kernels::embeddedShaderFiles());
 

@@ -18,14 +18,14 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs,
+BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const ResolvedSettings& settings, const NeededOutputs& outputs,
                          uint32_t sourceSize) {
     // Two threads for two cores, each in the order the bake needs its kernels.
     // The workers compile with this thread's kernel cache, and count in its counter.
     auto* cache = kernels::compiledKernelCacheInUse();
     auto* counter = kernels::kernelCompileCounterInUse();
     specularFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.specularMethod,
-                                                      samples = resolvedSamples(settings), needed = outputs.specular,
+                                                      samples = settings.sampleCount, needed = outputs.specular,
                                                       sourceSize] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
@@ -39,7 +39,7 @@ BakeKernels::BakeKernels(const vulkan::VulkanContext& context, const BakeSetting
         return Specular{millisecondsSince(start), std::move(specular), std::move(preview), std::move(downsample)};
     });
     lutFuture_ = std::async(std::launch::async, [&context, cache, counter, method = settings.lutMethod,
-                                                 count = resolvedLutSamples(settings), needed = outputs.lut] {
+                                                 count = settings.lutSampleCount, needed = outputs.lut] {
         const auto start = std::chrono::steady_clock::now();
         const kernels::UseCompiledKernelCache use(cache);
         const kernels::CountKernelCompiles counting(counter);

@@ -22,7 +22,7 @@ namespace iblkit::bake {
 // `sourceSize`, where known, is the source cube's width, for which the prefilter compiles first.
 class BakeKernels {
 public:
-    BakeKernels(const vulkan::VulkanContext& context, const BakeSettings& settings, const NeededOutputs& outputs = {},
+    BakeKernels(const vulkan::VulkanContext& context, const ResolvedSettings& settings, const NeededOutputs& outputs = {},
                 uint32_t sourceSize = 0);
 
     kernels::SpecularMethod* specular();

@@ -45,10 +45,10 @@ json settingsJson(const ManifestFacts& facts) {
             {"mips", facts.mips},
             {"method", s.specularMethod},
             {"recipe", facts.plan->recipe->name},
-            {"samples", resolvedSamples(s)},
+            {"samples", s.sampleCount},
             {"lut_size", s.lutSize},
             {"lut_method", s.lutMethod},
-            {"lut_samples", resolvedLutSamples(s)},
+            {"lut_samples", s.lutSampleCount},
             {"lut_format", s.lutFormat == LutFormat::Rg16Float ? "rg16f" : "rg32f"},
             {"irradiance_size", s.irradianceSize},
             {"dds", s.dds},
@@ -83,8 +83,8 @@ json mipChainJson(const std::string& method, uint32_t size, const BakePlan& plan
 // How the prefilter method computed the mips: a sampled estimator's count and shader, a sample
 // table's count at each mip, the pyramid's reads per texel, the mip chain's copied and ring mips,
 // or the convolution's budget of terms per texel and its two shaders.
-json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips, const BakePlan& plan) {
-    const uint32_t samples = resolvedSamples(settings);
+json prefilterJson(const ResolvedSettings& settings, uint32_t size, uint32_t mips, const BakePlan& plan) {
+    const uint32_t samples = settings.sampleCount;
     const auto& method = settings.specularMethod;
     const auto kind = kernels::specularKindOf(method);
     if (kind == kernels::SpecularKind::Table) {
@@ -113,8 +113,8 @@ json prefilterJson(const BakeSettings& settings, uint32_t size, uint32_t mips, c
 
 // How the LUT method computed the LUT: the estimator's sample count or the quadrature's nodes per
 // panel, and the shader.
-json lutMethodJson(const BakeSettings& settings) {
-    const uint32_t samples = resolvedLutSamples(settings);
+json lutMethodJson(const ResolvedSettings& settings) {
+    const uint32_t samples = settings.lutSampleCount;
     const auto& method = settings.lutMethod;
     if (method == kernels::kQuadratureGridLutMethod)
         return {{"method", method},
@@ -136,7 +136,7 @@ json lutMethodJson(const BakeSettings& settings) {
             {"shader", sampledShader(kernels::KernelRole::BrdfLut, kernels::KernelRole::BrdfLutChunk, method, samples)}};
 }
 
-json lutJson(const BakeSettings& s) {
+json lutJson(const ResolvedSettings& s) {
     json lut = {{"file", "brdf_lut.ktx2"},
                 {"format", s.lutFormat == LutFormat::Rg16Float ? "R16G16_SFLOAT" : "R32G32_SFLOAT"},
                 {"size", s.lutSize},
@@ -389,10 +389,10 @@ json bakeManifest(const ManifestFacts& facts) {
                      {"brdf_lut", plan.lut ? lutJson(s) : skippedJson("no material of the scene is lit")},
                      {"irradiance", irradiance},
                      {"shading", shadingJson(facts)},
-                     {"profile", profileJson(resolvedProfile(s))},
+                     {"profile", profileJson(*s.engineProfile)},
                      {"half_range", halfRangeJson(*facts.halfRangeClamps, s)},
                      {"preview", {{"file", "preview.png"}, {"exposure", facts.previewExposure}}}};
-    if (const auto& profile = resolvedProfile(s); profile.shCoefficients == profiles::ShForm::IrradianceShader)
+    if (const auto& profile = *s.engineProfile; profile.shCoefficients == profiles::ShForm::IrradianceShader)
         manifest["profile"]["sh_coefficients"] = coefficientsJson(shaderCoefficients(facts.irradiance->shRadiance));
     if (plan.scene) manifest["plan"] = planJson(plan);
     return manifest;

@@ -14,7 +14,7 @@ struct ManifestFacts {
     std::string toolVersion;
     std::string device;
     const EnvironmentInput* input;
-    const BakeSettings* settings;
+    const ResolvedSettings* settings;
     uint32_t size;
     uint32_t mips;
     const IrradianceSh* irradiance;

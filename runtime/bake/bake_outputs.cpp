@@ -134,13 +134,13 @@ WrittenFile writeBytes(const fs::path& folder, const std::string& name, std::spa
     return writePieces(folder, name, std::span(&bytes, 1));
 }
 
-std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture& texture, const BakeSettings& settings,
+std::vector<WrittenFile> writeTexture(const fs::path& folder, const BakedTexture& texture, const ResolvedSettings& settings,
                                       const std::string& writer) {
     const auto gpuTexture =
         image_io::makeTexture(texture.format, texture.size, texture.size, texture.faces, texture.mips, texture.values);
     std::vector<WrittenFile> written{
         writePieces(folder, texture.name + ".ktx2", image_io::encodeKtx2Pieces(gpuTexture, writer, texture.keyValues).pieces)};
-    const auto engineFile = resolvedProfile(settings).file;
+    const auto engineFile = settings.engineProfile->file;
     if (engineFile == profiles::SpecularFile::Ktx1)
         written.push_back(writeBytes(folder, texture.name + ".ktx", image_io::encodeKtx1(gpuTexture)));
     if (settings.dds || engineFile == profiles::SpecularFile::Dds) written.push_back(writeBytes(folder, texture.name + ".dds", image_io::encodeDds(gpuTexture)));

@@ -44,7 +44,7 @@ std::optional<HalfRangeClamp> applyHalfRangePolicy(BakedTexture& texture, bool s
 
 // Writes name.ktx2, with --dds name.dds, with --exr every face and mip under exr/.
 std::vector<WrittenFile> writeTexture(const std::filesystem::path& folder, const BakedTexture& texture,
-                                      const BakeSettings& settings, const std::string& writer);
+                                      const ResolvedSettings& settings, const std::string& writer);
 
 WrittenFile writeBytes(const std::filesystem::path& folder, const std::string& name, std::span<const std::byte> bytes);
 

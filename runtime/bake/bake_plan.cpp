@@ -55,13 +55,13 @@ double texelsOfChain(uint32_t size, uint32_t mips, uint32_t firstMip) {
     return texels;
 }
 
-void planSpecularMips(const BakeSettings& settings, uint32_t size, const SceneUse& use, const BenchCurves& curves,
+void planSpecularMips(const ResolvedSettings& settings, const SceneUse& use, const BenchCurves& curves,
                       BakePlan& plan) {
-    const uint32_t mips = resolvedMips(settings, size);
+    const uint32_t size = settings.faceSize, mips = settings.mipCount;
     const auto roughness = roughnessOfMips(*plan.recipe, mips, size);
     const bool benchLobe = plan.recipe->weighting == shading::LobeWeighting::NdotL;
-    const auto curve = curves.curve("specular", settings.specularMethod, resolvedSamples(settings));
-    const uint32_t benchMips = resolvedMips(BakeSettings{}, curves.cubeSize());
+    const auto curve = curves.curve("specular", settings.specularMethod, settings.sampleCount);
+    const uint32_t benchMips = chainDownTo(curves.cubeSize(), profiles::defaultProfile().lastMipSize);
     const double benchTexels = texelsOfChain(curves.cubeSize(), benchMips, 1);
     double neededMs = 0;
     for (uint32_t mip = 0; mip < mips; ++mip) {
@@ -103,18 +103,18 @@ Estimate scaledEstimate(const std::optional<MeasuredCurve>& curve, double texelR
     return {curve->medianDeviceMs * texelRatio, curve->worstErrorRms, curve->worstErrorMax};
 }
 
-void planLut(const BakeSettings& settings, const SceneUse& use, const BenchCurves& curves, BakePlan& plan) {
+void planLut(const ResolvedSettings& settings, const SceneUse& use, const BenchCurves& curves, BakePlan& plan) {
     const double n = settings.lutSize;
     if (!use.roughness.empty()) {
         plan.lutFirstRow = uint32_t(std::clamp(std::floor(use.roughness.min * n - 0.5), 0.0, n - 1));
         plan.lutLastRow = uint32_t(std::clamp(std::floor(use.roughness.max * n - 0.5) + 1, 0.0, n - 1));
     }
     if (plan.lut)
-        plan.lutEstimate = scaledEstimate(curves.curve("lut", settings.lutMethod, resolvedLutSamples(settings)),
+        plan.lutEstimate = scaledEstimate(curves.curve("lut", settings.lutMethod, settings.lutSampleCount),
                                           std::pow(n / curves.lutSize(), 2));
 }
 
-void listKernels(const BakeSettings& settings, BakePlan& plan) {
+void listKernels(const ResolvedSettings& settings, BakePlan& plan) {
     const auto add = [&](const std::string& name, const std::string& permutation = "") {
         plan.kernels.push_back(permutation.empty() ? name : name + " (" + permutation + ")");
     };
@@ -125,9 +125,9 @@ void listKernels(const BakeSettings& settings, BakePlan& plan) {
     if (plan.specular && kernels::isConvolutionMethod(settings.specularMethod)) add("ClusterCubeCS"); // its pyramids
     for (const auto& kernel : kernels::kernelTable()) {
         if (plan.specular && kernel.belongsTo(settings.specularMethod))
-            add(kernel.name, fmt::format("{} {}", settings.specularMethod, resolvedSamples(settings)));
+            add(kernel.name, fmt::format("{} {}", settings.specularMethod, settings.sampleCount));
         if (plan.lut && kernel.belongsTo(settings.lutMethod))
-            add(kernel.name, fmt::format("{} {}", settings.lutMethod, resolvedLutSamples(settings)));
+            add(kernel.name, fmt::format("{} {}", settings.lutMethod, settings.lutSampleCount));
     }
     // Both irradiance kernels are compiled even when the cube is skipped: the SH projection runs
     // for the manifest and the preview's exposure.
@@ -161,7 +161,7 @@ std::vector<bool> BakePlan::prefilteredMips() const {
 
 NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene) { return outputsFor(useOf(scene)); }
 
-BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::optional<scene::SceneMaterials>& scene,
+BakePlan planBake(const ResolvedSettings& settings, const std::optional<scene::SceneMaterials>& scene,
                   const BenchCurves& curves) {
     const auto use = useOf(scene);
     BakePlan plan;
@@ -176,13 +176,13 @@ BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::option
         }
     }
     plan.roughness = use.roughness;
-    plan.recipe = &resolvedRecipe(settings);
-    plan.schedule = shading::scheduleOf(*plan.recipe, resolvedMips(settings, size), size);
+    plan.recipe = settings.shadingRecipe;
+    plan.schedule = shading::scheduleOf(*plan.recipe, settings.mipCount, settings.faceSize);
     const auto outputs = outputsFor(use);
     plan.specular = outputs.specular;
     plan.lut = outputs.lut;
     plan.irradiance = outputs.irradiance;
-    planSpecularMips(settings, size, use, curves, plan);
+    planSpecularMips(settings, use, curves, plan);
     planLut(settings, use, curves, plan);
     if (plan.irradiance)
         plan.irradianceEstimate = scaledEstimate(curves.curve("irradiance", "exact-sum", 0),

@@ -55,14 +55,14 @@ struct NeededOutputs {
 };
 NeededOutputs neededOutputs(const std::optional<scene::SceneMaterials>& scene);
 
-// The plan for `settings` (at cube face size `size`), for `scene` when one is given. A specular
+// The plan for `settings` (at their face size and chain), for `scene` when one is given. A specular
 // mip sits at the roughness the recipe's schedule gives it (m / (M - 1) for the documents'), and
 // a renderer reads it for every roughness between its neighbours' (trilinear filtering between
 // mips): it is needed when that bracket meets the used range. The bench measured the documents'
 // N·L lobe: a recipe of another lobe has no error estimate. Irradiance is needed for any lit material that is not all metal; the specular
 // chain and the LUT for any lit material; transmission (KHR_materials_transmission, _volume)
 // needs the whole chain, since refraction blurs by thickness as well as roughness.
-BakePlan planBake(const BakeSettings& settings, uint32_t size, const std::optional<scene::SceneMaterials>& scene,
+BakePlan planBake(const ResolvedSettings& settings, const std::optional<scene::SceneMaterials>& scene,
                   const BenchCurves& curves = BenchCurves::builtIn());
 
 nlohmann::json planJson(const BakePlan& plan);

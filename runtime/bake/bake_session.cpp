@@ -11,13 +11,13 @@
 namespace iblkit::bake {
 namespace {
 
-std::string kernelsKey(const BakeSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
-    return fmt::format("{} {} {} {} {} {} {}", settings.specularMethod, resolvedSamples(settings), sourceSize,
-                       outputs.specular, outputs.lut, settings.lutMethod, resolvedLutSamples(settings));
+std::string kernelsKey(const ResolvedSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
+    return fmt::format("{} {} {} {} {} {} {}", settings.specularMethod, settings.sampleCount, sourceSize,
+                       outputs.specular, outputs.lut, settings.lutMethod, settings.lutSampleCount);
 }
 
-std::string lutKey(const BakeSettings& settings) {
-    return fmt::format("{} {} {}", settings.lutMethod, resolvedLutSamples(settings), settings.lutSize);
+std::string lutKey(const ResolvedSettings& settings) {
+    return fmt::format("{} {} {}", settings.lutMethod, settings.lutSampleCount, settings.lutSize);
 }
 
 } // namespace
@@ -56,18 +56,18 @@ DeviceCaches& BakeSession::caches(cache::ContentStore* store) {
     return *caches_;
 }
 
-BakeKernels& BakeSession::kernels(const BakeSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
+BakeKernels& BakeSession::kernels(const ResolvedSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize) {
     auto& kernels = kernels_[kernelsKey(settings, outputs, sourceSize)];
     if (!kernels) kernels = std::make_unique<BakeKernels>(context(), settings, outputs, sourceSize);
     return *kernels;
 }
 
-const BakedTexture* BakeSession::lut(const BakeSettings& settings) const {
+const BakedTexture* BakeSession::lut(const ResolvedSettings& settings) const {
     const auto found = luts_.find(lutKey(settings));
     return found == luts_.end() ? nullptr : found->second.get();
 }
 
-void BakeSession::keepLut(const BakeSettings& settings, const BakedTexture& lut) {
+void BakeSession::keepLut(const ResolvedSettings& settings, const BakedTexture& lut) {
     luts_[lutKey(settings)] = std::make_unique<BakedTexture>(lut);
 }
 

@@ -40,11 +40,11 @@ public:
     // The caches of `store` (none without one); a store in another folder replaces them.
     DeviceCaches& caches(cache::ContentStore* store);
     // The kernels of `settings` for a source of `sourceSize`, made at the first bake that needs them.
-    BakeKernels& kernels(const BakeSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize);
+    BakeKernels& kernels(const ResolvedSettings& settings, const NeededOutputs& outputs, uint32_t sourceSize);
 
     // The LUT of `settings` an earlier bake of the session computed, if any.
-    const BakedTexture* lut(const BakeSettings& settings) const;
-    void keepLut(const BakeSettings& settings, const BakedTexture& lut);
+    const BakedTexture* lut(const ResolvedSettings& settings) const;
+    void keepLut(const ResolvedSettings& settings, const BakedTexture& lut);
 
 private:
     const vulkan::DeviceInfo& deviceInfo();

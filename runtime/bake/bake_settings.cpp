@@ -37,9 +37,25 @@ void requireLutMethod(const std::string& method) {
         throw BakeError(fmt::format("--lut-method {} is not a LUT method (there are: {})", method, fmt::join(all, ", ")));
 }
 
+const profiles::EngineProfile& profileOf(const BakeSettings& settings) {
+    try {
+        return profiles::profileNamed(settings.profile);
+    } catch (const std::invalid_argument& error) {
+        throw BakeError(fmt::format("--profile: {}", error.what()));
+    }
+}
+
+const shading::ShadingRecipe& recipeOf(const BakeSettings& settings) {
+    if (settings.recipe) return shading::recipeNamed(*settings.recipe);
+    if (const auto& profile = profileOf(settings); profile.name != profiles::defaultProfile().name)
+        return shading::recipeNamed(profile.recipe);
+    return kernels::specularKindOf(settings.specularMethod) == kernels::SpecularKind::Convolution ? shading::defaultRecipe()
+                                                                                                : shading::documentRecipe();
+}
+
 void requireRecipe(const BakeSettings& settings) {
     try {
-        const auto& recipe = resolvedRecipe(settings);
+        const auto& recipe = recipeOf(settings);
         if (recipe.weighting != shading::LobeWeighting::NdotL &&
             kernels::specularKindOf(settings.specularMethod) != kernels::SpecularKind::Convolution)
             throw BakeError(fmt::format("--recipe {} prefilters a lobe weighted by {}, which only --method convolution "
@@ -53,7 +69,7 @@ void requireRecipe(const BakeSettings& settings) {
 // An engine finds a mip by its own lod mapping: a recipe of another mapping would give it mips
 // prefiltered at roughnesses it does not ask for.
 void requireProfileMapping(const BakeSettings& settings) {
-    const auto& profile = resolvedProfile(settings);
+    const auto& profile = profileOf(settings);
     if (profile.name == profiles::defaultProfile().name || !settings.recipe) return;
     const auto& own = shading::recipeNamed(profile.recipe);
     const auto& asked = shading::recipeNamed(*settings.recipe);
@@ -64,22 +80,36 @@ void requireProfileMapping(const BakeSettings& settings) {
                                     shading::nameOf(own.mapping), own.name));
 }
 
-} // namespace
+uint32_t lutSampleCountOf(const BakeSettings& settings) {
+    if (settings.lutSamples) return *settings.lutSamples;
+    if (settings.lutMethod == kernels::kQuadratureGridLutMethod) return kernels::kDefaultLutGrid;
+    if (settings.lutMethod == kernels::kFitLutMethod) return kDefaultLutFitDegree;
+    return settings.lutMethod == kernels::kQuadratureLutMethod ? kernels::kDefaultQuadratureNodes : kDocumentSamples;
+}
 
-const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings) {
-    try {
-        return profiles::profileNamed(settings.profile);
-    } catch (const std::invalid_argument& error) {
-        throw BakeError(fmt::format("--profile: {}", error.what()));
+uint32_t sampleCountOf(const BakeSettings& settings) {
+    if (settings.samples) return *settings.samples;
+    switch (kernels::specularKindOf(settings.specularMethod)) {
+    case kernels::SpecularKind::Convolution: return kDefaultConvolutionBudget;
+    case kernels::SpecularKind::Pyramid: return kDefaultPyramidReads;
+    case kernels::SpecularKind::MipChain: return 1;
+    default: return kDocumentSamples;
     }
 }
 
-const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings) {
-    if (settings.recipe) return shading::recipeNamed(*settings.recipe);
-    if (const auto& profile = resolvedProfile(settings); profile.name != profiles::defaultProfile().name)
-        return shading::recipeNamed(profile.recipe);
-    return kernels::specularKindOf(settings.specularMethod) == kernels::SpecularKind::Convolution ? shading::defaultRecipe()
-                                                                                                : shading::documentRecipe();
+uint32_t mipCountOf(const BakeSettings& settings, const profiles::EngineProfile& profile, uint32_t size) {
+    if (settings.mips) {
+        requireRange("--mips", *settings.mips, 1, uint32_t(std::bit_width(size)));
+        return *settings.mips;
+    }
+    return chainDownTo(size, profile.lastMipSize);
+}
+
+} // namespace
+
+uint32_t chainDownTo(uint32_t size, uint32_t lastMipSize) {
+    const uint32_t floor = std::clamp(lastMipSize, 1u, size);
+    return uint32_t(std::bit_width(size)) - uint32_t(std::bit_width(floor)) + 1;
 }
 
 std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_t mips, uint32_t size) {
@@ -92,60 +122,47 @@ std::vector<float> roughnessOfMips(const shading::ShadingRecipe& recipe, uint32_
     return roughness;
 }
 
-uint32_t resolvedLutSamples(const BakeSettings& settings) {
-    if (settings.lutSamples) return *settings.lutSamples;
-    if (settings.lutMethod == kernels::kQuadratureGridLutMethod) return kernels::kDefaultLutGrid;
-    if (settings.lutMethod == kernels::kFitLutMethod) return kDefaultLutFitDegree;
-    return settings.lutMethod == kernels::kQuadratureLutMethod ? kernels::kDefaultQuadratureNodes : kDocumentSamples;
-}
-
-uint32_t resolvedSamples(const BakeSettings& settings) {
-    if (settings.samples) return *settings.samples;
-    switch (kernels::specularKindOf(settings.specularMethod)) {
-    case kernels::SpecularKind::Convolution: return kDefaultConvolutionBudget;
-    case kernels::SpecularKind::Pyramid: return kDefaultPyramidReads;
-    case kernels::SpecularKind::MipChain: return 1;
-    default: return kDocumentSamples;
-    }
-}
-
-uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize) {
-    if (inputCubeSize == 0) return settings.size.value_or(kDefaultSize);
-    if (settings.size && *settings.size != inputCubeSize)
-        throw BakeError("the input cube's faces are " + std::to_string(inputCubeSize) + "x" +
-                        std::to_string(inputCubeSize) + "; --size " + std::to_string(*settings.size) +
-                        " must match them or be left out");
-    return inputCubeSize;
-}
-
-uint32_t resolvedMips(const BakeSettings& settings, uint32_t size) {
-    const uint32_t fullChain = static_cast<uint32_t>(std::bit_width(size));
-    if (settings.mips) {
-        requireRange("--mips", *settings.mips, 1, fullChain);
-        return *settings.mips;
-    }
-    const uint32_t floor = std::min(size, resolvedProfile(settings).lastMipSize);
-    return fullChain - static_cast<uint32_t>(std::bit_width(floor)) + 1;
-}
-
 bool usesCache(const BakeSettings& settings) { return settings.cache && !settings.context.validation; }
 
-void validateSettings(const BakeSettings& settings) {
+ResolvedSettings resolveSettings(const BakeSettings& settings) {
     if (settings.size) {
         requireRange("--size", *settings.size, 1, kMaxCubeSize);
         requirePowerOfTwo("--size", *settings.size);
     }
     requireSpecularMethod(settings.specularMethod);
     if (settings.samples) requireRange("--samples", *settings.samples, 1, kernels::maxSamplesOf(settings.specularMethod));
-    resolvedProfile(settings);
+    ResolvedSettings resolved{settings};
+    resolved.engineProfile = &profileOf(settings);
     requireRecipe(settings);
     requireProfileMapping(settings);
+    resolved.shadingRecipe = &recipeOf(settings);
     requireLutMethod(settings.lutMethod);
     if (settings.lutSamples) requireRange("--lut-samples", *settings.lutSamples, kernels::minLutSamplesOf(settings.lutMethod),
                      kernels::maxLutSamplesOf(settings.lutMethod));
     requireRange("--lut-size", settings.lutSize, 1, kMaxLutSize);
     requireRange("--irradiance-size", settings.irradianceSize, 1, kMaxIrradianceSize);
-    if (settings.size) resolvedMips(settings, *settings.size); // the chain of an input cube is checked once it is read
+    resolved.sampleCount = sampleCountOf(settings);
+    resolved.lutSampleCount = lutSampleCountOf(settings);
+    // A chain asked without a size waits for the input's: a cube's own may be larger than the default.
+    if (settings.size || !settings.mips) resolveFaceSize(resolved, 0);
+    return resolved;
+}
+
+void resolveFaceSize(ResolvedSettings& settings, uint32_t inputCubeSize) {
+    if (inputCubeSize == 0) {
+        settings.faceSize = settings.size.value_or(kDefaultSize);
+        settings.mipCount = mipCountOf(settings, *settings.engineProfile, settings.faceSize);
+        return;
+    }
+    if (settings.size && *settings.size != inputCubeSize)
+        throw BakeError("the input cube's faces are " + std::to_string(inputCubeSize) + "x" +
+                        std::to_string(inputCubeSize) + "; --size " + std::to_string(*settings.size) +
+                        " must match them or be left out");
+    if (!std::has_single_bit(inputCubeSize))
+        throw BakeError(fmt::format("the input cube's faces are {}x{}; the bake needs a power of two", inputCubeSize,
+                                    inputCubeSize));
+    settings.faceSize = inputCubeSize;
+    settings.mipCount = mipCountOf(settings, *settings.engineProfile, inputCubeSize);
 }
 
 float roughnessOfMip(uint32_t mip, uint32_t mips) {

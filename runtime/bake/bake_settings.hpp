@@ -70,23 +70,31 @@ inline constexpr uint32_t kMaxCubeSize = 16384;
 inline constexpr uint32_t kMaxLutSize = 16384;
 inline constexpr uint32_t kMaxIrradianceSize = 1024;
 
-// The face size the bake uses for a source of `inputCubeSize` (0 when the input is a panorama).
-uint32_t resolvedSize(const BakeSettings& settings, uint32_t inputCubeSize);
-// The specular mip count for a face size: the setting, or the chain down to the profile's last
-// mip size (8 for the kit's), the last at roughness 1.
-uint32_t resolvedMips(const BakeSettings& settings, uint32_t size);
-// The prefilter's sample count (budget of terms, for the convolution): the setting, or the
-// method's default.
-uint32_t resolvedSamples(const BakeSettings& settings);
-// The LUT method's count: the setting, or the method's default.
-uint32_t resolvedLutSamples(const BakeSettings& settings);
-// The profile the setting names.
-const profiles::EngineProfile& resolvedProfile(const BakeSettings& settings);
-// The recipe: the setting's, the profile's, or the method's default.
-const shading::ShadingRecipe& resolvedRecipe(const BakeSettings& settings);
-// Throws BakeError naming the first setting out of range (the output folder is prepareBake's).
-void validateSettings(const BakeSettings& settings);
+// A bake's settings with every default and every name resolved once, at the edge: the plan and the
+// steps read these, never the optionals they came from. The face size and chain are the setting's
+// (or the default's) until a cube input is read, whose own size then decides them (resolveFaceSize).
+struct ResolvedSettings : BakeSettings {
+    const profiles::EngineProfile* engineProfile = nullptr; // the one `profile` names
+    // `recipe`'s, else the profile's, else the method's default (the kit's for the convolution, the
+    // documents' for every other method: they prefilter the documents' N·L lobe).
+    const shading::ShadingRecipe* shadingRecipe = nullptr;
+    uint32_t sampleCount = 0;    // `samples`, or the method's default
+    uint32_t lutSampleCount = 0; // `lutSamples`, or the LUT method's default
+    uint32_t faceSize = 0;       // `size`, or 256, or the input cube's own
+    // `mips`, or the chain down to the profile's last mip size (8 for the kit's), the last at roughness 1.
+    uint32_t mipCount = 0;
+};
 
+// Checks and resolves every setting. Throws BakeError naming the first one out of range (the
+// output folder is prepareBake's).
+ResolvedSettings resolveSettings(const BakeSettings& settings);
+// The face size and chain for an input cube of `inputCubeSize` (0: a panorama or the built-in sky,
+// which take the setting's or the default): a cube's own size, which --size must match if given.
+// resolveSettings calls it with 0 unless a chain is asked without a size, which waits for the
+// input's. Throws BakeError.
+void resolveFaceSize(ResolvedSettings& settings, uint32_t inputCubeSize);
+// The specular mip count of a chain from a `size` face down to `lastMipSize` (or to 1x1).
+uint32_t chainDownTo(uint32_t size, uint32_t lastMipSize);
 // Whether the bake reads and writes its cache: it names one and is not validated (a validated
 // bake is one the layer watched: nothing is taken from the cache, and what the layer may yet
 // fail is not put there).

@@ -31,7 +31,7 @@ double cubeChainBytes(uint32_t size) { return 6.0 * size * size * 16 * 4 / 3; }
 std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e9); }
 
 // Refuses sizes whose images would not fit, before any of them is made.
-void checkMemory(const vulkan::VulkanContext& context, const BakeSettings& settings, const EnvironmentInput& input,
+void checkMemory(const vulkan::VulkanContext& context, const ResolvedSettings& settings, const EnvironmentInput& input,
                  uint32_t size) {
     const double panorama = double(input.panorama.width) * input.panorama.height * 16;
     // The convolution's energy, centroid and geometry pyramids are each a full RGBA32F chain, as wide as
@@ -74,7 +74,7 @@ vulkan::Image uploaded(const vulkan::VulkanContext& context, const BakedTexture&
     return image;
 }
 
-image_io::PixelFormat lutFormatOf(const BakeSettings& settings) {
+image_io::PixelFormat lutFormatOf(const ResolvedSettings& settings) {
     return settings.lutFormat == LutFormat::Rg16Float ? image_io::PixelFormat::Rg16Float : image_io::PixelFormat::Rg32Float;
 }
 
@@ -100,7 +100,7 @@ struct Cached {
     }
 };
 
-Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& plan, const BakeSettings& settings) {
+Cached lookUp(cache::ContentStore* store, const BakeKeys& keys, const BakePlan& plan, const ResolvedSettings& settings) {
     Cached cached;
     if (!store) return cached;
     const auto texture = [&](const std::string& key) {
@@ -172,7 +172,7 @@ vulkan::Image prefilteredSpecular(const vulkan::VulkanContext& context, BakeKern
 }
 
 Irradiance irradianceWithLights(const vulkan::VulkanContext& context, BakeKernels& kernels, vulkan::Image& residual,
-                                const BakeSettings& settings, const BakePlan& plan, const TakenOutLights& taken,
+                                const ResolvedSettings& settings, const BakePlan& plan, const TakenOutLights& taken,
                                 BakeProgress& progress) {
     auto irradiance = computeIrradiance(context, kernels.irradiance(), {residual, taken.restMipZero}, settings.irradianceSize, progress,
                                         plan.irradiance, plan.recipe->irradianceSource);
@@ -180,7 +180,7 @@ Irradiance irradianceWithLights(const vulkan::VulkanContext& context, BakeKernel
     return irradiance;
 }
 
-DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
+DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernels, const ResolvedSettings& settings,
                        const EnvironmentInput& input, uint32_t size, const BakePlan& plan, const Cached& cached,
                        BakeProgress& progress) {
     std::optional<vulkan::Image> source;
@@ -211,7 +211,7 @@ DeviceResults runSteps(const vulkan::VulkanContext& context, BakeKernels& kernel
 }
 
 // Every output's values on the host, from the cache or the device.
-BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kernels, const BakeSettings& settings,
+BakedOutputs downloaded(const vulkan::VulkanContext& context, BakeKernels& kernels, const ResolvedSettings& settings,
                         const BakePlan& plan, const Cached& cached, DeviceResults& results, BakeProgress& progress) {
     BakedOutputs outputs;
     outputs.device = context.deviceInfo().name;
@@ -264,7 +264,7 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
 // A bake's device, caches and kernels: the session's, or its own, torn down after it.
 class BakeDevice {
 public:
-    BakeDevice(BakeSession* session, const BakeSettings& settings, cache::ContentStore* cache, const NeededOutputs& needed,
+    BakeDevice(BakeSession* session, const ResolvedSettings& settings, cache::ContentStore* cache, const NeededOutputs& needed,
                uint32_t size, BakeProgress& progress)
         : session_(session) {
         progress.part("instance and device");
@@ -299,7 +299,7 @@ private:
 };
 
 // What the cache does not hold, computed on the device, and stored.
-BakedOutputs computeOnDevice(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+BakedOutputs computeOnDevice(const ResolvedSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
                              const BakeKeys& keys, Cached cached, BakeProgress& progress, cache::ContentStore* cache,
                              BakeSession* session) {
     kernels::KernelCompileCounter compiles;
@@ -383,13 +383,13 @@ struct CacheLookUp {
     vulkan::DeviceInfo device;
 };
 
-CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+CacheLookUp lookUpEntries(const ResolvedSettings& settings, const EnvironmentInput& input, const BakePlan& plan,
                           const std::string& toolVersion, BakeProgress& progress, cache::ContentStore& store,
                           const DeviceSearch& search) {
     const auto found = [&] { return foundDevice(search, settings.context); };
     const auto entries = [&](const vulkan::DeviceInfo& device) {
         progress.part("keys");
-        auto keys = bakeKeys(settings, input, size, plan, device, toolVersion);
+        auto keys = bakeKeys(settings, input, plan, device, toolVersion);
         progress.part("entries");
         auto cached = lookUp(&store, keys, plan, settings);
         return CacheLookUp{std::move(keys), std::move(cached), device};
@@ -413,13 +413,14 @@ CacheLookUp lookUpEntries(const BakeSettings& settings, const EnvironmentInput& 
 
 } // namespace
 
-BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+BakedOutputs bakeOutputs(const ResolvedSettings& settings, EnvironmentInput& input, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
                          const DeviceSearch& device, BakeSession* session) {
+    const uint32_t size = settings.faceSize;
     if (!usesCache(settings)) store = nullptr;
     if (!store) return computeOnDevice(settings, input, size, plan, {}, {}, progress, nullptr, session);
     progress.begin("cache");
-    auto [keys, cached, found] = lookUpEntries(settings, input, size, plan, toolVersion, progress, *store, device);
+    auto [keys, cached, found] = lookUpEntries(settings, input, plan, toolVersion, progress, *store, device);
     progress.end();
     const bool unconfirmed = device.remembered && device.confirmLater && cached.complete(plan);
     if (!cached.complete(plan)) {

@@ -61,7 +61,7 @@ struct DeviceSearch {
 
 // Decodes `input` (decodeEnvironment) if the cache lacks an output. With a session, the device work
 // runs on its device and kernels (bake_session.hpp).
-BakedOutputs bakeOutputs(const BakeSettings& settings, EnvironmentInput& input, uint32_t size, const BakePlan& plan,
+BakedOutputs bakeOutputs(const ResolvedSettings& settings, EnvironmentInput& input, const BakePlan& plan,
                          const std::string& toolVersion, BakeProgress& progress, cache::ContentStore* store,
                          const DeviceSearch& device = {}, BakeSession* session = nullptr);
 

@@ -96,7 +96,7 @@ public:
         bake::BakeProgress quiet(true);
         const auto summary = bake::bakeEnvironment(settings, "bench", quiet);
         const auto scene = bake.scene ? std::optional(scene::readSceneMaterials(*bake.scene)) : std::nullopt;
-        const auto plan = bake::planBake(settings, bake::resolvedSize(settings, 0), scene);
+        const auto plan = bake::planBake(bake::resolveSettings(settings), scene);
         auto& timing = timingOf(bake);
         timing.computed = computedBy(summary, plan);
         times_[timing.bake + "/" + timing.environment].push_back(summary.wallMilliseconds);

@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 uint32_t defaultSamplesOf(const std::string& method) {
     bake::BakeSettings settings;
     settings.specularMethod = method;
-    return bake::resolvedSamples(settings);
+    return bake::resolveSettings(settings).sampleCount;
 }
 
 // The bake's own account of its largest resident set (--json's peak_mib): the kernel's for a

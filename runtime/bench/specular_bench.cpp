@@ -67,8 +67,7 @@ MipError mipError(const std::vector<float>& specular, const vulkan::Image& image
 SpecularBench::SpecularBench(const vulkan::VulkanContext& context, vulkan::Image& source, const reference::MippedCube& cube,
                              const BenchOptions& options, const ReferenceCache& cache)
     : context_(context), source_(source), options_(options) {
-    bake::BakeSettings defaults;
-    mips_ = bake::resolvedMips(defaults, cube.size);
+    mips_ = bake::chainDownTo(cube.size, profiles::defaultProfile().lastMipSize); // the bake's default chain
     for (uint32_t mip = 1; mip < mips_; ++mip) {
         const uint32_t mipSize = cube.size >> mip;
         const float roughness = bake::roughnessOfMip(mip, mips_);

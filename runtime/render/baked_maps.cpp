@@ -15,12 +15,13 @@ float exposureOf(const BakedMaps& maps) { return bake::previewExposure(maps.irra
 
 BakedMaps bakeMaps(const vulkan::VulkanContext& context, const bake::EnvironmentInput& input,
                    const shading::ShadingRecipe& recipe, bake::BakeProgress& progress) {
-    bake::BakeSettings defaults;
-    defaults.profile = profiles::profileMadeFor(recipe.name).name;
+    bake::BakeSettings asked;
+    asked.profile = profiles::profileMadeFor(recipe.name).name;
+    auto defaults = bake::resolveSettings(asked);
+    bake::resolveFaceSize(defaults, input.cubeSize);
     bake::BakeKernels kernels(context, defaults);
-    const uint32_t size = bake::resolvedSize(defaults, input.cubeSize);
+    const uint32_t size = defaults.faceSize, mips = defaults.mipCount;
     auto source = bake::buildSourceCube(context, input, size, progress);
-    const uint32_t mips = bake::resolvedMips(defaults, size);
     const auto schedule = shading::scheduleOf(recipe, mips, size);
     bake::TakenOutLights taken;
     if (recipe.lights) taken = bake::takeOutLights(context, source, *recipe.lights, kernels.downsample(), progress);

@@ -3,6 +3,7 @@
 // computed again, and so is one moved to another key's place, keys follow every kernel source and header, and bakes racing on one cache
 // both end well.
 #include "bake.hpp"
+#include "resolved_at.hpp"
 #include "bake_cache.hpp"
 #include "float_image.hpp"
 #include "temp_folder.hpp"
@@ -185,13 +186,13 @@ TEST_F(BakeCache, ACacheThatCannotBeWrittenIsAWarningNotAFailure) {
 TEST(BakeKeys, FollowEveryKernelSourceAndHeader) {
     BakeSettings settings;
     EnvironmentInput input;
-    const auto plan = planBake(settings, 256, std::nullopt);
+    const auto plan = planBake(resolvedAt(settings, 256), std::nullopt);
     const vulkan::DeviceInfo device{0, "llvmpipe", "cpu", "mesa", "1.3", true};
-    const auto base = bakeKeys(settings, input, 256, plan, device, "1");
+    const auto base = bakeKeys(resolvedAt(settings, 256), input, plan, device, "1");
     const auto keysWithChanged = [&](const std::string& path) {
         auto files = kernels::embeddedShaderFiles();
         files.at(path) += "\n// changed\n";
-        return bakeKeys(settings, input, 256, plan, device, "1", files);
+        return bakeKeys(resolvedAt(settings, 256), input, plan, device, "1", files);
     };
     const auto header = keysWithChanged("hlsl/document/Common/PBR.fxh"); // an include: every output's key
     EXPECT_TRUE(header.specular != base.specular && header.lut != base.lut && header.irradiance != base.irradiance);
@@ -209,12 +210,12 @@ TEST(BakeKeys, FollowEveryKernelSourceAndHeader) {
     const auto irradiance = keysWithChanged("hlsl/IrradianceCubeCS.hlsl");
     EXPECT_EQ(irradiance.specular, base.specular) << "a kernel the output does not run";
     EXPECT_NE(irradiance.irradiance, base.irradiance);
-    EXPECT_NE(base.specular, bakeKeys(settings, input, 256, plan, {0, "a GPU", "discrete-gpu", "x", "1.3", false}, "1").specular);
-    EXPECT_NE(base.specular, bakeKeys(settings, input, 256, plan, device, "2").specular) << "the tool's version";
-    EXPECT_NE(base.specular, bakeKeys(settings, input, 128, planBake(settings, 128, std::nullopt), device, "1").specular);
+    EXPECT_NE(base.specular, bakeKeys(resolvedAt(settings, 256), input, plan, {0, "a GPU", "discrete-gpu", "x", "1.3", false}, "1").specular);
+    EXPECT_NE(base.specular, bakeKeys(resolvedAt(settings, 256), input, plan, device, "2").specular) << "the tool's version";
+    EXPECT_NE(base.specular, bakeKeys(resolvedAt(settings, 128), input, planBake(resolvedAt(settings, 128), std::nullopt), device, "1").specular);
     auto otherMethod = settings;
     otherMethod.samples = 64;
-    const auto sampled = bakeKeys(otherMethod, input, 256, plan, device, "1");
+    const auto sampled = bakeKeys(resolvedAt(otherMethod, 256), input, plan, device, "1");
     EXPECT_NE(sampled.specular, base.specular);
     EXPECT_EQ(sampled.lut, base.lut);
 }

@@ -26,15 +26,15 @@ TEST(BakeKernels, MakesTheMethodsTheSettingsNameCleanly) {
         BakeSettings chunked;
         chunked.specularMethod = chunked.lutMethod = "document";
         chunked.samples = chunked.lutSamples = 131072;
-        BakeKernels documents(context, chunked);
+        BakeKernels documents(context, resolveSettings(chunked));
         EXPECT_GT(documents.specular()->chunkSamples(), 0u);
         EXPECT_GT(documents.lut()->chunkSamples(), 0u);
-        BakeKernels defaults(context, BakeSettings{});
+        BakeKernels defaults(context, resolveSettings(BakeSettings{}));
         EXPECT_EQ(defaults.specular()->chunkSamples(), 0u);
         EXPECT_EQ(defaults.lut()->chunkSamples(), 0u);
         EXPECT_NO_THROW(defaults.irradiance());
         EXPECT_NO_THROW(defaults.preview());
-        BakeKernels unlitScene(context, BakeSettings{}, NeededOutputs{false, false, false});
+        BakeKernels unlitScene(context, resolveSettings(BakeSettings{}), NeededOutputs{false, false, false});
         EXPECT_EQ(unlitScene.specular(), nullptr) << "no lit material: no prefilter compiled";
         EXPECT_EQ(unlitScene.lut(), nullptr);
         EXPECT_NO_THROW(unlitScene.preview());
@@ -44,9 +44,8 @@ TEST(BakeKernels, MakesTheMethodsTheSettingsNameCleanly) {
 
 TEST(BakeKernels, AWorkersErrorSurfacesWhereItsKernelsAreAskedFor) {
     const vulkan::VulkanContext context;
-    BakeSettings settings;
-    settings.lutMethod = "quadrature-grid";
-    settings.lutSamples = 2; // below the grid's 4 nodes per side
+    auto settings = resolveSettings(BakeSettings{}); // the quadrature grid
+    settings.lutSampleCount = 2;                      // below its 4 nodes per side, past what resolveSettings lets through
     BakeKernels kernels(context, settings);
     EXPECT_NO_THROW(kernels.specular());
     EXPECT_THROW(kernels.lut(), std::invalid_argument);

@@ -1,6 +1,7 @@
 // What a bake computes for a scene's materials: the outputs, the specular mips between the
 // neighbours of a used roughness, the LUT rows, and the estimates from the bench's curves.
 #include "bake_plan.hpp"
+#include "resolved_at.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,7 +27,7 @@ BakeSettings documentRecipe() {
 }
 
 BakePlan planFor(std::vector<scene::MaterialNeeds> materials, const BakeSettings& settings = documentRecipe()) {
-    return planBake(settings, 256, scene::SceneMaterials{"scene.gltf", std::move(materials), {}, {}});
+    return planBake(resolvedAt(settings, 256), scene::SceneMaterials{"scene.gltf", std::move(materials), {}, {}});
 }
 
 std::vector<bool> neededMips(const BakePlan& plan) {
@@ -36,7 +37,7 @@ std::vector<bool> neededMips(const BakePlan& plan) {
 }
 
 TEST(BakePlan, WithoutASceneEverythingIsNeeded) {
-    const auto plan = planBake(BakeSettings{}, 256, std::nullopt);
+    const auto plan = planBake(resolvedAt(BakeSettings{}, 256), std::nullopt);
     EXPECT_TRUE(plan.specular && plan.irradiance && plan.lut);
     EXPECT_EQ(neededMips(plan), std::vector<bool>(6, true));
     EXPECT_EQ(plan.lutFirstRow, 0u);
@@ -106,13 +107,13 @@ TEST(BakePlan, TheKitsMipsFollowItsScheduleAndSoDoTheirBrackets) {
 
 // The bench measured the documents' N·L lobe: the kit's G1 lobe has its time estimated, not its error.
 TEST(BakePlan, TheKitsLobeHasNoErrorEstimateFromTheBench) {
-    const auto plan = planBake(BakeSettings{}, 256, std::nullopt);
+    const auto plan = planBake(resolvedAt(BakeSettings{}, 256), std::nullopt);
     EXPECT_TRUE(plan.specularEstimate.deviceMs.has_value());
     EXPECT_FALSE(plan.specularEstimate.errorRms.has_value());
 }
 
 TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
-    const auto plan = planBake(documentRecipe(), 256, std::nullopt);
+    const auto plan = planBake(resolvedAt(documentRecipe(), 256), std::nullopt);
     ASSERT_TRUE(plan.specularEstimate.deviceMs && plan.lutEstimate.deviceMs && plan.irradianceEstimate.deviceMs);
     EXPECT_GT(*plan.specularEstimate.deviceMs, 0);
     // The defaults' documented bounds (docs/bench.md): specular within 1 % RMS, the LUT within 1e-4.
@@ -122,11 +123,11 @@ TEST(BakePlan, TheDefaultsEstimatesComeFromTheBenchsCurves) {
         EXPECT_TRUE(mip.mip == 0 || mip.estimate.errorRms.has_value()) << "mip " << mip.mip;
     BakeSettings unmeasured = documentRecipe();
     unmeasured.samples = 77;
-    EXPECT_FALSE(planBake(unmeasured, 256, std::nullopt).specularEstimate.deviceMs) << "no curve: no estimate";
+    EXPECT_FALSE(planBake(resolvedAt(unmeasured, 256), std::nullopt).specularEstimate.deviceMs) << "no curve: no estimate";
 }
 
 TEST(BakePlan, AMipCountTheBenchDidNotMeasureHasNoSpecularErrorEstimate) {
-    const auto plan = planBake(documentRecipe(), 128, std::nullopt); // 5 mips at 0, .25, .5, .75, 1; the bench's are in fifths
+    const auto plan = planBake(resolvedAt(documentRecipe(), 128), std::nullopt); // 5 mips at 0, .25, .5, .75, 1; the bench's are in fifths
     EXPECT_TRUE(plan.specularEstimate.deviceMs.has_value());
     EXPECT_FALSE(plan.specularEstimate.errorRms.has_value()) << "roughness 1's error alone would understate it";
 }

@@ -18,12 +18,21 @@ BakeSettings settingsWithOutput() {
     return settings;
 }
 
+// The face size and chain of `settings` for an input cube of `inputCubeSize` (0: a panorama).
+ResolvedSettings resolvedFor(const BakeSettings& settings, uint32_t inputCubeSize = 0) {
+    auto resolved = resolveSettings(settings);
+    resolveFaceSize(resolved, inputCubeSize);
+    return resolved;
+}
+
 TEST(BakeSettings, DefaultChainEndsAtEightByEightWithRoughnessOne) {
     const auto settings = settingsWithOutput();
-    EXPECT_EQ(resolvedSize(settings, 0), 256u);
-    EXPECT_EQ(resolvedMips(settings, 256), 6u); // 256, 128, 64, 32, 16, 8
-    EXPECT_EQ(resolvedMips(settings, 8), 1u);
-    EXPECT_EQ(resolvedMips(settings, 4), 1u);
+    EXPECT_EQ(resolveSettings(settings).faceSize, 256u);
+    EXPECT_EQ(resolveSettings(settings).mipCount, 6u); // 256, 128, 64, 32, 16, 8
+    EXPECT_EQ(resolvedFor(settings, 8).mipCount, 1u);
+    EXPECT_EQ(resolvedFor(settings, 4).mipCount, 1u);
+    EXPECT_EQ(chainDownTo(256, 8), 6u);
+    EXPECT_EQ(chainDownTo(256, 1), 9u);
     EXPECT_FLOAT_EQ(roughnessOfMip(0, 6), 0.f);
     EXPECT_FLOAT_EQ(roughnessOfMip(1, 6), 0.2f);
     EXPECT_FLOAT_EQ(roughnessOfMip(5, 6), 1.f);
@@ -32,40 +41,47 @@ TEST(BakeSettings, DefaultChainEndsAtEightByEightWithRoughnessOne) {
 TEST(BakeSettings, AProfileBringsItsRecipeAndChainAndTakesARecipeOfItsMapping) {
     auto settings = settingsWithOutput();
     settings.profile = "threejs";
-    EXPECT_EQ(resolvedRecipe(settings).name, "quadratic-lights");
-    EXPECT_EQ(resolvedMips(settings, 256), 6u); // three.js's PMREM ends at 8²
-    settings.recipe = "quadratic";              // the same lod mapping: the engine finds its mips
-    EXPECT_NO_THROW(validateSettings(settings));
-    EXPECT_EQ(resolvedRecipe(settings).name, "quadratic");
+    EXPECT_EQ(resolveSettings(settings).engineProfile->name, std::string("threejs"));
+    EXPECT_EQ(resolveSettings(settings).shadingRecipe->name, "quadratic-lights");
+    EXPECT_EQ(resolveSettings(settings).mipCount, 6u); // three.js's PMREM ends at 8²
+    settings.recipe = "quadratic";                     // the same lod mapping: the engine finds its mips
+    EXPECT_EQ(resolveSettings(settings).shadingRecipe->name, "quadratic");
 }
 
 TEST(BakeSettings, InputCubeSetsTheSizeAndAConflictingSizeIsRefused) {
     auto settings = settingsWithOutput();
-    EXPECT_EQ(resolvedSize(settings, 128), 128u);
+    EXPECT_EQ(resolvedFor(settings, 128).faceSize, 128u);
+    EXPECT_EQ(resolvedFor(settings, 128).mipCount, 5u);
+    EXPECT_THROW(resolvedFor(settings, 96), BakeError) << "a cube's faces must be a power of two";
     settings.size = 64;
-    EXPECT_THROW(resolvedSize(settings, 128), BakeError);
+    EXPECT_THROW(resolvedFor(settings, 128), BakeError);
     settings.size = 128;
-    EXPECT_EQ(resolvedSize(settings, 128), 128u);
+    EXPECT_EQ(resolvedFor(settings, 128).faceSize, 128u);
+    // A chain asked without a size waits for the input's: a 1024² cube has 11 mips, the default 256² nine.
+    settings.size.reset();
+    settings.mips = 11;
+    EXPECT_EQ(resolvedFor(settings, 1024).mipCount, 11u);
+    EXPECT_THROW(resolvedFor(settings, 0), BakeError) << "a panorama is baked at 256²";
 }
 
 TEST(BakeSettings, EachMethodHasItsOwnDefaultCount) {
     auto settings = settingsWithOutput();
     EXPECT_EQ(settings.specularMethod, "convolution");
-    EXPECT_EQ(resolvedSamples(settings), kDefaultConvolutionBudget);
+    EXPECT_EQ(resolveSettings(settings).sampleCount, kDefaultConvolutionBudget);
     settings.specularMethod = "pyramid";
-    EXPECT_EQ(resolvedSamples(settings), kDefaultPyramidReads);
+    EXPECT_EQ(resolveSettings(settings).sampleCount, kDefaultPyramidReads);
     settings.specularMethod = "mipchain";
-    EXPECT_EQ(resolvedSamples(settings), 1u) << "it takes no count";
+    EXPECT_EQ(resolveSettings(settings).sampleCount, 1u) << "it takes no count";
     settings.specularMethod = "document";
-    EXPECT_EQ(resolvedSamples(settings), 1024u);
+    EXPECT_EQ(resolveSettings(settings).sampleCount, 1024u);
     settings.samples = 64;
-    EXPECT_EQ(resolvedSamples(settings), 64u);
+    EXPECT_EQ(resolveSettings(settings).sampleCount, 64u);
     EXPECT_EQ(settings.lutMethod, "quadrature-grid");
-    EXPECT_EQ(resolvedLutSamples(settings), kernels::kDefaultLutGrid);
+    EXPECT_EQ(resolveSettings(settings).lutSampleCount, kernels::kDefaultLutGrid);
     settings.lutMethod = "quadrature";
-    EXPECT_EQ(resolvedLutSamples(settings), kernels::kDefaultQuadratureNodes);
+    EXPECT_EQ(resolveSettings(settings).lutSampleCount, kernels::kDefaultQuadratureNodes);
     settings.lutMethod = "document";
-    EXPECT_EQ(resolvedLutSamples(settings), 1024u);
+    EXPECT_EQ(resolveSettings(settings).lutSampleCount, 1024u);
 }
 
 TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
@@ -73,7 +89,7 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
         auto settings = settingsWithOutput();
         change(settings);
         try {
-            validateSettings(settings);
+            resolveSettings(settings);
             ADD_FAILURE() << name << " was accepted";
         } catch (const BakeError& error) {
             EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what();
@@ -107,9 +123,10 @@ TEST(BakeSettings, OutOfRangeValuesAreRefusedByName) {
     auto settings = settingsWithOutput();
     settings.specularMethod = "document";
     settings.samples = 65536;
-    EXPECT_NO_THROW(validateSettings(settings)) << "past the convolution's limit, not the document's";
+    EXPECT_NO_THROW(resolveSettings(settings)) << "past the convolution's limit, not the document's";
+    settings.size = 256;
     settings.mips = 10; // a 256 cube has 9
-    EXPECT_THROW(resolvedMips(settings, 256), BakeError);
+    EXPECT_THROW(resolveSettings(settings), BakeError);
 }
 
 TEST(TexelChecks, NonFiniteTexelsAreCountedWithTheFirstOneAndAlphaIsIgnored) {

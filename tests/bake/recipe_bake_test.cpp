@@ -152,7 +152,7 @@ TEST_F(RecipeBake, LightsGltfHoldsTheSunAsAPunctualDirectionalLight) {
 TEST_F(RecipeBake, TheDocumentsRecipeIsTheirStepsBitForBit) {
     const auto settings = smallBake(document());
     const vulkan::VulkanContext context(settings.context);
-    BakeKernels kernels(context, settings);
+    BakeKernels kernels(context, resolveSettings(settings));
     BakeProgress quiet(true);
     EnvironmentInput builtIn;
     auto source = buildSourceCube(context, builtIn, 64, quiet);
@@ -168,20 +168,20 @@ TEST_F(RecipeBake, TheDocumentsRecipeIsTheirStepsBitForBit) {
 TEST(RecipeSettings, AnUnknownRecipeOrALobeTheMethodCannotPrefilterIsRefused) {
     BakeSettings settings = smallBake("out");
     settings.recipe = "cubic";
-    EXPECT_THROW(validateSettings(settings), BakeError);
+    EXPECT_THROW(resolveSettings(settings), BakeError);
     settings.recipe = "kit";
     settings.specularMethod = "table";
     try {
-        validateSettings(settings);
+        resolveSettings(settings);
         ADD_FAILURE() << "a G1 lobe by the sample table";
     } catch (const BakeError& error) {
         EXPECT_NE(std::string(error.what()).find("--method convolution"), std::string::npos) << error.what();
     }
     settings.recipe.reset(); // every other method defaults to the documents' recipe
-    EXPECT_NO_THROW(validateSettings(settings));
-    EXPECT_EQ(resolvedRecipe(settings).name, "document");
+    EXPECT_NO_THROW(resolveSettings(settings));
+    EXPECT_EQ(resolveSettings(settings).shadingRecipe->name, "document");
     settings.specularMethod = "convolution";
-    EXPECT_EQ(resolvedRecipe(settings).name, "kit");
+    EXPECT_EQ(resolveSettings(settings).shadingRecipe->name, "kit");
 }
 
 } // namespace

@@ -112,8 +112,8 @@ TEST_F(RememberedFacts, MapsCachedUnderAWrongRememberedDeviceAreNeverWritten) {
     BakeProgress progress(true);
     auto prepared = prepareBake(first, BakeDestination::Memory, progress);
     const auto real = *rememberedDevice(store, first.context);
-    const auto keys = bakeKeys(first, prepared.input, prepared.size, prepared.plan, real, "test");
-    const auto others = bakeKeys(first, prepared.input, prepared.size, prepared.plan, anotherDevice(), "test");
+    const auto keys = bakeKeys(prepared.settings, prepared.input, prepared.plan, real, "test");
+    const auto others = bakeKeys(prepared.settings, prepared.input, prepared.plan, anotherDevice(), "test");
     for (const auto& [from, to] : {std::pair{keys.specular, others.specular}, {keys.lut, others.lut},
                                    {keys.irradiance, others.irradiance}, {keys.lights, others.lights},
                                    {keys.lobeTable, others.lobeTable}})

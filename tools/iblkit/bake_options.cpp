@@ -12,7 +12,7 @@ namespace iblkit::cli {
 
 namespace {
 
-// "table 1 to 65535, filtered 1 to ...": each method's range, as validateSettings checks it.
+// "table 1 to 65535, filtered 1 to ...": each method's range, as resolveSettings checks it.
 template <typename Low, typename High>
 std::string rangesOf(const std::vector<std::string>& methods, Low low, High high) {
     std::string ranges;

@@ -46,7 +46,7 @@ BakeRequest requestOf(const batch::BatchLine& line) {
         throw std::invalid_argument(error.what());
     }
     auto request = arguments.resolved();
-    bake::validateSettings(api::bakeSettingsOf(request));
+    bake::resolveSettings(api::bakeSettingsOf(request)); // every setting checked, as the bake will
     requireInput("ENV", request.environment);
     requireInput("--scene", request.scene);
     return request;

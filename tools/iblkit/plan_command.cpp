@@ -31,8 +31,7 @@ void addPlanCommand(CLI::App& app) {
         auto request = arguments->request;
         if (!arguments->environment.empty()) request.environment = arguments->environment;
         request.lutFormat = lutFormatNamed(arguments->lutFormat);
-        const auto settings = api::bakeSettingsOf(request);
-        bake::validateSettings(settings);
+        auto settings = bake::resolveSettings(api::bakeSettingsOf(request));
         // Read as the bake reads it, so that the plan refuses what the bake refuses (a missing,
         // unreadable or undecodable file); only a cube input has a size of its own. Its texels' NaN
         // or negative values are the bake's to judge.
@@ -41,8 +40,8 @@ void addPlanCommand(CLI::App& app) {
             const auto input = bake::loadEnvironment(*settings.environment, {true, false});
             if (bake::isCubeInput(*settings.environment)) inputCubeSize = input.cubeSize;
         }
-        const auto size = bake::resolvedSize(settings, inputCubeSize);
-        const auto plan = bake::planBake(settings, size, scene::readSceneMaterials(arguments->scene));
+        bake::resolveFaceSize(settings, inputCubeSize);
+        const auto plan = bake::planBake(settings, scene::readSceneMaterials(arguments->scene));
         if (arguments->json) fmt::print("{}\n", bake::planJson(plan).dump(2));
         else fmt::print("{}", bake::planText(plan));
     });
