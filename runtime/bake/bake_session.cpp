@@ -36,7 +36,16 @@ BakeSession::~BakeSession() {
 }
 
 const vulkan::VulkanContext& BakeSession::context() {
-    if (!context_) context_ = contextFuture_.get(); // a device that cannot be made throws here, for the bake that needs it
+    // A device that cannot be made fails here every bake that needs it, with the same error.
+    if (contextError_) std::rethrow_exception(contextError_);
+    if (!context_) {
+        try {
+            context_ = contextFuture_.get();
+        } catch (...) {
+            contextError_ = std::current_exception();
+            throw;
+        }
+    }
     return *context_;
 }
 

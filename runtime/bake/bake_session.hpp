@@ -4,6 +4,7 @@
 #include "bake_settings.hpp"
 #include "gpu_steps.hpp"
 
+#include <exception>
 #include <future>
 #include <map>
 #include <memory>
@@ -52,6 +53,7 @@ private:
     vulkan::ContextOptions options_;
     std::future<std::unique_ptr<const vulkan::VulkanContext>> contextFuture_;
     std::unique_ptr<const vulkan::VulkanContext> context_;
+    std::exception_ptr contextError_;
     std::optional<vulkan::DeviceInfo> device_;
     std::unique_ptr<DeviceCaches> caches_;
     std::string cachesFolder_;

@@ -21,6 +21,7 @@ std::string slurmScript(const SlurmScript& script) {
     text += fmt::format("#SBATCH --array=0-{}\n", script.shards - 1);
     if (script.cpusPerTask) text += fmt::format("#SBATCH --cpus-per-task={}\n", script.cpusPerTask);
     text += fmt::format("#SBATCH --output={}\n", shellQuoted((script.logFolder / "slurm-%A_%a.out").string()));
+    if (!script.workingFolder.empty()) text += fmt::format("#SBATCH --chdir={}\n", shellQuoted(script.workingFolder.string()));
     text += "# Each task bakes its part of the list (iblkit batch reads $SLURM_ARRAY_TASK_ID and\n"
             "# $SLURM_ARRAY_TASK_COUNT) into the shared folder and cache, and writes its own record there;\n"
             "# `iblkit batch --merge DIR` gives the whole status. A task runs Mesa's CPU device on the\n"

@@ -11,6 +11,7 @@ struct SlurmScript {
     std::filesystem::path program;     // the iblkit to run, absolute
     std::vector<std::string> arguments; // `batch LIST -o DIR --cache CACHE ...`, absolute paths, without --shard
     std::filesystem::path logFolder;   // where each task's own output goes (DIR/batch-shards)
+    std::filesystem::path workingFolder; // where the tasks run: the list's relative paths are read from there
     uint32_t shards = 1;
     uint32_t cpusPerTask = 0; // 0: the site's default
     std::string jobName = "iblkit-batch";

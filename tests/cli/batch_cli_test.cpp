@@ -145,6 +145,8 @@ TEST_F(BatchCli, TheSlurmScriptIsAnArrayOfThisBatchOnASharedCache) {
     EXPECT_NE(result.out.find(fmt::format("batch {} -o {} --cache {} --quiet\n", path, at("out"), at("shared"))),
               std::string::npos)
         << result.out;
+    EXPECT_NE(result.out.find("#SBATCH --chdir=" + fs::current_path().string() + "\n"), std::string::npos)
+        << "the tasks read the list's relative paths from here";
     EXPECT_TRUE(fs::is_directory(at("out/batch-shards"))) << "each task's log goes there";
     EXPECT_NE(batch({path, "-o", at("out"), "--shards", "4", "--slurm-script"}).exitCode, 0) << "more parts than lines";
 }

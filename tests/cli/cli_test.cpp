@@ -141,7 +141,7 @@ TEST_F(Cli, AnUnknownCommandIsNamedWithTheCommands) {
     const auto result = iblkit({"frobnicate"});
     EXPECT_EQ(result.exitCode, 2);
     EXPECT_EQ(result.err, "iblkit: error: unknown command 'frobnicate' (commands: compile, compile-all, devices, run, "
-                          "consistency, stress, bake, plan, bench, lut-fit, porting, render, render-report, shading)\n");
+                          "consistency, stress, bake, batch, plan, bench, lut-fit, porting, render, render-report, shading)\n");
 }
 
 TEST_F(Cli, UnwritableOutputPathLeavesEveryOtherOutputUnwritten) {

@@ -81,7 +81,7 @@ void printSlurmScript(const BatchArguments& arguments, size_t lines) {
         throw batch::BatchError(fmt::format("--shards: error: {} parts of a list of {} bakes", shards, lines));
     const fs::path logs = fs::absolute(arguments.output) / "batch-shards";
     fs::create_directories(logs); // sbatch opens each task's output file there before the task starts
-    fmt::print("{}", batch::slurmScript({thisProgram(), taskArguments(arguments, cache), logs, shards,
+    fmt::print("{}", batch::slurmScript({thisProgram(), taskArguments(arguments, cache), logs, fs::current_path(), shards,
                                          arguments.cpusPerTask.value_or(0), "iblkit-batch"}));
 }
 
