@@ -174,13 +174,18 @@ void runBatch(const BatchArguments& arguments) {
         entry.finished = batch::utcNow();
         entry.status = result.summary ? "baked" : "failed";
         if (result.error) entry.error = result.error->what();
+        if (result.summary && !result.summary->validationMessages.empty()) { // --validate: a message fails the bake
+            const auto& messages = result.summary->validationMessages;
+            entry.status = "failed";
+            entry.error = fmt::format("validation: {} ({} messages)", messages.front(), messages.size());
+        }
         if (result.summary) {
             for (const auto& file : result.summary->files) entry.files.push_back({file.name, file.sha256, file.bytes});
             for (const auto& step : result.summary->steps)
                 entry.steps.push_back({step.name, step.deviceMilliseconds, step.wallMilliseconds});
         }
         batch::writeRecord(recordFile, record); // as each ends: a task stopped midway leaves what it did
-        progress.ended(result, entry.line);
+        progress.ended(result, entry.line, entry.status == "failed" ? entry.error : std::string());
     };
     bakeBatch(bakes, arguments.output, options);
     record.finished = batch::utcNow();

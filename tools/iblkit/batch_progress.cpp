@@ -11,11 +11,12 @@ namespace iblkit::cli {
 BatchProgress::BatchProgress(size_t bakes, bool quiet)
     : bakes_(bakes), quiet_(quiet), terminal_(isatty(STDERR_FILENO) != 0), started_(std::chrono::steady_clock::now()) {}
 
-void BatchProgress::ended(const BatchResult& result, size_t line) {
+void BatchProgress::ended(const BatchResult& result, size_t line, const std::string& failure) {
     ++ended_;
     const char* clear = terminal_ ? "\r\033[K" : "";
-    if (result.error) {
-        fmt::print(stderr, "{}[{}/{}] {} (line {}): {}\n", clear, ended_, bakes_, result.name, line, result.error->what());
+    if (result.error || !failure.empty()) {
+        fmt::print(stderr, "{}[{}/{}] {} (line {}): {}\n", clear, ended_, bakes_, result.name, line,
+                   result.error ? result.error->what() : failure.c_str());
     } else if (!quiet_) {
         fmt::print(stderr, "{}[{}/{}] {}: baked in {:.2f} s\n", clear, ended_, bakes_, result.name, result.wallMilliseconds / 1e3);
     }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <string>
 
 namespace iblkit::cli {
 
@@ -15,7 +16,8 @@ namespace iblkit::cli {
 class BatchProgress {
 public:
     BatchProgress(size_t bakes, bool quiet);
-    void ended(const BatchResult& result, size_t line);
+    // `failure`: why a bake that returned its files still failed (a validation message), else empty.
+    void ended(const BatchResult& result, size_t line, const std::string& failure = {});
 
 private:
     size_t bakes_, ended_ = 0;
