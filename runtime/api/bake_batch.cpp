@@ -64,7 +64,15 @@ void attempt(Flight& flight, Step&& step) {
 // other instead of three at once (the next's input, this one's maps, the last one's files).
 constexpr uint32_t kLargestOverlappedSize = 1024;
 
-bool overlaps(const BatchBake& bake) { return bake.request.size.value_or(256) <= kLargestOverlappedSize; }
+bool overlaps(const BatchBake& bake) {
+    const auto& request = bake.request;
+    if (request.size) return *request.size <= kLargestOverlappedSize;
+    if (!request.environment) return true; // the built-in sky, at the default 256²
+    // A cube's faces are its own size, not known until it is read.
+    std::error_code error;
+    const auto extension = request.environment->extension();
+    return extension != ".ktx2" && extension != ".dds" && !std::filesystem::is_directory(*request.environment, error);
+}
 
 class BatchRun {
 public:
@@ -98,7 +106,8 @@ private:
         const auto& bake = bakes_[index];
         if (options_.onStart) options_.onStart(bake);
         return std::async(std::launch::async, [this, &bake] {
-            auto flight = std::make_unique<Flight>(Flight{&bake, api::FolderBakeJob(bake.request, folder_ / bake.name, log_), Clock::now(), std::nullopt});
+            auto job = api::FolderBakeJob(bake.request, folder_ / bake.name, log_);
+            auto flight = std::make_unique<Flight>(Flight{&bake, std::move(job), Clock::now(), std::nullopt});
             attempt(*flight, [&] { flight->job.prepare(&*session_); });
             return flight;
         });
