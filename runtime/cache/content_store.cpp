@@ -37,9 +37,14 @@ bool holds(std::string_view entry, const std::string& key) {
 
 // A file beside `path` that no other writer uses: made by mkstemp (O_EXCL), so not by another
 // process on this machine nor, on a shared folder, on another machine (whose process ids overlap
-// this one's).
+// this one's). Its name holds the writer's host and process id, so that one a killed writer left
+// can be told from one a live writer is still filling.
 fs::path temporaryBeside(const fs::path& path) {
-    std::string name = path.string() + ".tmp-XXXXXX";
+    char host[256] = {};
+    gethostname(host, sizeof host - 1);
+    std::string hostName(host);
+    std::replace(hostName.begin(), hostName.end(), '/', '_');
+    std::string name = path.string() + ".tmp-" + hostName + "-" + std::to_string(getpid()) + "-XXXXXX";
     const int descriptor = mkstemp(name.data());
     if (descriptor < 0) throw CacheError(path.parent_path().string() + ": error: cannot make a cache entry there: " +
                                          std::generic_category().message(errno));
