@@ -6,6 +6,7 @@
 #include "bake_manifest.hpp"
 #include "cache_error.hpp"
 #include "content_store.hpp"
+#include "bake_device.hpp"
 #include "bake_session.hpp"
 #include "device_caches.hpp"
 #include "remembered_facts.hpp"
@@ -260,43 +261,6 @@ void storeComputed(cache::ContentStore* cache, const BakeKeys& keys, const BakeP
     if (!cached.lobeTable && outputs.lobeTable) store(cache, keys.lobeTable, texturePayload(*outputs.lobeTable).parts(), warnings);
     if (!cached.previewPng) store(cache, keys.preview, outputs.previewPng, warnings);
 }
-
-// A bake's device, caches and kernels: the session's, or its own, torn down after it.
-class BakeDevice {
-public:
-    BakeDevice(BakeSession* session, const ResolvedSettings& settings, cache::ContentStore* cache, const NeededOutputs& needed,
-               uint32_t size, BakeProgress& progress)
-        : session_(session) {
-        progress.part("instance and device");
-        if (!session) own_.context = std::make_unique<const vulkan::VulkanContext>(settings.context);
-        progress.part("pipeline cache");
-        if (!session) own_.caches = std::make_unique<DeviceCaches>(cache, context());
-        progress.part("kernel threads");
-        if (!session) own_.kernels = std::make_unique<BakeKernels>(context(), settings, needed, size);
-        caches_ = session ? &session->caches(cache) : own_.caches.get(); // first: new caches make the kernels anew
-        kernels_ = session ? &session->kernels(settings, needed, size) : own_.kernels.get();
-    }
-    const vulkan::VulkanContext& context() { return session_ ? session_->context() : *own_.context; }
-    DeviceCaches& caches() { return *caches_; }
-    BakeKernels& kernels() { return *kernels_; }
-    void tearDown() { own_ = {}; }
-
-private:
-    BakeSession* session_;
-    struct Own {
-        std::unique_ptr<const vulkan::VulkanContext> context;
-        std::unique_ptr<DeviceCaches> caches;
-        std::unique_ptr<BakeKernels> kernels;
-        Own& operator=(Own&& other) noexcept { // the kernels first, the context last
-            kernels = std::move(other.kernels);
-            caches = std::move(other.caches);
-            context = std::move(other.context);
-            return *this;
-        }
-    } own_;
-    BakeKernels* kernels_ = nullptr;
-    DeviceCaches* caches_ = nullptr;
-};
 
 // What the cache does not hold, computed on the device, and stored.
 BakedOutputs computeOnDevice(const ResolvedSettings& settings, const EnvironmentInput& input, uint32_t size, const BakePlan& plan,
