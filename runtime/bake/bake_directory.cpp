@@ -1,5 +1,7 @@
 #include "bake_directory.hpp"
 
+#include "left_behind.hpp"
+
 #include "bake_error.hpp"
 #include "file_names.hpp"
 #include "sha256.hpp"
@@ -151,7 +153,9 @@ fs::path makeStagingFolder(const fs::path& target) {
     if (error) throw BakeError("cannot create " + quoted(parent) + ": " + error.message());
     // A short name of its own, not the target's plus a suffix: a target named near the file
     // system's 255-byte limit must still get one.
-    std::string pattern = (parent / ".iblkit-partial-XXXXXX").string();
+    // Its name holds this host and process: a later bake removes what a killed one left.
+    files::removeLeftBehind(parent, ".iblkit-partial-");
+    std::string pattern = (parent / (".iblkit-partial-" + files::writerTag() + "-XXXXXX")).string();
     if (!mkdtemp(pattern.data())) throw BakeError("cannot create a folder in " + quoted(parent) + ": " + std::strerror(errno));
     // mkdtemp makes it 0700; the bake's folder gets what the umask gives any new folder.
     const mode_t mask = ::umask(0);

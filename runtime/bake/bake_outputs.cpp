@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cerrno>
 #include <fstream>
 
 namespace iblkit::bake {
@@ -65,7 +66,9 @@ std::string locate(const BakedTexture& texture, size_t valueIndex) {
 void writeFile(const fs::path& path, std::span<const std::span<const std::byte>> pieces) {
     std::ofstream stream(path, std::ios::binary);
     for (const auto bytes : pieces) stream.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    if (!stream.flush()) throw BakeError("cannot write '" + path.string() + "'");
+    stream.close(); // a full disk may first show when the last bytes are written
+    if (stream.fail())
+        throw BakeError("cannot write '" + path.string() + "': " + std::generic_category().message(errno));
 }
 
 // A file of pieces written one after another: a texture's levels are written from its own bytes,

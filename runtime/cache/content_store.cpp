@@ -1,6 +1,7 @@
 #include "content_store.hpp"
 
 #include "cache_error.hpp"
+#include "left_behind.hpp"
 #include "mapped_file.hpp"
 #include "sha256.hpp"
 
@@ -40,11 +41,7 @@ bool holds(std::string_view entry, const std::string& key) {
 // this one's). Its name holds the writer's host and process id, so that one a killed writer left
 // can be told from one a live writer is still filling.
 fs::path temporaryBeside(const fs::path& path) {
-    char host[256] = {};
-    gethostname(host, sizeof host - 1);
-    std::string hostName(host);
-    std::replace(hostName.begin(), hostName.end(), '/', '_');
-    std::string name = path.string() + ".tmp-" + hostName + "-" + std::to_string(getpid()) + "-XXXXXX";
+    std::string name = path.string() + ".tmp-" + files::writerTag() + "-XXXXXX";
     const int descriptor = mkstemp(name.data());
     if (descriptor < 0) throw CacheError(path.parent_path().string() + ": error: cannot make a cache entry there: " +
                                          std::generic_category().message(errno));
@@ -102,16 +99,19 @@ void ContentStore::put(const std::string& key, std::span<const std::string_view>
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out << keyLine(key) << sha256Hex(payload) << '\n';
         for (const auto part : payload) out.write(part.data(), std::streamsize(part.size()));
-        if (!out) {
+        out.close(); // a full disk may first show when the last bytes are written
+        if (out.fail()) {
+            const int why = errno;
             fs::remove(temporary, error);
-            throw CacheError(temporary.string() + ": error: cannot write the cache entry");
+            throw CacheError(temporary.string() + ": error: cannot write the cache entry: " + std::generic_category().message(why));
         }
     }
     fs::rename(temporary, path, error);
     if (error) {
         fs::remove(temporary, error);
-        throw CacheError(path.string() + ": error: cannot put the cache entry in place");
+        throw CacheError(path.string() + ": error: cannot put the cache entry in place: " + error.message());
     }
+    files::removeLeftBehind(path.parent_path(), ".tmp-"); // what killed writers left in this folder
 }
 
 fs::path ContentStore::defaultFolder() {

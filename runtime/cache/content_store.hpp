@@ -13,9 +13,12 @@ namespace iblkit::cache {
 
 // Entries by key (CacheKey::hex()) under FOLDER/objects/ab/abcd...: each holds its key and its
 // payload's SHA-256 beside the payload, so an entry damaged on disk, or copied or renamed to
-// another key's place, is found when it is read, removed, and counted a miss. An entry is written to a temporary file and renamed into place, so bakes that
-// share the folder never read half an entry; two that make the same entry write the same bytes,
-// and the last rename wins.
+// another key's place, is found when it is read, removed, and counted a miss. An entry is written
+// to a temporary file beside its place (KEY.tmp-HOST-PID-XXXXXX, unique by mkstemp) and renamed
+// into place, so bakes that share the folder, on one machine or many, never read half an entry;
+// two that make the same entry write the same bytes, and the last rename wins. A put removes the
+// temporaries of its folder that killed writers left: this host's whose process is gone, and any
+// older than a day.
 class ContentStore {
 public:
     // A read-only store leaves damaged entries where they are, and refuses put.

@@ -2,6 +2,7 @@
 // replaced only by a finished one, and only when it holds nothing but the files it wrote; a
 // folder that holds anything else, the input, or that cannot be replaced is refused up front.
 #include "bake_directory.hpp"
+#include "bake_outputs.hpp"
 #include "bake_error.hpp"
 #include "read_file.hpp"
 #include "sha256.hpp"
@@ -44,6 +45,40 @@ std::string messageOf(const fs::path& target, const std::optional<fs::path>& inp
         return error.what();
     }
     return "no error";
+}
+
+// A file the disk cannot take (/dev/full: every write is ENOSPC, first seen when the bytes are
+// flushed) is an error that says why.
+TEST(BakeOutputs, AFullDiskIsAnErrorWithItsReason) {
+    const std::string bytes(1 << 16, 'x');
+    try {
+        writeBytes("/dev", "full", std::as_bytes(std::span(bytes)));
+        ADD_FAILURE() << "no error";
+    } catch (const BakeError& error) {
+        EXPECT_EQ(std::string(error.what()), "cannot write '/dev/full': No space left on device");
+    }
+}
+
+// A bake killed outright leaves its staging folder; the next bake beside it removes it once its
+// process is gone, and never a live bake's.
+TEST(BakeDirectory, AKilledBakesStagingFolderIsRemovedByTheNextBake) {
+    iblkit::testing::TempFolder folder;
+    char host[256] = {};
+    gethostname(host, sizeof host - 1);
+    const pid_t child = fork(); // a process id that is surely gone once reaped
+    if (child == 0) _exit(0);
+    waitpid(child, nullptr, 0);
+    const auto staging = [&](pid_t pid) {
+        const auto path = folder.path() / (".iblkit-partial-" + std::string(host) + "-" + std::to_string(pid) + "-aB3xYz");
+        fs::create_directories(path);
+        std::ofstream(path / "specular.ktx2") << "half a file";
+        return path;
+    };
+    const auto killed = staging(child), live = staging(getpid());
+    BakeDirectory directory(folder.path() / "out", std::nullopt);
+    EXPECT_FALSE(fs::exists(killed));
+    EXPECT_TRUE(fs::exists(live));
+    EXPECT_TRUE(fs::exists(directory.staging()));
 }
 
 TEST(BakeDirectory, CommitMovesTheBakeIntoAnAbsentTarget) {

@@ -13,6 +13,9 @@
 #include <fstream>
 #include <thread>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace iblkit::cache {
 namespace {
 
@@ -137,6 +140,37 @@ TEST(ContentStore, WritersRacingOnOneFolderLeaveOnlyWholeEntries) {
     for (const auto& entry : fs::recursive_directory_iterator(folder.path()))
         if (entry.path().filename().string().find(".tmp-") != std::string::npos) ++leftovers;
     EXPECT_EQ(leftovers, 0u) << "no temporary is left behind";
+}
+
+// What killed writers leave is removed by a later put into the same folder; a live writer's is not.
+TEST(ContentStore, APutRemovesTheTemporariesOfWritersThatAreGone) {
+    iblkit::testing::TempFolder folder;
+    const auto key = CacheKey().add("what", "left behind").hex();
+    ContentStore store(folder.path());
+    store.put(key, "first");
+    const auto place = folder.path() / "objects" / key.substr(0, 2);
+    char host[256] = {};
+    gethostname(host, sizeof host - 1);
+    const pid_t child = fork(); // a process id that is surely gone once reaped
+    if (child == 0) _exit(0);
+    waitpid(child, nullptr, 0);
+    const auto temporary = [&](const std::string& owner) {
+        const auto path = place / (key + ".tmp-" + owner + "-aB3xYz");
+        std::ofstream(path) << "half an entry";
+        return path;
+    };
+    const auto gone = temporary(std::string(host) + "-" + std::to_string(child));
+    const auto live = temporary(std::string(host) + "-" + std::to_string(getpid()));
+    const auto elsewhere = temporary("another-host-12");
+    store.put(key, "second");
+    EXPECT_FALSE(fs::exists(gone)) << "its writer is gone";
+    EXPECT_TRUE(fs::exists(live)) << "its writer still runs";
+    EXPECT_TRUE(fs::exists(elsewhere)) << "another machine's writer may still run";
+    fs::last_write_time(elsewhere, fs::file_time_type::clock::now() - std::chrono::hours(25));
+    store.put(key, "third");
+    EXPECT_FALSE(fs::exists(elsewhere)) << "a day old: no writer takes that long";
+    EXPECT_TRUE(fs::exists(live));
+    EXPECT_EQ(store.get(key), "third");
 }
 
 TEST(ContentStore, AFolderItCannotWriteIsOneError) {
