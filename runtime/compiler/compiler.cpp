@@ -1,4 +1,5 @@
 #include "compiler.hpp"
+#include "thread_group_limits.hpp"
 
 #include "compile_error.hpp"
 #include "hlsl_frontend.hpp"
@@ -79,6 +80,7 @@ CompiledShader compileShader(const CompileOptions& options) {
         throw CompileError(invalidSpirvInKitWords(error.what()));
     }
     shader.reflection = reflectShader(legal, frontend.registers, options.entryPoint, frontend.stage);
+    requireDirect3DThreadGroup(shader.reflection, shader.sourceName);
     shader.reflection.varyings = varyings;
     shader.namedSpirv = optimizeSpirv(legal, options.optimization, shader.sourceName);
     if (options.optimization != OptimizationLevel::None) validateSpirv(shader.namedSpirv, shader.sourceName);

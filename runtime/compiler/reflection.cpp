@@ -172,7 +172,8 @@ ShaderReflection reflectShader(const std::vector<uint32_t>& spirv, const std::ve
     }
     if (stage == ShaderStage::Compute) {
         const auto& modes = compiler.get_execution_mode_bitset();
-        if (modes.get(spv::ExecutionModeLocalSize))
+        out.workgroupSizeFixed = modes.get(spv::ExecutionModeLocalSize);
+        if (out.workgroupSizeFixed)
             for (uint32_t axis = 0; axis < 3; ++axis)
                 out.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
     }

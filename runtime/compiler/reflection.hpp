@@ -47,6 +47,7 @@ struct ShaderReflection {
     std::string entryPoint;
     ShaderStage stage;
     std::array<uint32_t, 3> workgroupSize{0, 0, 0};
+    bool workgroupSizeFixed = false; // a literal [numthreads] (LocalSize), not specialization constants
     std::vector<ReflectedResource> resources; // in register order: b, t, s, u; space; index
     std::string pushConstantBlock;
     uint32_t pushConstantSize = 0;

@@ -185,5 +185,22 @@ TEST_F(Hlsl2021, AConversionGlslangLacksIsReportedAtItsLine) {
     }
 }
 
+// A [numthreads] past Direct3D's limits is refused at compile time, as DXC refuses it.
+TEST_F(Hlsl2021, AThreadGroupPastDirect3DsLimitsIsRefusedByName) {
+    const auto shader = [](const std::string& threads) {
+        return "RWStructuredBuffer<uint> Out;\n[numthreads(" + threads + ")]\nvoid main(uint3 id : SV_DispatchThreadID) { Out[id.x] = id.x; }\n";
+    };
+    EXPECT_EQ(errorOf(shader("0, 1, 1")), "shader.hlsl: error: [numthreads(0, 1, 1)] on 'main': every dimension must be at least "
+                                          "1 (Direct3D's limit, which DXC holds shaders to)");
+    EXPECT_EQ(errorOf(shader("1024, 1024, 64")), "shader.hlsl: error: [numthreads(1024, 1024, 64)] on 'main': 67108864 threads "
+                                                 "in a group, where at most 1024 are allowed (Direct3D's limit, which DXC holds "
+                                                 "shaders to)");
+    EXPECT_NE(errorOf(shader("1, 1, 65")).find("z is at most 64"), std::string::npos);
+    EXPECT_NE(errorOf(shader("2048, 1, 1")).find("x and y are at most 1024"), std::string::npos);
+    EXPECT_NO_THROW(compile(shader("1024, 1, 1")));
+    EXPECT_NO_THROW(compile(shader("32, 32, 1")));
+    EXPECT_NO_THROW(compile(shader("1, 1, 64")));
+}
+
 } // namespace
 } // namespace iblkit::compiler
