@@ -4,6 +4,7 @@
 #include "api/folder_bake_job.hpp"
 
 #include "bake_session.hpp"
+#include "batch_list.hpp"
 
 #include <fmt/format.h>
 
@@ -20,15 +21,10 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-bool isFolderName(const std::string& name) {
-    if (name.empty() || name.front() == '.' || name.size() > 200) return false;
-    return name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") == std::string::npos;
-}
-
 void requireBatch(const std::vector<BatchBake>& bakes) {
     std::set<std::string> names;
     for (const auto& bake : bakes) {
-        if (!isFolderName(bake.name))
+        if (!batch::isFolderName(bake.name))
             throw Error(ErrorKind::BadInput, fmt::format("batch: '{}' is not a folder name (letters, digits, '.', '_' and "
                                                          "'-', not starting with '.')", bake.name));
         if (!names.insert(bake.name).second)
