@@ -3,6 +3,7 @@
 #include "bench_error.hpp"
 #include "measurements.hpp"
 #include "scratch_folder.hpp"
+#include "this_program.hpp"
 #include "timed_process.hpp"
 
 #include <fmt/core.h>
@@ -24,13 +25,6 @@ struct Line {
     std::string name;
     fs::path input; // empty: the built-in sky
 };
-
-// What a user runs: the launcher that started this program where there is one (it turns on huge
-// pages), else this program.
-fs::path programToTime() {
-    if (const char* launcher = std::getenv("IBLKIT_LAUNCHER"); launcher && *launcher) return launcher;
-    return fs::read_symlink("/proc/self/exe");
-}
 
 std::string fileBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -62,7 +56,7 @@ double environmentWork(const fs::path& record) {
 class BatchPairs {
 public:
     BatchPairs(const BenchOptions& options, std::vector<Line> lines)
-        : options_(options), lines_(std::move(lines)), scratch_("bench-batch"), program_(programToTime()) {
+        : options_(options), lines_(std::move(lines)), scratch_("bench-batch"), program_(files::thisProgram()) {
         std::ofstream list(scratch_.path() / "list.txt");
         for (const auto& line : lines_) list << line.name << ' ' << line.input.string() << '\n';
     }

@@ -4,6 +4,7 @@
 #include "batch_lines.hpp"
 #include "batch_progress.hpp"
 #include "signal_cleanup.hpp"
+#include "this_program.hpp"
 
 #include "batch_error.hpp"
 #include "batch_record.hpp"
@@ -67,12 +68,6 @@ std::vector<std::string> taskArguments(const BatchArguments& arguments, const st
     return words;
 }
 
-// The iblkit a user runs: the launcher that started this program, else this program itself.
-fs::path thisProgram() {
-    if (const char* launcher = std::getenv("IBLKIT_LAUNCHER"); launcher && *launcher) return launcher;
-    return fs::read_symlink("/proc/self/exe");
-}
-
 void printSlurmScript(const BatchArguments& arguments, size_t lines) {
     const auto cache = cacheOf(arguments);
     // Four lines a task by default: a task's device and kernels serve several bakes, and the parts stay many.
@@ -81,7 +76,7 @@ void printSlurmScript(const BatchArguments& arguments, size_t lines) {
         throw batch::BatchError(fmt::format("--shards: error: {} parts of a list of {} bakes", shards, lines));
     const fs::path logs = fs::absolute(arguments.output) / "batch-shards";
     fs::create_directories(logs); // sbatch opens each task's output file there before the task starts
-    fmt::print("{}", batch::slurmScript({thisProgram(), taskArguments(arguments, cache), logs, fs::current_path(), shards,
+    fmt::print("{}", batch::slurmScript({files::thisProgram(), taskArguments(arguments, cache), logs, fs::current_path(), shards,
                                          arguments.cpusPerTask.value_or(0), "iblkit-batch"}));
 }
 
